@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs every build, test and runtime dependency of the bake toolchain from Debian 12 packages,
+# plus the npm packages the tests use as independent checkers. Idempotent: when everything is already
+# present it does no network access and returns in well under a second.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+debian_packages=(
+  build-essential cmake ninja-build ccache pkg-config git ca-certificates
+  libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
+  libopenimageio-dev openimageio-tools libopenexr-dev libdraco-dev libxxhash-dev
+  libtinygltf-dev libstb-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libsuitesparse-dev libzstd-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
+  libembree-dev libsvgpp-dev libopencv-dev gnuplot-nox
+)
+
+missing=()
+for p in "${debian_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}" >&2
+  sudo=""; [[ $(id -u) -ne 0 ]] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Independent checkers used by the tests (Khronos glTF-Validator, ktx-parse, Ajv for JSON Schema).
+js="$here/tests/js"
+if [[ ! -f "$js/node_modules/.setup-stamp" || "$js/package-lock.json" -nt "$js/node_modules/.setup-stamp" ]]; then
+  echo "setup: installing npm test checkers" >&2
+  (cd "$js" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  touch "$js/node_modules/.setup-stamp"
+fi
