@@ -1,0 +1,14 @@
+// glTF 2.0 input for meshes (see io/glb.h for our packages): flattens every mesh instance of the
+// default scene into one triangle mesh in world space, keeping named nodes as named points.
+#pragma once
+
+#include <filesystem>
+
+#include "core/status.h"
+#include "io/mesh.h"
+
+namespace bake {
+
+Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats = nullptr);
+
+}  // namespace bake

@@ -1,0 +1,61 @@
+// Triangle meshes as every baker consumes them: positions, triangles and optional per-vertex normals
+// and texture coordinates. Reading OBJ, PLY, OFF and STL goes through OpenMesh's parsers into a
+// polygon soup (no manifold filtering, so nothing is dropped silently); glTF/GLB goes through tinygltf
+// (io/gltf.h). Polygons are fan-triangulated. Malformed input is an error naming the file and the
+// line or element at fault.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.h"
+#include "core/status.h"
+
+namespace bake {
+
+using Vec2f = std::array<float, 2>;
+using Vec3f = std::array<float, 3>;
+using Triangle = std::array<std::uint32_t, 3>;
+
+// A point with a name, e.g. a named glTF node, usable as a geodesic source.
+struct NamedPoint {
+  std::string name;
+  Vec3f position{};
+};
+
+struct TriangleMesh {
+  std::vector<Vec3f> positions;
+  std::vector<Triangle> triangles;
+  std::vector<Vec3f> normals;    // empty, or one per vertex
+  std::vector<Vec2f> texcoords;  // empty, or one per vertex
+  std::vector<NamedPoint> namedPoints;
+
+  std::size_t vertexCount() const { return positions.size(); }
+  std::size_t triangleCount() const { return triangles.size(); }
+};
+
+struct MeshReadOptions {
+  // Merge vertices whose positions are equal (within weldTolerance, relative to the bounding-box
+  // diagonal; 0 = bit-identical positions only). Attributes of merged vertices must agree for them
+  // to merge.
+  bool weld = false;
+  double weldTolerance = 0.0;
+};
+
+// Counts of what reading changed, for warnings and the report.
+struct MeshReadStats {
+  std::size_t polygonsTriangulated = 0;
+  std::size_t verticesWelded = 0;
+};
+
+// Reads by extension: .obj .ply .off .stl .gltf .glb (case-insensitive).
+Result<TriangleMesh> readMesh(const std::filesystem::path& path, const MeshReadOptions& options = {},
+                              MeshReadStats* stats = nullptr);
+
+// Checks indices and finiteness; element names in errors are "triangle N" / "vertex N".
+Status validateMesh(const TriangleMesh& mesh, const std::string& name);
+
+}  // namespace bake
