@@ -5,10 +5,9 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 2.1 REQUIRED)
 find_package(OpenMesh REQUIRED)
 find_package(OpenImageIO REQUIRED)
-find_package(TinyGLTF REQUIRED)
 find_package(zstd REQUIRED)
-# Debian's libdraco.so also exports its own copy of tinygltf, with a different layout; linking the
-# static archive pulls in only the codec objects, so tinygltf symbols come from libtinygltf alone.
+# Draco is linked statically: Debian's libdraco.so exports a private copy of tinygltf. We read glTF
+# with our own reader (libbake/io/glb_read.cpp explains why Debian's tinygltf cannot open Draco files).
 find_package(draco REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)

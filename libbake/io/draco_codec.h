@@ -1,6 +1,6 @@
 // KHR_draco_mesh_compression for our packages: encodes one primitive with Draco's own encoder and
-// decodes a compressed bufferView with Draco's decoder (Debian's tinygltf can do neither). Draco is
-// linked statically so that its private copy of tinygltf never meets ours.
+// decodes a compressed bufferView with Draco's decoder. Draco is linked statically: Debian's
+// libdraco.so also exports a private copy of tinygltf.
 #pragma once
 
 #include <cstdint>

@@ -47,6 +47,7 @@ struct Primitive {
   std::vector<Attribute> attributes;
   std::vector<std::uint32_t> indices;  // empty: non-indexed
   int material = -1;
+  bool dracoCompressed = false;  // set by the reader: the file stored it with KHR_draco_mesh_compression
 
   const Attribute* find(const std::string& name) const;
   std::size_t vertexCount() const;

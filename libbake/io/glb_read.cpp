@@ -1,10 +1,12 @@
-// GLB / glTF reader. The container is checked by hand first (header, chunk bounds) so a damaged file
-// gets a precise message; tinygltf then parses the document and resolves buffers, and every accessor
-// we use is bounds-checked again here (packages are untrusted input). Draco-compressed primitives are
-// decoded with Draco's decoder. Materials and extension objects are kept as raw JSON from the
-// document itself, so vendor extensions reach their technique's reader unchanged.
+// GLB / glTF reader over nlohmann::json. The container is checked first (header, chunk bounds) so a
+// damaged file gets a precise message; then every object we use is type- and bounds-checked, since
+// packages are untrusted input. Draco-compressed primitives are decoded with Draco's decoder.
+//
+// Why not tinygltf (Debian 12, 2.7.0): it rejects index accessors without a bufferView, which
+// KHR_draco_mesh_compression requires, so it cannot open a Draco package at all; and linking it next
+// to Draco's static library lets Draco's private tinygltf (another version, another layout) replace
+// it silently. Reading the document ourselves avoids both, and gives errors that name the element.
 #include <bake_formats/glb.h>
-#include <tiny_gltf.h>
 
 #include <cstring>
 #include <limits>
@@ -17,6 +19,7 @@ namespace bake::glb {
 namespace {
 using nlohmann::json;
 namespace fmt = format::glb;
+namespace fs = std::filesystem;
 
 std::uint32_t readU32(std::span<const std::uint8_t> bytes, std::size_t offset) {
   std::uint32_t v = 0;
@@ -24,8 +27,68 @@ std::uint32_t readU32(std::span<const std::uint8_t> bytes, std::size_t offset) {
   return v;
 }
 
-// Checks the GLB container and returns the text of its JSON chunk.
-Result<std::string> glbJsonChunk(std::span<const std::uint8_t> bytes, const std::string& name) {
+// The parsed document and its resolved buffers.
+struct Document {
+  json root;
+  std::vector<std::vector<std::uint8_t>> buffers;
+  std::string name;  // for messages
+};
+
+// ---- typed access to untrusted JSON ----
+
+Location at(const Document& doc, const std::string& element) { return {doc.name, element}; }
+
+const json& arrayMember(const json& object, const char* key) {
+  static const json empty = json::array();
+  const auto it = object.find(key);
+  return it != object.end() && it->is_array() ? *it : empty;
+}
+
+Result<std::int64_t> integerMember(const json& object, const char* key, std::int64_t fallback, const Location& where) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_number_integer()) return invalidInput(std::string(key) + " must be an integer", where);
+  return it->get<std::int64_t>();
+}
+
+Result<std::int64_t> requiredInteger(const json& object, const char* key, const Location& where) {
+  if (!object.contains(key)) return invalidInput(std::string("missing ") + key, where);
+  return integerMember(object, key, 0, where);
+}
+
+Result<std::size_t> indexMember(const json& object, const char* key, std::size_t size, const char* what,
+                                const Location& where) {
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t value, requiredInteger(object, key, where));
+  if (value < 0 || std::uint64_t(value) >= size) {
+    return invalidInput(std::string(key) + " " + std::to_string(value) + " names a " + what + " that does not exist",
+                        where);
+  }
+  return std::size_t(value);
+}
+
+std::string stringMember(const json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+template <std::size_t N>
+Status numberArrayMember(const json& object, const char* key, std::array<double, N>& out, const Location& where) {
+  const auto it = object.find(key);
+  if (it == object.end()) return {};
+  if (!it->is_array() || it->size() != N) {
+    return invalidInput(std::string(key) + " must be an array of " + std::to_string(N) + " numbers", where);
+  }
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!(*it)[i].is_number()) return invalidInput(std::string(key) + " must hold numbers", where);
+    out[i] = (*it)[i].get<double>();
+  }
+  return {};
+}
+
+// ---- containers and buffers ----
+
+Result<std::string> glbJsonChunk(std::span<const std::uint8_t> bytes, const std::string& name,
+                                 std::span<const std::uint8_t>& binChunk) {
   if (bytes.size() < fmt::kHeaderBytes + fmt::kChunkHeaderBytes) {
     return invalidInput("file is " + std::to_string(bytes.size()) + " bytes, too short for a GLB header",
                         {name, "header"});
@@ -41,27 +104,119 @@ Result<std::string> glbJsonChunk(std::span<const std::uint8_t> bytes, const std:
                             std::to_string(bytes.size()) + " (truncated?)", {name, "header"});
   }
   const std::uint64_t jsonLength = readU32(bytes, 12);
-  if (readU32(bytes, 16) != fmt::kChunkJson) {
-    return invalidInput("first chunk is not the JSON chunk", {name, "chunk 0"});
-  }
-  if (fmt::kHeaderBytes + fmt::kChunkHeaderBytes + jsonLength > declared) {
+  if (readU32(bytes, 16) != fmt::kChunkJson) return invalidInput("first chunk is not the JSON chunk", {name, "chunk 0"});
+  const std::uint64_t jsonStart = fmt::kHeaderBytes + fmt::kChunkHeaderBytes;
+  if (jsonStart + jsonLength > declared) {
     return invalidInput("JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the end of the file",
                         {name, "chunk 0"});
   }
-  const std::uint64_t binHeader = fmt::kHeaderBytes + fmt::kChunkHeaderBytes + jsonLength;
-  if (binHeader + fmt::kChunkHeaderBytes <= declared) {
+  const std::uint64_t binHeader = jsonStart + jsonLength;
+  if (binHeader + fmt::kChunkHeaderBytes <= declared && readU32(bytes, std::size_t(binHeader) + 4) == fmt::kChunkBin) {
     const std::uint64_t binLength = readU32(bytes, std::size_t(binHeader));
-    if (readU32(bytes, std::size_t(binHeader) + 4) == fmt::kChunkBin &&
-        binHeader + fmt::kChunkHeaderBytes + binLength > declared) {
+    if (binHeader + fmt::kChunkHeaderBytes + binLength > declared) {
       return invalidInput("BIN chunk of " + std::to_string(binLength) + " bytes runs past the end of the file",
                           {name, "chunk 1"});
     }
+    binChunk = bytes.subspan(std::size_t(binHeader + fmt::kChunkHeaderBytes), std::size_t(binLength));
   }
-  const char* text = reinterpret_cast<const char*>(bytes.data() + fmt::kHeaderBytes + fmt::kChunkHeaderBytes);
-  return std::string(text, std::size_t(jsonLength));
+  return std::string(reinterpret_cast<const char*>(bytes.data() + jsonStart), std::size_t(jsonLength));
 }
 
-Result<ComponentType> componentTypeOf(int code, const Location& where) {
+Result<std::vector<std::uint8_t>> decodeBase64(const std::string& text, const Location& where) {
+  auto value = [](char c) -> int {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+' || c == '-') return 62;
+    if (c == '/' || c == '_') return 63;
+    return -1;
+  };
+  std::vector<std::uint8_t> out;
+  out.reserve(text.size() * 3 / 4);
+  std::uint32_t accumulator = 0;
+  int bits = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    const int v = value(c);
+    if (v < 0) return invalidInput("data URI holds a character that is not base64", where);
+    accumulator = (accumulator << 6) | std::uint32_t(v);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(std::uint8_t(accumulator >> bits));
+    }
+  }
+  return out;
+}
+
+Result<std::vector<std::uint8_t>> loadBufferUri(const std::string& uri, const fs::path& baseDir, const Location& where) {
+  if (uri.rfind("data:", 0) == 0) {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos || uri.compare(comma - 7, 7, ";base64") != 0) {
+      return unsupported("only base64 data URIs are supported", where);
+    }
+    return decodeBase64(uri.substr(comma + 1), where);
+  }
+  if (uri.find("://") != std::string::npos) return unsupported("remote buffer URI " + uri, where);
+  std::string decoded;  // percent-decoding of the relative path
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size()) {
+      decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      decoded += uri[i];
+    }
+  }
+  auto bytes = readFileBytes(baseDir / decoded);
+  if (!bytes.isOk()) return Status(bytes.status().code(), "buffer file " + decoded + ": " + bytes.status().message(), where);
+  return bytes;
+}
+
+Status loadBuffers(Document& doc, std::span<const std::uint8_t> binChunk, const fs::path& baseDir) {
+  const json& buffers = arrayMember(doc.root, "buffers");
+  for (std::size_t b = 0; b < buffers.size(); ++b) {
+    const Location where = at(doc, "buffer " + std::to_string(b));
+    if (!buffers[b].is_object()) return invalidInput("must be an object", where);
+    BAKE_ASSIGN_OR_RETURN(const std::int64_t length, requiredInteger(buffers[b], "byteLength", where));
+    std::vector<std::uint8_t> data;
+    if (buffers[b].contains("uri")) {
+      BAKE_ASSIGN_OR_RETURN(data, loadBufferUri(stringMember(buffers[b], "uri"), baseDir, where));
+    } else if (b == 0 && !binChunk.empty()) {
+      data.assign(binChunk.begin(), binChunk.end());
+    } else {
+      return invalidInput("has neither a uri nor a GLB BIN chunk", where);
+    }
+    if (length < 0 || std::uint64_t(length) > data.size()) {
+      return invalidInput("byteLength " + std::to_string(length) + " exceeds its " + std::to_string(data.size()) +
+                              " bytes of data", where);
+    }
+    data.resize(std::size_t(length));
+    doc.buffers.push_back(std::move(data));
+  }
+  return {};
+}
+
+// ---- bufferViews and accessors ----
+
+Result<std::span<const std::uint8_t>> bufferViewBytes(const Document& doc, std::size_t index, std::size_t* stride = nullptr) {
+  const Location where = at(doc, "bufferView " + std::to_string(index));
+  const json& view = arrayMember(doc.root, "bufferViews").at(index);
+  if (!view.is_object()) return invalidInput("must be an object", where);
+  BAKE_ASSIGN_OR_RETURN(const std::size_t buffer, indexMember(view, "buffer", doc.buffers.size(), "buffer", where));
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t offset, integerMember(view, "byteOffset", 0, where));
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t length, requiredInteger(view, "byteLength", where));
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t byteStride, integerMember(view, "byteStride", 0, where));
+  const std::vector<std::uint8_t>& data = doc.buffers[buffer];
+  if (offset < 0 || length < 0 || std::uint64_t(offset) > data.size() || std::uint64_t(length) > data.size() - std::uint64_t(offset)) {
+    return invalidInput("bytes " + std::to_string(offset) + "+" + std::to_string(length) + " run past buffer " +
+                            std::to_string(buffer) + " of " + std::to_string(data.size()) + " bytes", where);
+  }
+  if (byteStride < 0 || byteStride > 252) return invalidInput("byteStride " + std::to_string(byteStride) + " is out of range", where);
+  if (stride) *stride = std::size_t(byteStride);
+  return std::span<const std::uint8_t>(data.data() + offset, std::size_t(length));
+}
+
+Result<ComponentType> componentTypeOf(std::int64_t code, const Location& where) {
   switch (code) {
     case fmt::kComponentI8: return ComponentType::I8;
     case fmt::kComponentU8: return ComponentType::U8;
@@ -73,136 +228,129 @@ Result<ComponentType> componentTypeOf(int code, const Location& where) {
   }
 }
 
-Result<int> componentsOf(int type, const Location& where) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return unsupported("accessor type " + std::to_string(type) + " (matrices) is not supported here", where);
-  }
+Result<int> componentsOf(const std::string& type, const Location& where) {
+  if (type == "SCALAR") return 1;
+  if (type == "VEC2") return 2;
+  if (type == "VEC3") return 3;
+  if (type == "VEC4") return 4;
+  if (type == "MAT2" || type == "MAT3" || type == "MAT4") return unsupported("matrix accessors are not supported here", where);
+  return invalidInput("unknown accessor type \"" + type + "\"", where);
 }
 
-Result<std::span<const std::uint8_t>> bufferViewBytes(const tinygltf::Model& model, int index,
-                                                      const std::string& name) {
-  const Location where{name, "bufferView " + std::to_string(index)};
-  if (index < 0 || std::size_t(index) >= model.bufferViews.size()) {
-    return invalidInput("bufferView index is out of range", where);
-  }
-  const tinygltf::BufferView& view = model.bufferViews[std::size_t(index)];
-  if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size()) {
-    return invalidInput("refers to buffer " + std::to_string(view.buffer) + ", which does not exist", where);
-  }
-  const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
-  if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
-    return invalidInput("bytes " + std::to_string(view.byteOffset) + "+" + std::to_string(view.byteLength) +
-                            " run past its buffer of " + std::to_string(data.size()) + " bytes", where);
-  }
-  return std::span<const std::uint8_t>(data.data() + view.byteOffset, view.byteLength);
-}
-
-// Reads an accessor into tightly packed bytes, checking every bound.
-Result<Attribute> readAccessor(const tinygltf::Model& model, int index, const std::string& attributeName,
-                               const std::string& name) {
-  const Location where{name, "accessor " + std::to_string(index)};
-  if (index < 0 || std::size_t(index) >= model.accessors.size()) {
-    return invalidInput("accessor index is out of range", where);
-  }
-  const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
-  if (accessor.sparse.isSparse) return unsupported("sparse accessors are not supported", where);
+// The accessor's declared layout, without its data.
+Result<Attribute> accessorLayout(const Document& doc, std::size_t index, const std::string& attributeName) {
+  const Location where = at(doc, "accessor " + std::to_string(index));
+  const json& accessor = arrayMember(doc.root, "accessors").at(index);
+  if (!accessor.is_object()) return invalidInput("must be an object", where);
+  if (accessor.contains("sparse")) return unsupported("sparse accessors are not supported", where);
   Attribute out;
   out.name = attributeName;
-  BAKE_ASSIGN_OR_RETURN(out.componentType, componentTypeOf(accessor.componentType, where));
-  BAKE_ASSIGN_OR_RETURN(out.components, componentsOf(accessor.type, where));
-  out.normalized = accessor.normalized;
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t code, requiredInteger(accessor, "componentType", where));
+  BAKE_ASSIGN_OR_RETURN(out.componentType, componentTypeOf(code, where));
+  BAKE_ASSIGN_OR_RETURN(out.components, componentsOf(stringMember(accessor, "type"), where));
+  const auto normalized = accessor.find("normalized");
+  out.normalized = normalized != accessor.end() && normalized->is_boolean() && normalized->get<bool>();
+  return out;
+}
+
+Result<Attribute> readAccessor(const Document& doc, std::size_t index, const std::string& attributeName) {
+  const Location where = at(doc, "accessor " + std::to_string(index));
+  BAKE_ASSIGN_OR_RETURN(Attribute out, accessorLayout(doc, index, attributeName));
+  const json& accessor = arrayMember(doc.root, "accessors")[index];
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t count, requiredInteger(accessor, "count", where));
   const std::size_t element = out.elementSize();
-  if (accessor.count > std::numeric_limits<std::uint32_t>::max()) {
-    return invalidInput("count " + std::to_string(accessor.count) + " is too large", where);
+  if (count < 0 || count > std::numeric_limits<std::uint32_t>::max()) {
+    return invalidInput("count " + std::to_string(count) + " is out of range", where);
   }
-  if (accessor.bufferView < 0) {  // all zeros (glTF 3.6.2.1)
-    out.bytes.assign(accessor.count * element, 0);
+  if (!accessor.contains("bufferView")) {  // all zeros (glTF 2.0, 3.6.2.1), but never more than the file could mean
+    if (std::uint64_t(count) * element > (std::uint64_t(1) << 31)) return invalidInput("count is implausibly large", where);
+    out.bytes.assign(std::size_t(count) * element, 0);
     return out;
   }
-  BAKE_ASSIGN_OR_RETURN(std::span<const std::uint8_t> view, bufferViewBytes(model, accessor.bufferView, name));
-  const std::size_t stride =
-      model.bufferViews[std::size_t(accessor.bufferView)].byteStride ? model.bufferViews[std::size_t(accessor.bufferView)].byteStride : element;
-  if (stride < element) return invalidInput("byteStride is smaller than one element", where);
-  const std::size_t needed = accessor.count == 0 ? 0 : (accessor.count - 1) * stride + element;
-  if (accessor.byteOffset > view.size() || needed > view.size() - accessor.byteOffset) {
-    return invalidInput(std::to_string(accessor.count) + " elements from byte " + std::to_string(accessor.byteOffset) +
-                            " run past its bufferView of " + std::to_string(view.size()) + " bytes", where);
+  BAKE_ASSIGN_OR_RETURN(const std::size_t viewIndex,
+                        indexMember(accessor, "bufferView", arrayMember(doc.root, "bufferViews").size(), "bufferView", where));
+  std::size_t stride = 0;
+  BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> view, bufferViewBytes(doc, viewIndex, &stride));
+  if (stride == 0) stride = element;
+  if (stride < element) return invalidInput("its bufferView's byteStride is smaller than one element", where);
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t offset, integerMember(accessor, "byteOffset", 0, where));
+  const std::uint64_t needed = count == 0 ? 0 : std::uint64_t(count - 1) * stride + element;
+  if (offset < 0 || std::uint64_t(offset) > view.size() || needed > view.size() - std::uint64_t(offset)) {
+    return invalidInput(std::to_string(count) + " elements from byte " + std::to_string(offset) +
+                            " run past bufferView " + std::to_string(viewIndex) + " of " + std::to_string(view.size()) + " bytes",
+                        where);
   }
-  out.bytes.resize(accessor.count * element);
-  for (std::size_t i = 0; i < accessor.count; ++i) {
-    std::memcpy(out.bytes.data() + i * element, view.data() + accessor.byteOffset + i * stride, element);
+  out.bytes.resize(std::size_t(count) * element);
+  for (std::size_t i = 0; i < std::size_t(count); ++i) {
+    std::memcpy(out.bytes.data() + i * element, view.data() + std::size_t(offset) + i * stride, element);
   }
   return out;
 }
 
-Result<std::vector<std::uint32_t>> readIndices(const tinygltf::Model& model, int index, const std::string& name) {
-  BAKE_ASSIGN_OR_RETURN(Attribute raw, readAccessor(model, index, "indices", name));
-  const Location where{name, "accessor " + std::to_string(index)};
-  if (raw.components != 1 || raw.componentType == ComponentType::F32 || raw.componentType == ComponentType::I8 ||
-      raw.componentType == ComponentType::I16) {
-    return invalidInput("indices must be unsigned integer scalars", where);
+Result<std::vector<std::uint32_t>> readIndices(const Document& doc, std::size_t index) {
+  BAKE_ASSIGN_OR_RETURN(const Attribute raw, readAccessor(doc, index, "indices"));
+  if (raw.components != 1 || (raw.componentType != ComponentType::U8 && raw.componentType != ComponentType::U16 &&
+                              raw.componentType != ComponentType::U32)) {
+    return invalidInput("indices must be unsigned integer scalars", at(doc, "accessor " + std::to_string(index)));
   }
   std::vector<std::uint32_t> indices(raw.count());
   const std::size_t size = componentSize(raw.componentType);
-  for (std::size_t i = 0; i < indices.size(); ++i) {
-    std::uint32_t v = 0;
-    std::memcpy(&v, raw.bytes.data() + i * size, size);  // little-endian
-    indices[i] = v;
-  }
+  for (std::size_t i = 0; i < indices.size(); ++i) std::memcpy(&indices[i], raw.bytes.data() + i * size, size);
   return indices;
 }
 
-Status readDracoPrimitive(const tinygltf::Model& model, const json& extension,
-                          const tinygltf::Primitive& source, Primitive& out, const std::string& name,
+// ---- meshes, nodes, scenes ----
+
+Status readDracoPrimitive(const Document& doc, const json& extension, const json& attributes, Primitive& out,
                           const Location& where) {
-  if (!extension.contains("bufferView") || !extension["bufferView"].is_number_integer() ||
-      !extension.contains("attributes") || !extension["attributes"].is_object()) {
+  if (!extension.is_object() || !extension.contains("attributes") || !extension["attributes"].is_object()) {
     return invalidInput(std::string(fmt::kDracoExtension) + " needs bufferView and attributes", where);
   }
-  BAKE_ASSIGN_OR_RETURN(std::span<const std::uint8_t> bytes,
-                        bufferViewBytes(model, extension["bufferView"].get<int>(), name));
+  BAKE_ASSIGN_OR_RETURN(const std::size_t viewIndex,
+                        indexMember(extension, "bufferView", arrayMember(doc.root, "bufferViews").size(), "bufferView", where));
+  BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, bufferViewBytes(doc, viewIndex));
+  const std::size_t accessorCount = arrayMember(doc.root, "accessors").size();
   std::map<std::string, detail::DracoAttributeTarget> targets;
-  for (const auto& [attributeName, accessorIndex] : source.attributes) {
-    const json& id = extension["attributes"].value(attributeName, json());
-    if (!id.is_number_integer()) continue;  // not compressed: read below
-    if (accessorIndex < 0 || std::size_t(accessorIndex) >= model.accessors.size()) {
-      return invalidInput("attribute " + attributeName + " refers to a missing accessor", where);
+  for (const auto& [name, id] : extension["attributes"].items()) {
+    if (!id.is_number_integer() || !attributes.contains(name)) {
+      return invalidInput("Draco attribute " + name + " is not an attribute of the primitive", where);
     }
-    const tinygltf::Accessor& accessor = model.accessors[std::size_t(accessorIndex)];
-    detail::DracoAttributeTarget target;
-    target.dracoId = id.get<int>();
-    BAKE_ASSIGN_OR_RETURN(target.componentType, componentTypeOf(accessor.componentType, where));
-    BAKE_ASSIGN_OR_RETURN(target.components, componentsOf(accessor.type, where));
-    target.normalized = accessor.normalized;
-    targets[attributeName] = target;
+    BAKE_ASSIGN_OR_RETURN(const std::size_t accessor, indexMember(attributes, name.c_str(), accessorCount, "accessor", where));
+    BAKE_ASSIGN_OR_RETURN(const Attribute layout, accessorLayout(doc, accessor, name));
+    targets[name] = {id.get<int>(), layout.componentType, layout.components, layout.normalized};
   }
   return detail::dracoDecode(bytes, targets, out, where);
 }
 
-Result<Primitive> readPrimitive(const tinygltf::Model& model, const json& rawPrimitive,
-                                const tinygltf::Primitive& source, const std::string& name, const Location& where) {
+Result<Primitive> readPrimitive(const Document& doc, const json& source, const Location& where) {
+  if (!source.is_object() || !source.contains("attributes") || !source["attributes"].is_object()) {
+    return invalidInput("a primitive needs an attributes object", where);
+  }
   Primitive out;
-  out.mode = source.mode < 0 ? fmt::kModeTriangles : source.mode;
-  out.material = source.material;
-  if (out.material >= int(model.materials.size())) {
-    return invalidInput("material " + std::to_string(out.material) + " does not exist", where);
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t mode, integerMember(source, "mode", fmt::kModeTriangles, where));
+  if (mode < 0 || mode > fmt::kModeTriangleFan) return invalidInput("mode " + std::to_string(mode) + " is not a glTF mode", where);
+  out.mode = int(mode);
+  if (source.contains("material")) {
+    BAKE_ASSIGN_OR_RETURN(const std::size_t material,
+                          indexMember(source, "material", arrayMember(doc.root, "materials").size(), "material", where));
+    out.material = int(material);
   }
-  const json* draco = nullptr;
-  if (rawPrimitive.contains("extensions") && rawPrimitive["extensions"].contains(fmt::kDracoExtension)) {
-    draco = &rawPrimitive["extensions"][fmt::kDracoExtension];
-    BAKE_RETURN_IF_ERROR(readDracoPrimitive(model, *draco, source, out, name, where));
+  const json& attributes = source["attributes"];
+  const auto extensions = source.find("extensions");
+  if (extensions != source.end() && extensions->is_object() && extensions->contains(fmt::kDracoExtension)) {
+    out.dracoCompressed = true;
+    BAKE_RETURN_IF_ERROR(readDracoPrimitive(doc, (*extensions)[fmt::kDracoExtension], attributes, out, where));
   }
-  for (const auto& [attributeName, accessorIndex] : source.attributes) {
-    if (out.find(attributeName)) continue;  // decoded from Draco
-    BAKE_ASSIGN_OR_RETURN(Attribute attribute, readAccessor(model, accessorIndex, attributeName, name));
+  const std::size_t accessorCount = arrayMember(doc.root, "accessors").size();
+  for (const auto& [name, ignored] : attributes.items()) {
+    if (out.find(name)) continue;  // decoded from Draco
+    BAKE_ASSIGN_OR_RETURN(const std::size_t accessor, indexMember(attributes, name.c_str(), accessorCount, "accessor", where));
+    BAKE_ASSIGN_OR_RETURN(Attribute attribute, readAccessor(doc, accessor, name));
     out.attributes.push_back(std::move(attribute));
   }
-  if (!draco && source.indices >= 0) {
-    BAKE_ASSIGN_OR_RETURN(out.indices, readIndices(model, source.indices, name));
+  if (!out.dracoCompressed && source.contains("indices")) {
+    BAKE_ASSIGN_OR_RETURN(const std::size_t accessor, indexMember(source, "indices", accessorCount, "accessor", where));
+    BAKE_ASSIGN_OR_RETURN(out.indices, readIndices(doc, accessor));
   }
   const std::size_t vertices = out.vertexCount();
   for (const Attribute& attribute : out.attributes) {
@@ -220,114 +368,124 @@ Result<Primitive> readPrimitive(const tinygltf::Model& model, const json& rawPri
   return out;
 }
 
-Result<Node> readNode(const tinygltf::Model& model, std::size_t index, const std::string& name) {
-  const tinygltf::Node& source = model.nodes[index];
-  const Location where{name, "node " + std::to_string(index)};
+Result<Node> readNode(const Document& doc, std::size_t index) {
+  const Location where = at(doc, "node " + std::to_string(index));
+  const json& source = arrayMember(doc.root, "nodes")[index];
+  if (!source.is_object()) return invalidInput("must be an object", where);
   Node node;
-  node.name = source.name;
-  node.mesh = source.mesh;
-  if (node.mesh >= int(model.meshes.size())) return invalidInput("mesh " + std::to_string(node.mesh) + " does not exist", where);
-  for (int child : source.children) {
-    if (child < 0 || std::size_t(child) >= model.nodes.size() || std::size_t(child) == index) {
-      return invalidInput("child " + std::to_string(child) + " is not a valid node", where);
-    }
-    node.children.push_back(child);
+  node.name = stringMember(source, "name");
+  if (source.contains("mesh")) {
+    BAKE_ASSIGN_OR_RETURN(const std::size_t mesh, indexMember(source, "mesh", arrayMember(doc.root, "meshes").size(), "mesh", where));
+    node.mesh = int(mesh);
   }
-  if (source.matrix.size() == 16) {
+  const std::size_t nodeCount = arrayMember(doc.root, "nodes").size();
+  for (const json& child : arrayMember(source, "children")) {
+    if (!child.is_number_integer() || child.get<std::int64_t>() < 0 || std::uint64_t(child.get<std::int64_t>()) >= nodeCount ||
+        std::size_t(child.get<std::int64_t>()) == index) {
+      return invalidInput("child " + child.dump() + " is not a valid node", where);
+    }
+    node.children.push_back(child.get<int>());
+  }
+  if (source.contains("matrix")) {
     std::array<double, 16> m{};
-    std::copy(source.matrix.begin(), source.matrix.end(), m.begin());
+    BAKE_RETURN_IF_ERROR(numberArrayMember(source, "matrix", m, where));
     node.matrix = m;
   }
-  if (source.translation.size() == 3) std::copy(source.translation.begin(), source.translation.end(), node.translation.begin());
-  if (source.rotation.size() == 4) std::copy(source.rotation.begin(), source.rotation.end(), node.rotation.begin());
-  if (source.scale.size() == 3) std::copy(source.scale.begin(), source.scale.end(), node.scale.begin());
+  BAKE_RETURN_IF_ERROR(numberArrayMember(source, "translation", node.translation, where));
+  BAKE_RETURN_IF_ERROR(numberArrayMember(source, "rotation", node.rotation, where));
+  BAKE_RETURN_IF_ERROR(numberArrayMember(source, "scale", node.scale, where));
   return node;
 }
 
-Result<Package> fromModel(const tinygltf::Model& model, const json& document, const std::string& name) {
-  Package package;
-  package.generator = model.asset.generator;
-  package.extensionsUsed = model.extensionsUsed;
-  package.extensionsRequired = model.extensionsRequired;
-  if (document.contains("extensions") && document["extensions"].is_object()) package.extensions = document["extensions"];
-  if (document.contains("materials") && document["materials"].is_array()) package.materials = document["materials"];
+Result<std::vector<int>> readSceneRoots(const Document& doc) {
+  const json& scenes = arrayMember(doc.root, "scenes");
+  if (scenes.empty()) return std::vector<int>{};
+  BAKE_ASSIGN_OR_RETURN(const std::int64_t scene, integerMember(doc.root, "scene", 0, at(doc, "scene")));
+  if (scene < 0 || std::size_t(scene) >= scenes.size()) return invalidInput("default scene does not exist", at(doc, "scene"));
+  std::vector<int> roots;
+  const Location where = at(doc, "scene " + std::to_string(scene));
+  for (const json& root : arrayMember(scenes[std::size_t(scene)], "nodes")) {
+    if (!root.is_number_integer() || root.get<std::int64_t>() < 0 ||
+        std::size_t(root.get<std::int64_t>()) >= arrayMember(doc.root, "nodes").size()) {
+      return invalidInput("root node " + root.dump() + " does not exist", where);
+    }
+    roots.push_back(root.get<int>());
+  }
+  return roots;
+}
 
-  for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
-    BAKE_ASSIGN_OR_RETURN(std::span<const std::uint8_t> bytes, bufferViewBytes(model, int(v), name));
+std::vector<std::string> stringArray(const json& value) {
+  std::vector<std::string> out;
+  for (const json& item : value) {
+    if (item.is_string()) out.push_back(item.get<std::string>());
+  }
+  return out;
+}
+
+Result<Package> toPackage(const Document& doc) {
+  Package package;
+  const json& asset = doc.root.value("asset", json::object());
+  if (!asset.is_object() || stringMember(asset, "version") != "2.0") {
+    return unsupported("asset.version is \"" + (asset.is_object() ? stringMember(asset, "version") : std::string()) +
+                           "\"; only glTF 2.0 is supported", at(doc, "asset"));
+  }
+  package.generator = stringMember(asset, "generator");
+  package.extensionsUsed = stringArray(arrayMember(doc.root, "extensionsUsed"));
+  package.extensionsRequired = stringArray(arrayMember(doc.root, "extensionsRequired"));
+  if (doc.root.contains("extensions") && doc.root["extensions"].is_object()) package.extensions = doc.root["extensions"];
+  package.materials = arrayMember(doc.root, "materials");
+
+  for (std::size_t v = 0; v < arrayMember(doc.root, "bufferViews").size(); ++v) {
+    BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, bufferViewBytes(doc, v));
     package.blobs.push_back(Blob{{bytes.begin(), bytes.end()}, 1});
   }
-  const json& rawMeshes = document.value("meshes", json::array());
-  for (std::size_t m = 0; m < model.meshes.size(); ++m) {
-    Mesh mesh{model.meshes[m].name, {}};
-    for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
-      const Location where{name, "mesh " + std::to_string(m) + " primitive " + std::to_string(p)};
-      const json& rawPrimitive = rawMeshes.at(m).at("primitives").at(p);
-      BAKE_ASSIGN_OR_RETURN(Primitive primitive, readPrimitive(model, rawPrimitive, model.meshes[m].primitives[p], name, where));
+  const json& meshes = arrayMember(doc.root, "meshes");
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    Mesh mesh{meshes[m].is_object() ? stringMember(meshes[m], "name") : "", {}};
+    const json& primitives = meshes[m].is_object() ? arrayMember(meshes[m], "primitives") : json::array();
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+      const Location where = at(doc, "mesh " + std::to_string(m) + " primitive " + std::to_string(p));
+      BAKE_ASSIGN_OR_RETURN(Primitive primitive, readPrimitive(doc, primitives[p], where));
       mesh.primitives.push_back(std::move(primitive));
     }
     package.meshes.push_back(std::move(mesh));
   }
-  for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-    BAKE_ASSIGN_OR_RETURN(Node node, readNode(model, n, name));
+  for (std::size_t n = 0; n < arrayMember(doc.root, "nodes").size(); ++n) {
+    BAKE_ASSIGN_OR_RETURN(Node node, readNode(doc, n));
     package.nodes.push_back(std::move(node));
   }
-  if (!model.scenes.empty()) {
-    const int scene = model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size() ? model.defaultScene : 0;
-    for (int root : model.scenes[std::size_t(scene)].nodes) {
-      if (root < 0 || std::size_t(root) >= model.nodes.size()) {
-        return invalidInput("root node " + std::to_string(root) + " does not exist", {name, "scene " + std::to_string(scene)});
-      }
-      package.sceneRoots.push_back(root);
-    }
-  }
+  BAKE_ASSIGN_OR_RETURN(package.sceneRoots, readSceneRoots(doc));
   return package;
 }
 
-Result<json> parseDocument(const std::string& text, const std::string& name) {
-  json document = json::parse(text, nullptr, false);
-  if (document.is_discarded() || !document.is_object()) {
-    return invalidInput("the glTF JSON is not a valid JSON object", {name, "JSON"});
-  }
-  return document;
-}
-
-Status tinygltfFailure(const std::string& error, const std::string& name) {
-  std::string message = error.empty() ? "tinygltf could not parse the document" : error;
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
-  return invalidInput(message, {name, ""});
+Result<json> parseJson(const std::string& text, const std::string& name) {
+  json root = json::parse(text, nullptr, false);
+  if (root.is_discarded() || !root.is_object()) return invalidInput("the glTF JSON is not a valid JSON object", {name, "JSON"});
+  return root;
 }
 
 }  // namespace
 
 Result<Package> decode(std::span<const std::uint8_t> bytes, const std::string& name) {
-  BAKE_ASSIGN_OR_RETURN(const std::string text, glbJsonChunk(bytes, name));
-  BAKE_ASSIGN_OR_RETURN(const json document, parseDocument(text, name));
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  if (bytes.size() > std::numeric_limits<unsigned int>::max()) return unsupported("file larger than 4 GiB", {name, ""});
-  if (!loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), static_cast<unsigned int>(bytes.size()))) {
-    return tinygltfFailure(error, name);
-  }
-  return fromModel(model, document, name);
+  std::span<const std::uint8_t> binChunk;
+  BAKE_ASSIGN_OR_RETURN(const std::string text, glbJsonChunk(bytes, name, binChunk));
+  Document doc;
+  doc.name = name;
+  BAKE_ASSIGN_OR_RETURN(doc.root, parseJson(text, name));
+  BAKE_RETURN_IF_ERROR(loadBuffers(doc, binChunk, fs::path(name).parent_path()));
+  return toPackage(doc);
 }
 
-Result<Package> read(const std::filesystem::path& path) {
+Result<Package> read(const fs::path& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".gltf") return decode(bytes, path.string());
-
-  const std::string text(bytes.begin(), bytes.end());
-  BAKE_ASSIGN_OR_RETURN(const json document, parseDocument(text, path.string()));
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string error, warning;
-  const std::string baseDir = path.parent_path().empty() ? "." : path.parent_path().string();
-  if (!loader.LoadASCIIFromString(&model, &error, &warning, text.c_str(), static_cast<unsigned int>(text.size()), baseDir)) {
-    return tinygltfFailure(error, path.string());
-  }
-  return fromModel(model, document, path.string());
+  std::uint32_t magic = 0;
+  if (bytes.size() >= 4) std::memcpy(&magic, bytes.data(), 4);
+  if (magic == fmt::kMagic) return decode(bytes, path.string());
+  Document doc;
+  doc.name = path.string();
+  BAKE_ASSIGN_OR_RETURN(doc.root, parseJson(std::string(bytes.begin(), bytes.end()), doc.name));
+  BAKE_RETURN_IF_ERROR(loadBuffers(doc, {}, path.parent_path().empty() ? fs::path(".") : path.parent_path()));
+  return toPackage(doc);
 }
 
 }  // namespace bake::glb

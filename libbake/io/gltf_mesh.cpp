@@ -1,10 +1,162 @@
+// glTF 2.0 as mesh input: every mesh instance of the default scene (or of every root node when the
+// file has no scene) is placed in world space by its node's transform and appended to one triangle
+// mesh. Normals go through the inverse-transpose of the transform; strips and fans become lists;
+// points and lines are counted and skipped. Named nodes become named points (geodesic sources by
+// node name). Node graphs with cycles are rejected.
+#include <bake_formats/glb.h>
+
+#include <cmath>
+
+#include "io/glb.h"
 #include "io/gltf.h"
 
 namespace bake {
+namespace {
 
-// Placeholder until the glTF mesh reader lands in this file.
-Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats*) {
-  return unsupported("glTF mesh input is not implemented yet", {path.string(), ""});
+using Matrix = std::array<double, 16>;  // column-major
+
+Matrix multiply(const Matrix& a, const Matrix& b) {
+  Matrix m{};
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      double sum = 0;
+      for (int k = 0; k < 4; ++k) sum += a[k * 4 + r] * b[c * 4 + k];
+      m[c * 4 + r] = sum;
+    }
+  }
+  return m;
+}
+
+Vec3f transformPoint(const Matrix& m, const float* p) {
+  Vec3f out{};
+  for (int r = 0; r < 3; ++r) out[r] = float(m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r]);
+  return out;
+}
+
+// Normals transform by the inverse transpose of the upper 3x3 (cofactor matrix; the scale of the
+// determinant does not matter since the result is normalised).
+Vec3f transformNormal(const Matrix& m, const float* n) {
+  const double a[3][3] = {{m[0], m[4], m[8]}, {m[1], m[5], m[9]}, {m[2], m[6], m[10]}};
+  double cof[3][3];
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      cof[r][c] = a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1];
+    }
+  }
+  double out[3];
+  for (int r = 0; r < 3; ++r) out[r] = cof[r][0] * n[0] + cof[r][1] * n[1] + cof[r][2] * n[2];
+  const double length = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+  if (!(length > 0)) return {0, 0, 0};
+  return {float(out[0] / length), float(out[1] / length), float(out[2] / length)};
+}
+
+std::vector<std::uint32_t> triangleList(const glb::Primitive& primitive) {
+  std::vector<std::uint32_t> corners = primitive.indices;
+  if (corners.empty()) {
+    corners.resize(primitive.vertexCount());
+    for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = std::uint32_t(i);
+  }
+  if (primitive.mode == format::glb::kModeTriangles) {
+    corners.resize(corners.size() / 3 * 3);
+    return corners;
+  }
+  std::vector<std::uint32_t> list;
+  for (std::size_t i = 2; i < corners.size(); ++i) {
+    if (primitive.mode == format::glb::kModeTriangleStrip) {  // alternate winding (glTF 3.7.2.1)
+      const bool even = i % 2 == 0;
+      list.insert(list.end(), {corners[i - 2], even ? corners[i - 1] : corners[i], even ? corners[i] : corners[i - 1]});
+    } else {
+      list.insert(list.end(), {corners[0], corners[i - 1], corners[i]});
+    }
+  }
+  return list;
+}
+
+struct Flattener {
+  const glb::Package& package;
+  const std::string& name;
+  TriangleMesh mesh;
+  bool allHaveNormals = true;
+  bool allHaveTexcoords = true;
+  std::size_t skipped = 0;
+
+  void appendPrimitive(const glb::Primitive& primitive, const Matrix& world) {
+    if (primitive.mode < format::glb::kModeTriangles) {
+      ++skipped;
+      return;
+    }
+    const glb::Attribute* position = primitive.find("POSITION");
+    if (!position) return;
+    const std::vector<float> p = position->toFloats();
+    const glb::Attribute* normal = primitive.find("NORMAL");
+    const glb::Attribute* texcoord = primitive.find("TEXCOORD_0");
+    allHaveNormals = allHaveNormals && normal;
+    allHaveTexcoords = allHaveTexcoords && texcoord;
+    const std::vector<float> n = normal ? normal->toFloats() : std::vector<float>();
+    const std::vector<float> t = texcoord ? texcoord->toFloats() : std::vector<float>();
+    const std::uint32_t base = std::uint32_t(mesh.positions.size());
+    for (std::size_t v = 0; v < position->count(); ++v) {
+      mesh.positions.push_back(transformPoint(world, &p[3 * v]));
+      mesh.normals.push_back(normal ? transformNormal(world, &n[3 * v]) : Vec3f{});
+      mesh.texcoords.push_back(texcoord ? Vec2f{t[2 * v], t[2 * v + 1]} : Vec2f{});
+    }
+    const std::vector<std::uint32_t> list = triangleList(primitive);
+    for (std::size_t i = 0; i + 2 < list.size(); i += 3) {
+      mesh.triangles.push_back({base + list[i], base + list[i + 1], base + list[i + 2]});
+    }
+  }
+
+  Status visit(int index, const Matrix& parent, std::vector<bool>& onPath) {
+    if (onPath[std::size_t(index)]) {
+      return invalidInput("node " + std::to_string(index) + " is its own ancestor (cycle)", {name, "node " + std::to_string(index)});
+    }
+    onPath[std::size_t(index)] = true;
+    const glb::Node& node = package.nodes[std::size_t(index)];
+    const Matrix world = multiply(parent, node.localMatrix());
+    if (!node.name.empty()) mesh.namedPoints.push_back({node.name, {float(world[12]), float(world[13]), float(world[14])}});
+    if (node.mesh >= 0) {
+      for (const glb::Primitive& primitive : package.meshes[std::size_t(node.mesh)].primitives) appendPrimitive(primitive, world);
+    }
+    for (int child : node.children) BAKE_RETURN_IF_ERROR(visit(child, world, onPath));
+    onPath[std::size_t(index)] = false;
+    return {};
+  }
+};
+
+constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+}  // namespace
+
+Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats) {
+  BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::read(path));
+  Flattener flattener{package, path.string(), {}};
+  if (package.nodes.empty()) {
+    for (const glb::Mesh& mesh : package.meshes) {
+      for (const glb::Primitive& primitive : mesh.primitives) flattener.appendPrimitive(primitive, kIdentity);
+    }
+  } else {
+    std::vector<int> roots = package.sceneRoots;
+    if (roots.empty()) {  // no scene: every node that is nobody's child
+      std::vector<bool> isChild(package.nodes.size(), false);
+      for (const glb::Node& node : package.nodes) {
+        for (int child : node.children) isChild[std::size_t(child)] = true;
+      }
+      for (std::size_t i = 0; i < package.nodes.size(); ++i) {
+        if (!isChild[i]) roots.push_back(int(i));
+      }
+    }
+    std::vector<bool> onPath(package.nodes.size(), false);
+    for (int root : roots) BAKE_RETURN_IF_ERROR(flattener.visit(root, kIdentity, onPath));
+  }
+  TriangleMesh mesh = std::move(flattener.mesh);
+  if (!flattener.allHaveNormals || mesh.positions.empty()) mesh.normals.clear();
+  if (!flattener.allHaveTexcoords || mesh.positions.empty()) mesh.texcoords.clear();
+  if (stats) stats->nonTrianglePrimitivesSkipped += flattener.skipped;
+  if (mesh.triangles.empty()) {
+    return invalidInput("the scene contains no triangles", {path.string(), ""});
+  }
+  return mesh;
 }
 
 }  // namespace bake

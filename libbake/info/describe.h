@@ -1,0 +1,21 @@
+// Descriptions of our packages for bakeinfo: a .glb/.gltf (glTF summary, attributes and their value
+// ranges, extensions and their versions, Draco use) or a .ktx2 (format, size, layers, levels,
+// supercompression, metadata). The file kind is recognised by its magic bytes, not its name.
+// The JSON form is stable (formats/bakeinfo.schema.json); the text form is for people.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/status.h"
+
+namespace bake::info {
+
+// Reads and fully decodes the file (so a damaged one is reported), then describes it.
+Result<nlohmann::json> describeFile(const std::filesystem::path& path);
+
+std::string formatText(const nlohmann::json& description);
+
+}  // namespace bake::info
