@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The test command: installs what is missing, builds, and runs the whole test suite with CTest.
+#   scripts/test.sh              normal build (build/)
+#   scripts/test.sh --sanitize   ASan + UBSan build (build-sanitize/)
+#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli data)
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$here/scripts/setup.sh"
+
+export BUILD_DIR="${BUILD_DIR:-$here/build}"
+cmake_args=()
+if [[ "${1:-}" == "--sanitize" ]]; then
+  shift
+  BUILD_DIR="$here/build-sanitize"
+  cmake_args+=(-DBAKE_SANITIZE=ON)
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+fi
+"$here/scripts/build.sh" "${cmake_args[@]}"
+cd "$BUILD_DIR"
+ctest --output-on-failure --parallel "$(nproc)" "$@"
