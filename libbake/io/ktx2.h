@@ -44,12 +44,15 @@ struct Texture {
   std::uint32_t layerCount() const { return layers == 0 ? 1 : layers; }
 };
 
-// Number of levels of a full mip chain for a base size: floor(log2(max(w, h))) + 1.
+// Number of levels of a full mip chain for a base size: floor(log2(max(w, h))) + 1 (0 when both are 0).
 std::uint32_t fullMipCount(std::uint32_t width, std::uint32_t height);
 
 struct WriteOptions {
   bool zstd = false;
   int zstdLevel = 19;
+  // The KTXwriter value; empty means "bake <toolkit version>". Golden tests pin it so that a version
+  // bump does not change their bytes.
+  std::string writer;
 };
 
 // Checks the texture's own consistency (sizes of every level, counts) before encoding.
@@ -59,7 +62,9 @@ Result<std::vector<std::uint8_t>> encode(const Texture& texture, const WriteOpti
 // `name` is used in error messages (usually the file path).
 Result<Texture> decode(std::span<const std::uint8_t> bytes, const std::string& name = "<memory>");
 
-// Facts about a file that a describer wants even when the payload is not decoded.
+// Facts about a file that a describer wants even when the payload is not decoded. decodeHeader checks
+// the identifier and the header's own consistency (InvalidInput), not whether decode supports the
+// format, so it also describes files that decode rejects as Unsupported.
 struct Header {
   std::uint32_t vkFormat = 0;
   std::uint32_t typeSize = 0;
