@@ -19,6 +19,7 @@
 #include "core/version.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
+#include "support/node_check.h"
 
 namespace bake::ktx2 {
 namespace {
@@ -571,34 +572,6 @@ std::string toHex(const std::vector<std::uint8_t>& bytes) {
   return hex;
 }
 
-std::string shellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-// Runs tests/js/check_ktx2.mjs on a file; fails the test (not skips) when the checker is not installed.
-::testing::AssertionResult runKtxParse(const fs::path& file, nlohmann::json& summary) {
-  const fs::path js = test::sourceDir() / "tests" / "js";
-  if (!fs::exists(js / "node_modules" / "ktx-parse")) {
-    return ::testing::AssertionFailure() << js / "node_modules" << " lacks ktx-parse: run scripts/setup.sh";
-  }
-  const std::string command = "node " + shellQuote((js / "check_ktx2.mjs").string()) + " " + shellQuote(file.string());
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return ::testing::AssertionFailure() << "cannot run " << command;
-  std::string output;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    return ::testing::AssertionFailure() << command << " failed (status " << status
-                                         << "; is node installed? run scripts/setup.sh): " << output;
-  }
-  summary = nlohmann::json::parse(output, nullptr, false);
-  if (summary.is_discarded()) return ::testing::AssertionFailure() << "check_ktx2.mjs printed no JSON: " << output;
-  return ::testing::AssertionSuccess();
-}
-
 // What each format's DFD must say, written out independently of bake_formats/ktx2.h.
 struct ExpectedFormat {
   Format format;
@@ -623,8 +596,8 @@ TEST(Ktx2, KtxParseReadsWhatWeWrite) {
       ASSERT_TRUE(write(file, texture, {.zstd = zstd}).isOk());
       const std::vector<std::uint8_t> bytes = test::readAll(file);
 
-      nlohmann::json s;
-      ASSERT_TRUE(runKtxParse(file, s));
+      const nlohmann::json s = test::runNodeChecker("check_ktx2.mjs", {file.string()});
+      ASSERT_TRUE(s.is_object());
       EXPECT_EQ(s["vkFormat"], expected.vkFormat);
       EXPECT_EQ(s["typeSize"], expected.typeSize);
       EXPECT_EQ(s["pixelWidth"], 6);
