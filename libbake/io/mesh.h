@@ -1,6 +1,6 @@
 // Triangle meshes as every baker consumes them: positions, triangles and optional per-vertex normals
 // and texture coordinates. Reading OBJ, PLY, OFF and STL goes through OpenMesh's parsers into a
-// polygon soup (no manifold filtering, so nothing is dropped silently); glTF/GLB goes through tinygltf
+// polygon soup (no manifold filtering, so nothing is dropped silently); glTF/GLB goes through our reader
 // (io/gltf.h). Polygons are fan-triangulated. Malformed input is an error naming the file and the
 // line or element at fault.
 #pragma once
@@ -49,6 +49,15 @@ struct MeshReadOptions {
 struct MeshReadStats {
   std::size_t polygonsTriangulated = 0;
   std::size_t verticesWelded = 0;
+  // Faces left with fewer than three distinct vertices (a repeated index in the file, or corners
+  // merged by welding); they are removed. Zero-area faces with distinct vertices are kept.
+  std::size_t degenerateFacesRemoved = 0;
+  // Vertices duplicated because faces gave one position different normals or texture coordinates.
+  std::size_t verticesSplit = 0;
+  // Normals or texture coordinates given for only some corners are dropped (0, 1 or 2 kinds).
+  std::size_t incompleteAttributesDropped = 0;
+  // glTF primitives that are points or lines, which a triangle mesh cannot hold.
+  std::size_t nonTrianglePrimitivesSkipped = 0;
 };
 
 // Reads by extension: .obj .ply .off .stl .gltf .glb (case-insensitive).
