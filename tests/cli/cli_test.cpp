@@ -44,6 +44,9 @@ struct Case {
   fs::path file;
 };
 
+// Names the case in gtest's messages instead of dumping its bytes.
+void PrintTo(const Case& c, std::ostream* out) { *out << c.file.string(); }
+
 std::vector<Case> allCases() {
   std::vector<Case> cases;
   const fs::path root = sourceDir() / "tests" / "cli" / "cases";
