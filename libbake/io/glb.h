@@ -66,6 +66,8 @@ struct Node {
   std::array<double, 3> translation{0, 0, 0};
   std::array<double, 4> rotation{0, 0, 0, 1};  // quaternion x, y, z, w
   std::array<double, 3> scale{1, 1, 1};
+  int camera = -1;
+  nlohmann::json extensions = nlohmann::json::object();  // e.g. KHR_lights_punctual
 
   std::array<double, 16> localMatrix() const;
 };
@@ -81,6 +83,7 @@ struct Package {
   std::vector<Node> nodes;
   std::vector<int> sceneRoots;  // empty: every node without a parent
   nlohmann::json materials = nlohmann::json::array();  // glTF material objects, kept as JSON
+  nlohmann::json cameras = nlohmann::json::array();    // glTF camera objects, kept as JSON
   nlohmann::json extensions = nlohmann::json::object();  // top-level extension objects by name
   std::vector<std::string> extensionsRequired;
   // Written as bufferViews 0..n-1, before any vertex data, so extensions refer to blob i as

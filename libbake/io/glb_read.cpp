@@ -378,6 +378,12 @@ Result<Node> readNode(const Document& doc, std::size_t index) {
     BAKE_ASSIGN_OR_RETURN(const std::size_t mesh, indexMember(source, "mesh", arrayMember(doc.root, "meshes").size(), "mesh", where));
     node.mesh = int(mesh);
   }
+  if (source.contains("camera")) {
+    BAKE_ASSIGN_OR_RETURN(const std::size_t camera,
+                          indexMember(source, "camera", arrayMember(doc.root, "cameras").size(), "camera", where));
+    node.camera = int(camera);
+  }
+  if (source.contains("extensions") && source["extensions"].is_object()) node.extensions = source["extensions"];
   const std::size_t nodeCount = arrayMember(doc.root, "nodes").size();
   for (const json& child : arrayMember(source, "children")) {
     if (!child.is_number_integer() || child.get<std::int64_t>() < 0 || std::uint64_t(child.get<std::int64_t>()) >= nodeCount ||
@@ -434,6 +440,7 @@ Result<Package> toPackage(const Document& doc) {
   package.extensionsRequired = stringArray(arrayMember(doc.root, "extensionsRequired"));
   if (doc.root.contains("extensions") && doc.root["extensions"].is_object()) package.extensions = doc.root["extensions"];
   package.materials = arrayMember(doc.root, "materials");
+  package.cameras = arrayMember(doc.root, "cameras");
 
   for (std::size_t v = 0; v < arrayMember(doc.root, "bufferViews").size(); ++v) {
     BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, bufferViewBytes(doc, v));

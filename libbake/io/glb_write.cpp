@@ -205,6 +205,8 @@ json nodeJson(const Node& node) {
   json out = json::object();
   if (!node.name.empty()) out["name"] = node.name;
   if (node.mesh >= 0) out["mesh"] = node.mesh;
+  if (node.camera >= 0) out["camera"] = node.camera;
+  if (!node.extensions.empty()) out["extensions"] = node.extensions;
   if (!node.children.empty()) out["children"] = node.children;
   if (node.matrix) {
     out["matrix"] = *node.matrix;
@@ -313,6 +315,7 @@ Result<std::vector<std::uint8_t>> encode(const Package& package, const WriteOpti
     root["scene"] = 0;
   }
   if (!package.materials.empty()) root["materials"] = package.materials;
+  if (!package.cameras.empty()) root["cameras"] = package.cameras;
   if (!package.extensions.empty()) root["extensions"] = package.extensions;
   if (!bin.views().empty()) root["bufferViews"] = bin.views();
   if (!bin.data().empty()) root["buffers"] = json::array({{{"byteLength", bin.data().size()}}});
