@@ -8,24 +8,13 @@
 #include <cmath>
 
 #include "io/glb.h"
+#include "io/glb_scene.h"
 #include "io/gltf.h"
 
 namespace bake {
 namespace {
 
 using Matrix = std::array<double, 16>;  // column-major
-
-Matrix multiply(const Matrix& a, const Matrix& b) {
-  Matrix m{};
-  for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) {
-      double sum = 0;
-      for (int k = 0; k < 4; ++k) sum += a[k * 4 + r] * b[c * 4 + k];
-      m[c * 4 + r] = sum;
-    }
-  }
-  return m;
-}
 
 Vec3f transformPoint(const Matrix& m, const float* p) {
   Vec3f out{};
@@ -107,20 +96,11 @@ struct Flattener {
     }
   }
 
-  Status visit(int index, const Matrix& parent, std::vector<bool>& onPath) {
-    if (onPath[std::size_t(index)]) {
-      return invalidInput("node " + std::to_string(index) + " is its own ancestor (cycle)", {name, "node " + std::to_string(index)});
-    }
-    onPath[std::size_t(index)] = true;
-    const glb::Node& node = package.nodes[std::size_t(index)];
-    const Matrix world = multiply(parent, node.localMatrix());
+  void visit(const glb::Node& node, const Matrix& world) {
     if (!node.name.empty()) mesh.namedPoints.push_back({node.name, {float(world[12]), float(world[13]), float(world[14])}});
     if (node.mesh >= 0) {
       for (const glb::Primitive& primitive : package.meshes[std::size_t(node.mesh)].primitives) appendPrimitive(primitive, world);
     }
-    for (int child : node.children) BAKE_RETURN_IF_ERROR(visit(child, world, onPath));
-    onPath[std::size_t(index)] = false;
-    return {};
   }
 };
 
@@ -136,18 +116,8 @@ Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadSta
       for (const glb::Primitive& primitive : mesh.primitives) flattener.appendPrimitive(primitive, kIdentity);
     }
   } else {
-    std::vector<int> roots = package.sceneRoots;
-    if (roots.empty()) {  // no scene: every node that is nobody's child
-      std::vector<bool> isChild(package.nodes.size(), false);
-      for (const glb::Node& node : package.nodes) {
-        for (int child : node.children) isChild[std::size_t(child)] = true;
-      }
-      for (std::size_t i = 0; i < package.nodes.size(); ++i) {
-        if (!isChild[i]) roots.push_back(int(i));
-      }
-    }
-    std::vector<bool> onPath(package.nodes.size(), false);
-    for (int root : roots) BAKE_RETURN_IF_ERROR(flattener.visit(root, kIdentity, onPath));
+    BAKE_RETURN_IF_ERROR(glb::forEachNode(package, path.string(),
+                                          [&](const glb::Node& node, const Matrix& world) { flattener.visit(node, world); }));
   }
   TriangleMesh mesh = std::move(flattener.mesh);
   if (!flattener.allHaveNormals || mesh.positions.empty()) mesh.normals.clear();
