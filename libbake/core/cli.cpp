@@ -10,7 +10,7 @@ namespace bake {
 const char* toolkitVersion() { return kToolkitVersion; }
 
 void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet which) {
-  app.set_version_flag("--version", std::string(app.get_name()) + " " + kToolkitVersion);
+  if (which.version) app.set_version_flag("--version", std::string(app.get_name()) + " " + kToolkitVersion);
   app.add_flag("-q,--quiet", options.quiet, "Print nothing but errors");
   if (which.report) {
     app.add_option("--report", options.reportPath, "Write a JSON report (formats/report.md) to this file");

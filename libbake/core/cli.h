@@ -25,6 +25,7 @@ struct CommonOptions {
 
 // Which of the common options a tool offers.
 struct CommonOptionSet {
+  bool version = true;  // false for subcommands: --version belongs to the main command
   bool report = true;
   bool depfile = true;
   bool threads = true;

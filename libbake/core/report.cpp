@@ -80,8 +80,11 @@ double StageTimer::seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-StageTimer::~StageTimer() {
-  if (report_) report_->addStage(name_, seconds());
+void StageTimer::stop() {
+  if (report_ && !stopped_) report_->addStage(name_, seconds());
+  stopped_ = true;
 }
+
+StageTimer::~StageTimer() { stop(); }
 
 }  // namespace bake

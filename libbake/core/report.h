@@ -54,11 +54,13 @@ class StageTimer {
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
   double seconds() const;
+  void stop();  // records now instead of at the end of the scope
 
  private:
   Report* report_;
   std::string name_;
   std::chrono::steady_clock::time_point start_;
+  bool stopped_ = false;
 };
 
 }  // namespace bake

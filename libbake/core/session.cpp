@@ -16,15 +16,17 @@ Status BakeSession::stageOutput(const std::filesystem::path& path, std::span<con
 Status BakeSession::finish(Status outcome) {
   if (outcome.isOk()) outcome = outputs_.commit();
   if (!outcome.isOk()) outputs_.discard();
+  std::vector<std::filesystem::path> outputs = outputs_.targets();
+  outputs.insert(outputs.end(), written_.begin(), written_.end());
   if (outcome.isOk() && !options_.depfilePath.empty()) {
-    outcome = writeDepfile(options_.depfilePath, outputs_.targets(), inputs_);
+    outcome = writeDepfile(options_.depfilePath, outputs, inputs_);
   }
   if (!options_.reportPath.empty()) {
     for (const auto& input : inputs_) {
       if (const Status s = report_.addInput(input); !s.isOk() && outcome.isOk()) outcome = s;
     }
     if (outcome.isOk()) {
-      for (const auto& output : outputs_.targets()) {
+      for (const auto& output : outputs) {
         if (const Status s = report_.addOutput(output); !s.isOk()) outcome = s;
       }
     }

@@ -25,6 +25,9 @@ class BakeSession {
 
   void addInput(const std::filesystem::path& path);
   Status stageOutput(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
+  // An output another writer has already written atomically (e.g. an image through OpenImageIO);
+  // call it last, since it cannot be rolled back.
+  void recordWrittenOutput(const std::filesystem::path& path) { written_.push_back(path); }
 
   // Commits the outputs when `outcome` is ok, then writes the depfile (on success) and the report
   // (always, when asked for). Returns the first failure.
@@ -36,6 +39,7 @@ class BakeSession {
   Report report_;
   OutputSet outputs_;
   std::vector<std::filesystem::path> inputs_;
+  std::vector<std::filesystem::path> written_;
 };
 
 }  // namespace bake

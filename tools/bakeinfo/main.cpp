@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
                "bakeinfo"};
   app.add_option("files", settings.files, "Packages to describe (.glb, .gltf, .ktx2)")->required();
   app.add_flag("--json", settings.json, "Print one JSON document (an array when several files are given)");
-  bake::addCommonOptions(app, settings.common, {.report = false, .depfile = false, .threads = false,
+  bake::addCommonOptions(app, settings.common, {.version = true, .report = false, .depfile = false, .threads = false,
                                                 .printInputs = false});
   return bake::runTool(app, diagnostics, argc, argv, [&] {
     diagnostics.setQuiet(settings.common.quiet);

@@ -1,0 +1,186 @@
+#include "play/render.h"
+
+#include <GL/glcorearb.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/session.h"
+#include "gl/context.h"
+#include "io/image.h"
+#include "render/renderer.h"
+#include "render/target.h"
+#include "scene/scene.h"
+
+namespace bake::play {
+namespace {
+
+Result<Scene> sceneFor(const ViewSettings& view, BakeSession& session) {
+  if (view.scenes.empty()) return defaultScene();
+  std::vector<std::filesystem::path> files;
+  for (const std::string& file : view.scenes) {
+    files.emplace_back(file);
+    session.addInput(file);
+  }
+  const RendererRegistry& registry = RendererRegistry::builtIn();
+  return loadScene(files, session.diagnostics(), [&](const std::string& e) { return registry.has(e); });
+}
+
+Result<std::pair<Camera, Light>> cameraAndLight(const ViewSettings& view, const Scene& scene) {
+  const float aspect = float(view.width) / float(view.height);
+  Camera camera = scene.fileCamera ? *scene.fileCamera : frameBounds(scene, aspect);
+  if (!view.camera.empty()) {
+    BAKE_ASSIGN_OR_RETURN(camera, parseCamera(view.camera, scene, aspect));
+  }
+  Light light = scene.fileLight ? *scene.fileLight : Light{};
+  if (!view.light.empty()) {
+    BAKE_ASSIGN_OR_RETURN(light, parseLight(view.light));
+  }
+  light.direction = normalize(light.direction);
+  return std::make_pair(camera, light);
+}
+
+void clearAndDraw(SceneRenderer& renderer, const FrameContext& frame) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glClearColor(0.06f, 0.065f, 0.075f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  renderer.draw(frame);
+}
+
+FrameContext frameContext(const Scene& scene, const Camera& camera, const Light& light, const ViewSettings& view) {
+  const float aspect = float(view.width) / float(view.height);
+  return {scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
+          perspective(camera.yfov, aspect, camera.znear, camera.zfar), view.width, view.height};
+}
+
+struct FrameTimes {
+  std::vector<double> gpuMs, cpuMs;
+};
+
+// Draws `frames` frames after one untimed warm-up frame (drivers compile lazily on first draw),
+// timing each on the GPU (timer query) and on the CPU (until the GPU is done). A GPU time longer than
+// the wall time around it is impossible; when a driver reports one, the GPU times are dropped.
+FrameTimes renderFrames(SceneRenderer& renderer, const FrameContext& frame, int frames) {
+  FrameTimes times;
+  clearAndDraw(renderer, frame);
+  glFinish();
+  GLuint query = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &query);
+  bool plausible = true;
+  for (int f = 0; f < frames; ++f) {
+    const auto start = std::chrono::steady_clock::now();
+    glBeginQuery(GL_TIME_ELAPSED, query);
+    clearAndDraw(renderer, frame);
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 nanoseconds = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);  // waits for the frame to finish
+    times.cpuMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    times.gpuMs.push_back(double(nanoseconds) * 1e-6);
+    plausible = plausible && times.gpuMs.back() <= times.cpuMs.back() * 1.01 + 0.01;
+  }
+  glDeleteQueries(1, &query);
+  if (!plausible) times.gpuMs.clear();
+  return times;
+}
+
+std::string extensionOf(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+nlohmann::json timingJson(const std::vector<double>& samples) {
+  if (samples.empty()) return nullptr;  // not measured (timer queries unreliable on this driver)
+  const Percentiles p = percentiles(samples);
+  return {{"medianMs", p.median}, {"p95Ms", p.p95}, {"frames", samples.size()}};
+}
+
+Status renderScene(const RenderSettings& settings, BakeSession& session) {
+  const std::string extension = extensionOf(settings.output);
+  if (extension != ".png" && extension != ".exr") {
+    return usageError("output " + settings.output + " must end in .png or .exr");
+  }
+  Scene scene;
+  {
+    StageTimer timer(&session.report(), "load");
+    BAKE_ASSIGN_OR_RETURN(scene, sceneFor(settings.view, session));
+  }
+  BAKE_ASSIGN_OR_RETURN(const auto view, cameraAndLight(settings.view, scene));
+  BAKE_ASSIGN_OR_RETURN(std::unique_ptr<gl::Context> context, gl::createHeadlessContext());
+  gl::ShaderLibrary shaders;
+  StageTimer prepareTimer(&session.report(), "prepare");
+  BAKE_ASSIGN_OR_RETURN(SceneRenderer renderer, SceneRenderer::create(scene, RendererRegistry::builtIn(), shaders));
+  BAKE_ASSIGN_OR_RETURN(OffscreenTarget target, OffscreenTarget::create(settings.view.width, settings.view.height));
+  prepareTimer.stop();
+
+  const FrameContext frame = frameContext(scene, view.first, view.second, settings.view);
+  StageTimer renderTimer(&session.report(), "render");
+  target.bind();
+  const FrameTimes times = renderFrames(renderer, frame, settings.frames);
+  const Image image = target.readLinearRgba();
+  renderTimer.stop();
+  session.report().setStatistic("techniques", renderer.techniques());
+  session.report().setStatistic("gpuBytes", renderer.gpuBytes());
+  session.report().setStatistic("shaderVariants", shaders.compiledVariants());
+  session.report().setStatistic("renderer", context->renderer());
+  session.report().setStatistic("glVersion", context->version());
+  session.report().setStatistic("size", {settings.view.width, settings.view.height});
+  session.report().setStatistic("frameTimeGpu", timingJson(times.gpuMs));
+  session.report().setStatistic("frameTimeCpu", timingJson(times.cpuMs));
+  if (settings.frames > 1 && !session.diagnostics().quiet()) {
+    const Percentiles gpu = percentiles(times.gpuMs), cpu = percentiles(times.cpuMs);
+    const std::string gpuText = times.gpuMs.empty() ? "GPU not measured (unreliable timer queries)"
+                                                    : "GPU median " + std::to_string(gpu.median) + " ms, p95 " +
+                                                          std::to_string(gpu.p95) + " ms";
+    session.diagnostics().info("frame time over " + std::to_string(settings.frames) + " frames: " + gpuText +
+                               "; CPU median " + std::to_string(cpu.median) + " ms, p95 " + std::to_string(cpu.p95) +
+                               " ms (" + context->renderer() + ")");
+  }
+  {
+    StageTimer timer(&session.report(), "write");
+    if (extension == ".png") {
+      BAKE_RETURN_IF_ERROR(writeImage(settings.output, encodeSrgb(image), PixelType::U8));
+    } else {
+      BAKE_RETURN_IF_ERROR(writeImage(settings.output, image, PixelType::Half));
+    }
+    session.recordWrittenOutput(settings.output);
+  }
+  return {};
+}
+
+}  // namespace
+
+Status parseSize(const std::string& text, ViewSettings& view) {
+  int width = 0, height = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') || width < 1 ||
+      height < 1 || width > 16384 || height > 16384) {
+    return usageError("--size \"" + text + "\" must be WIDTHxHEIGHT, each 1 to 16384");
+  }
+  view.width = width;
+  view.height = height;
+  return {};
+}
+
+Percentiles percentiles(std::vector<double> samples) {
+  if (samples.empty()) return {};
+  std::sort(samples.begin(), samples.end());
+  auto rank = [&](double q) { return samples[std::size_t(std::ceil(q * double(samples.size()))) - 1]; };
+  return {rank(0.5), rank(0.95)};
+}
+
+Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
+  if (settings.frames < 1) return usageError("--frames must be at least 1");
+  BakeSession session("bakeplay", settings.common, diagnostics);
+  session.report().setOptions({{"command", "render"},
+                               {"output", settings.output},
+                               {"size", {settings.view.width, settings.view.height}},
+                               {"camera", settings.view.camera},
+                               {"light", settings.view.light},
+                               {"frames", settings.frames}});
+  return session.finish(renderScene(settings, session));
+}
+
+}  // namespace bake::play

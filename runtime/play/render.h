@@ -1,0 +1,41 @@
+// `bakeplay render`: loads a scene (or the bundled example), renders it headless into an offscreen
+// target, writes PNG (sRGB, 8-bit) or EXR (linear, half), and with --frames N times N frames (GPU
+// timer queries and CPU wall time, median and p95) for the report.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/cli.h"
+#include "core/diagnostics.h"
+#include "core/status.h"
+
+namespace bake::play {
+
+struct ViewSettings {
+  std::vector<std::string> scenes;  // empty: the bundled example scene
+  int width = 512;
+  int height = 512;
+  std::string camera;  // "x,y,z[:tx,ty,tz]"; empty: from the file, else framed automatically
+  std::string light;   // "x,y,z" towards the light; empty: from the file, else a default
+};
+
+struct RenderSettings {
+  ViewSettings view;
+  std::string output;  // .png or .exr
+  int frames = 1;
+  CommonOptions common;
+};
+
+// "WxH"
+Status parseSize(const std::string& text, ViewSettings& view);
+
+Status runRender(const RenderSettings& settings, Diagnostics& diagnostics);
+
+struct Percentiles {
+  double median = 0, p95 = 0;
+};
+// Nearest-rank percentiles of a sample (empty: zeros).
+Percentiles percentiles(std::vector<double> samples);
+
+}  // namespace bake::play

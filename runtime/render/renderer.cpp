@@ -1,0 +1,55 @@
+#include "render/renderer.h"
+
+#include "render/standard.h"
+
+namespace bake::play {
+
+const RendererRegistry& RendererRegistry::builtIn() {
+  static const RendererRegistry registry = [] {
+    RendererRegistry r;
+    r.add("", [] { return std::make_unique<StandardRenderer>(); });
+    // Technique renderers register here: r.add("BAKE_<technique>", ...).
+    return r;
+  }();
+  return registry;
+}
+
+void RendererRegistry::add(const std::string& extension, RendererFactory factory) {
+  factories_[extension] = std::move(factory);
+}
+
+std::unique_ptr<TechniqueRenderer> RendererRegistry::create(const std::string& extension) const {
+  const auto it = factories_.find(extension);
+  return it == factories_.end() ? nullptr : it->second();
+}
+
+Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RendererRegistry& registry,
+                                            gl::ShaderLibrary& shaders) {
+  // Group instances by technique; an extension without a renderer falls back to standard shading
+  // (loadScene has already warned, or refused when the extension was required).
+  std::map<std::string, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    const std::string technique = scene.technique(scene.instances[i]);
+    groups[registry.has(technique) ? technique : ""].push_back(i);
+  }
+  SceneRenderer out;
+  for (const auto& [technique, instances] : groups) {
+    std::unique_ptr<TechniqueRenderer> renderer = registry.create(technique);
+    BAKE_RETURN_IF_ERROR(renderer->prepare(scene, instances, shaders));
+    out.renderers_.push_back(std::move(renderer));
+    out.techniques_.push_back(technique.empty() ? "standard" : technique);
+  }
+  return out;
+}
+
+void SceneRenderer::draw(const FrameContext& frame) {
+  for (auto& renderer : renderers_) renderer->draw(frame);
+}
+
+std::size_t SceneRenderer::gpuBytes() const {
+  std::size_t total = 0;
+  for (const auto& renderer : renderers_) total += renderer->gpuBytes();
+  return total;
+}
+
+}  // namespace bake::play

@@ -1,0 +1,180 @@
+// Scene loading: reads each package with libbake's reader (the same code bakeinfo trusts), places
+// every primitive instance in world space, and picks up the first perspective camera and the first
+// directional KHR_lights_punctual light. Extensions are checked against what the runtime can draw.
+#include "scene/scene.h"
+
+#include <bake_formats/glb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "io/glb_scene.h"
+
+namespace bake::play {
+namespace {
+
+constexpr const char* kLightsExtension = "KHR_lights_punctual";
+
+bool handledByCore(const std::string& extension) {
+  return extension == format::glb::kDracoExtension || extension == kLightsExtension;
+}
+
+Status checkExtensions(const glb::Package& package, const std::string& file, Diagnostics& diagnostics,
+                       const std::function<bool(const std::string&)>& isKnownTechnique) {
+  for (const std::string& extension : package.extensionsUsed) {
+    if (handledByCore(extension) || isKnownTechnique(extension)) continue;
+    const bool required = std::find(package.extensionsRequired.begin(), package.extensionsRequired.end(), extension) !=
+                          package.extensionsRequired.end();
+    if (required) {
+      return unsupported("extension " + extension + " is required but this runtime has no renderer for it",
+                         {file, "extensionsRequired"});
+    }
+    diagnostics.warning("unknown-extension", file + ": extension " + extension + " is not known; drawn without it");
+  }
+  return {};
+}
+
+Vec3 column(const glb::WorldMatrix& m, int c) { return {float(m[c * 4]), float(m[c * 4 + 1]), float(m[c * 4 + 2])}; }
+
+void takeCamera(const glb::Package& package, const glb::Node& node, const glb::WorldMatrix& world, Scene& scene) {
+  if (scene.fileCamera || node.camera < 0) return;
+  const nlohmann::json& camera = package.cameras[std::size_t(node.camera)];
+  if (camera.value("type", "") != "perspective" || !camera.contains("perspective")) return;
+  const nlohmann::json& p = camera["perspective"];
+  Camera out;
+  out.eye = column(world, 3);
+  out.target = out.eye - normalize(column(world, 2));  // cameras look down their local -Z
+  out.up = normalize(column(world, 1));
+  out.yfov = p.value("yfov", 0.7f);
+  out.znear = p.value("znear", 0.01f);
+  out.zfar = p.value("zfar", 1000.0f);
+  scene.fileCamera = out;
+}
+
+void takeLight(const glb::Package& package, const glb::Node& node, const glb::WorldMatrix& world, Scene& scene) {
+  if (scene.fileLight || !node.extensions.contains(kLightsExtension)) return;
+  const nlohmann::json lights = package.extensions.value(kLightsExtension, nlohmann::json::object()).value("lights", nlohmann::json::array());
+  const int index = node.extensions[kLightsExtension].value("light", -1);
+  if (index < 0 || std::size_t(index) >= lights.size() || lights[std::size_t(index)].value("type", "") != "directional") return;
+  Light light;
+  light.direction = normalize(column(world, 2));  // the light shines down its local -Z
+  const nlohmann::json colour = lights[std::size_t(index)].value("color", nlohmann::json::array({1.0, 1.0, 1.0}));
+  if (colour.is_array() && colour.size() == 3) light.colour = {colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()};
+  scene.fileLight = light;
+}
+
+void growBounds(Scene& scene, const Instance& instance, bool& first) {
+  const glb::Attribute* position = scene.primitive(instance).find("POSITION");
+  if (!position) return;
+  const std::vector<float> p = position->toFloats();
+  for (std::size_t v = 0; v + 2 < p.size(); v += 3) {
+    const Vec3 w = transformPoint(instance.world, {p[v], p[v + 1], p[v + 2]});
+    for (int k = 0; k < 3; ++k) {
+      scene.boundsMin[k] = first ? w[k] : std::min(scene.boundsMin[k], w[k]);
+      scene.boundsMax[k] = first ? w[k] : std::max(scene.boundsMax[k], w[k]);
+    }
+    first = false;
+  }
+}
+
+Status addPackage(Scene& scene, glb::Package package, const std::string& file, bool& firstPoint) {
+  const std::size_t index = scene.packages.size();
+  scene.packages.push_back(std::move(package));
+  scene.files.push_back(file);
+  const glb::Package& stored = scene.packages.back();
+  return glb::forEachNode(stored, file, [&](const glb::Node& node, const glb::WorldMatrix& world) {
+    takeCamera(stored, node, world, scene);
+    takeLight(stored, node, world, scene);
+    if (node.mesh < 0) return;
+    for (std::size_t p = 0; p < stored.meshes[std::size_t(node.mesh)].primitives.size(); ++p) {
+      scene.instances.push_back({index, std::size_t(node.mesh), p, fromDoubles(world)});
+      growBounds(scene, scene.instances.back(), firstPoint);
+    }
+  });
+}
+
+Result<Vec3> parseVector(const std::string& text, const std::string& what) {
+  Vec3 v{};
+  char comma1 = 0, comma2 = 0;
+  std::istringstream in(text);
+  if (!(in >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
+      !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+    return usageError(what + " \"" + text + "\" is not three finite numbers x,y,z");
+  }
+  return v;
+}
+
+}  // namespace
+
+const glb::Primitive& Scene::primitive(const Instance& instance) const {
+  return packages[instance.package].meshes[instance.mesh].primitives[instance.primitive];
+}
+
+const nlohmann::json& Scene::material(const Instance& instance) const {
+  static const nlohmann::json none;
+  const int index = primitive(instance).material;
+  const nlohmann::json& materials = packages[instance.package].materials;
+  return index >= 0 && std::size_t(index) < materials.size() ? materials[std::size_t(index)] : none;
+}
+
+std::string Scene::technique(const Instance& instance) const {
+  const nlohmann::json& m = material(instance);
+  if (!m.is_object() || !m.contains("extensions") || !m["extensions"].is_object()) return "";
+  for (const auto& [name, body] : m["extensions"].items()) {
+    if (name.rfind(format::glb::kVendorExtensionPrefix, 0) == 0) return name;
+  }
+  return "";
+}
+
+Result<Scene> loadScene(const std::vector<std::filesystem::path>& files, Diagnostics& diagnostics,
+                        const std::function<bool(const std::string&)>& isKnownTechnique) {
+  Scene scene;
+  bool firstPoint = true;
+  for (const auto& file : files) {
+    BAKE_ASSIGN_OR_RETURN(glb::Package package, glb::read(file));
+    BAKE_RETURN_IF_ERROR(checkExtensions(package, file.string(), diagnostics, isKnownTechnique));
+    BAKE_RETURN_IF_ERROR(addPackage(scene, std::move(package), file.string(), firstPoint));
+  }
+  if (scene.instances.empty()) return invalidInput("the scene has nothing to draw (no mesh instances)");
+  return scene;
+}
+
+Camera frameBounds(const Scene& scene, float aspect) {
+  const Vec3 centre = (scene.boundsMin + scene.boundsMax) * 0.5f;
+  const float radius = std::max(length(scene.boundsMax - scene.boundsMin) * 0.5f, 1e-6f);
+  Camera camera;
+  const float fit = radius / std::sin(camera.yfov / 2) / std::min(1.0f, aspect);
+  const Vec3 direction = normalize(Vec3{0.55f, 0.45f, 0.75f});
+  camera.target = centre;
+  camera.eye = centre + direction * (fit * 1.05f);
+  camera.znear = std::max(fit - radius * 1.5f, fit * 1e-3f);
+  camera.zfar = fit + radius * 1.5f;
+  return camera;
+}
+
+Result<Camera> parseCamera(const std::string& text, const Scene& scene, float aspect) {
+  Camera camera = frameBounds(scene, aspect);
+  const std::size_t colon = text.find(':');
+  BAKE_ASSIGN_OR_RETURN(camera.eye, parseVector(text.substr(0, colon), "--camera eye"));
+  if (colon != std::string::npos) {
+    BAKE_ASSIGN_OR_RETURN(camera.target, parseVector(text.substr(colon + 1), "--camera target"));
+  }
+  if (length(camera.eye - camera.target) == 0) return usageError("--camera: the eye and the target coincide");
+  const float reach = length(camera.eye - camera.target) + length(scene.boundsMax - scene.boundsMin);
+  camera.znear = reach * 1e-4f;
+  camera.zfar = reach * 2;
+  return camera;
+}
+
+Result<Light> parseLight(const std::string& text) {
+  Light light;
+  BAKE_ASSIGN_OR_RETURN(light.direction, parseVector(text, "--light"));
+  if (length(light.direction) == 0) return usageError("--light: the direction is zero");
+  light.direction = normalize(light.direction);
+  return light;
+}
+
+}  // namespace bake::play
