@@ -41,14 +41,6 @@ Result<std::pair<Camera, Light>> cameraAndLight(const ViewSettings& view, const 
   return std::make_pair(camera, light);
 }
 
-void clearAndDraw(SceneRenderer& renderer, const FrameContext& frame) {
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glClearColor(0.06f, 0.065f, 0.075f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  renderer.draw(frame);
-}
-
 FrameContext frameContext(const Scene& scene, const Camera& camera, const Light& light, const ViewSettings& view) {
   const float aspect = float(view.width) / float(view.height);
   return {scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
@@ -64,7 +56,7 @@ struct FrameTimes {
 // the wall time around it is impossible; when a driver reports one, the GPU times are dropped.
 FrameTimes renderFrames(SceneRenderer& renderer, const FrameContext& frame, int frames) {
   FrameTimes times;
-  clearAndDraw(renderer, frame);
+  renderer.drawFrame(frame);
   glFinish();
   GLuint query = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &query);
@@ -72,7 +64,7 @@ FrameTimes renderFrames(SceneRenderer& renderer, const FrameContext& frame, int 
   for (int f = 0; f < frames; ++f) {
     const auto start = std::chrono::steady_clock::now();
     glBeginQuery(GL_TIME_ELAPSED, query);
-    clearAndDraw(renderer, frame);
+    renderer.drawFrame(frame);
     glEndQuery(GL_TIME_ELAPSED);
     GLuint64 nanoseconds = 0;
     glGetQueryObjectui64v(query, GL_QUERY_RESULT, &nanoseconds);  // waits for the frame to finish

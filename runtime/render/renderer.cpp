@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include <GL/glcorearb.h>
+
 #include "render/standard.h"
 
 namespace bake::play {
@@ -42,7 +44,11 @@ Result<SceneRenderer> SceneRenderer::create(const Scene& scene, const RendererRe
   return out;
 }
 
-void SceneRenderer::draw(const FrameContext& frame) {
+void SceneRenderer::drawFrame(const FrameContext& frame) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glClearColor(0.06f, 0.065f, 0.075f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   for (auto& renderer : renderers_) renderer->draw(frame);
 }
 

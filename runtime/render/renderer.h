@@ -55,7 +55,8 @@ class RendererRegistry {
 class SceneRenderer {
  public:
   static Result<SceneRenderer> create(const Scene& scene, const RendererRegistry& registry, gl::ShaderLibrary& shaders);
-  void draw(const FrameContext& frame);
+  // Clears the bound target to the background colour and draws every technique.
+  void drawFrame(const FrameContext& frame);
   std::size_t gpuBytes() const;
   const std::vector<std::string>& techniques() const { return techniques_; }
 

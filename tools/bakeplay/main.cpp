@@ -1,6 +1,7 @@
 // bakeplay: the reference runtime. `render` draws a scene headless to PNG/EXR; more commands below.
 #include "core/cli.h"
 #include "play/render.h"
+#include "play/validate.h"
 
 namespace {
 
@@ -27,7 +28,26 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--frames", render.frames, "Render this many frames and report median and p95 frame times");
   bake::addCommonOptions(*renderCommand, render.common, {.version = false, .report = true, .depfile = true, .threads = false, .printInputs = false});
 
+  bake::play::ValidateSettings validate;
+  CLI::App* validateCommand = app.add_subcommand(
+      "validate", "Check packages: structure, values, extensions, shader compilation, reference views (exit 3 on failure)");
+  validateCommand->add_option("packages", validate.packages, "Packages to validate")->required();
+  validateCommand->add_option("--golden", validate.goldens, "Expected image of each package's first reference view (one per package)");
+  validateCommand->add_option("--tolerance", validate.tolerance.rmse, "Largest RMSE allowed against the golden (0..1 units)")
+      ->default_val(validate.tolerance.rmse);
+  validateCommand->add_option("--pixel-threshold", validate.tolerance.threshold, "Channel difference that counts a pixel as off")
+      ->default_val(validate.tolerance.threshold);
+  validateCommand->add_option("--max-off-percent", validate.tolerance.percentOver, "Largest share of off pixels allowed, in percent")
+      ->default_val(validate.tolerance.percentOver);
+  validateCommand->add_option("--views", validate.viewsDirectory, "Write the rendered reference views into this directory");
+  validateCommand->add_option("--size", validate.size, "Reference view size in pixels (square)")->default_val(validate.size);
+  bake::addCommonOptions(*validateCommand, validate.common, {.version = false, .report = true, .depfile = false, .threads = false, .printInputs = false});
+
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
+    if (validateCommand->parsed()) {
+      diagnostics.setQuiet(validate.common.quiet);
+      return bake::play::runValidate(validate, diagnostics);
+    }
     if (renderCommand->parsed()) {
       diagnostics.setQuiet(render.common.quiet);
       BAKE_RETURN_IF_ERROR(bake::play::parseSize(renderSize, render.view));
