@@ -1,0 +1,71 @@
+#include <gtest/gtest.h>
+
+#include "core/atomic_file.h"
+#include "io/image.h"
+#include "io/image_compare.h"
+#include "play/render.h"
+#include "support/golden.h"
+
+namespace bake::play {
+namespace {
+namespace fs = std::filesystem;
+
+Image renderExample(const fs::path& file) {
+  RenderSettings settings;
+  settings.view.width = 256;
+  settings.view.height = 192;
+  settings.output = file.string();
+  Diagnostics diagnostics("bakeplay", true);
+  const Status status = runRender(settings, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  auto image = readImage(file);
+  EXPECT_TRUE(image.isOk());
+  return image.isOk() ? *image : Image{};
+}
+
+// The bundled example scene against its golden picture (BAKE_UPDATE_GOLDEN=1 rewrites it). The
+// tolerance allows for other Mesa versions rasterising edges a little differently.
+TEST(ExampleScene, MatchesTheGoldenImage) {
+  const fs::path dir = test::freshTempDir("example_scene");
+  const Image image = renderExample(dir / "example.png");
+  const std::string golden = "runtime/example-scene.v1.png";
+  if (test::updatingGoldens()) {
+    fs::create_directories(test::goldenPath(golden).parent_path());
+    fs::copy_file(dir / "example.png", test::goldenPath(golden), fs::copy_options::overwrite_existing);
+    GTEST_SKIP() << "updated " << golden;
+  }
+  auto expected = readImage(test::goldenPath(golden));
+  ASSERT_TRUE(expected.isOk()) << expected.status().describe();
+  auto difference = compareImages(image, *expected, 0.1);
+  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
+  EXPECT_TRUE(withinTolerance(*difference, {0.01, 0.1, 0.5})) << describe(*difference);
+}
+
+TEST(ExampleScene, RenderingIsDeterministic) {
+  const fs::path dir = test::freshTempDir("example_twice");
+  renderExample(dir / "a.png");
+  renderExample(dir / "b.png");
+  EXPECT_EQ(test::readAll(dir / "a.png"), test::readAll(dir / "b.png"));
+  RenderSettings settings;
+  settings.output = (dir / "a.exr").string();
+  settings.view.width = settings.view.height = 64;
+  Diagnostics diagnostics("bakeplay", true);
+  ASSERT_TRUE(runRender(settings, diagnostics).isOk());
+  auto exr = readImage(dir / "a.exr");
+  ASSERT_TRUE(exr.isOk());
+  EXPECT_EQ(exr->sourceType, PixelType::Half);
+}
+
+TEST(ExampleScene, BadOutputsAreRefused) {
+  const fs::path dir = test::freshTempDir("example_bad");
+  RenderSettings settings;
+  Diagnostics diagnostics("bakeplay", true);
+  settings.output = (dir / "frame.jpg").string();
+  EXPECT_EQ(runRender(settings, diagnostics).code(), ExitCode::Usage);
+  settings.output = (dir / "missing" / "frame.png").string();
+  EXPECT_EQ(runRender(settings, diagnostics).code(), ExitCode::Io);
+  EXPECT_FALSE(fs::exists(dir / "missing"));
+}
+
+}  // namespace
+}  // namespace bake::play
