@@ -16,31 +16,6 @@
 namespace bake::play {
 namespace {
 
-Result<Scene> sceneFor(const ViewSettings& view, BakeSession& session) {
-  if (view.scenes.empty()) return defaultScene();
-  std::vector<std::filesystem::path> files;
-  for (const std::string& file : view.scenes) {
-    files.emplace_back(file);
-    session.addInput(file);
-  }
-  const RendererRegistry& registry = RendererRegistry::builtIn();
-  return loadScene(files, session.diagnostics(), [&](const std::string& e) { return registry.has(e); });
-}
-
-Result<std::pair<Camera, Light>> cameraAndLight(const ViewSettings& view, const Scene& scene) {
-  const float aspect = float(view.width) / float(view.height);
-  Camera camera = scene.fileCamera ? *scene.fileCamera : frameBounds(scene, aspect);
-  if (!view.camera.empty()) {
-    BAKE_ASSIGN_OR_RETURN(camera, parseCamera(view.camera, scene, aspect));
-  }
-  Light light = scene.fileLight ? *scene.fileLight : Light{};
-  if (!view.light.empty()) {
-    BAKE_ASSIGN_OR_RETURN(light, parseLight(view.light));
-  }
-  light.direction = normalize(light.direction);
-  return std::make_pair(camera, light);
-}
-
 FrameContext frameContext(const Scene& scene, const Camera& camera, const Light& light, const ViewSettings& view) {
   const float aspect = float(view.width) / float(view.height);
   return {scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
@@ -94,12 +69,11 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   if (extension != ".png" && extension != ".exr") {
     return usageError("output " + settings.output + " must end in .png or .exr");
   }
-  Scene scene;
-  {
-    StageTimer timer(&session.report(), "load");
-    BAKE_ASSIGN_OR_RETURN(scene, sceneFor(settings.view, session));
-  }
-  BAKE_ASSIGN_OR_RETURN(const auto view, cameraAndLight(settings.view, scene));
+  for (const std::string& file : settings.view.scenes) session.addInput(file);
+  StageTimer loadTimer(&session.report(), "load");
+  BAKE_ASSIGN_OR_RETURN(const ViewSetup setup, setUpView(settings.view, session.diagnostics()));
+  loadTimer.stop();
+  const Scene& scene = setup.scene;
   BAKE_ASSIGN_OR_RETURN(std::unique_ptr<gl::Context> context, gl::createHeadlessContext());
   gl::ShaderLibrary shaders;
   StageTimer prepareTimer(&session.report(), "prepare");
@@ -107,7 +81,7 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   BAKE_ASSIGN_OR_RETURN(OffscreenTarget target, OffscreenTarget::create(settings.view.width, settings.view.height));
   prepareTimer.stop();
 
-  const FrameContext frame = frameContext(scene, view.first, view.second, settings.view);
+  const FrameContext frame = frameContext(scene, setup.camera, setup.light, settings.view);
   StageTimer renderTimer(&session.report(), "render");
   target.bind();
   const FrameTimes times = renderFrames(renderer, frame, settings.frames);
@@ -143,6 +117,28 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
 }
 
 }  // namespace
+
+Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics) {
+  ViewSetup setup;
+  if (view.scenes.empty()) {
+    setup.scene = defaultScene();
+  } else {
+    const std::vector<std::filesystem::path> files(view.scenes.begin(), view.scenes.end());
+    const RendererRegistry& registry = RendererRegistry::builtIn();
+    BAKE_ASSIGN_OR_RETURN(setup.scene, loadScene(files, diagnostics, [&](const std::string& e) { return registry.has(e); }));
+  }
+  const float aspect = float(view.width) / float(view.height);
+  setup.camera = setup.scene.fileCamera ? *setup.scene.fileCamera : frameBounds(setup.scene, aspect);
+  if (!view.camera.empty()) {
+    BAKE_ASSIGN_OR_RETURN(setup.camera, parseCamera(view.camera, setup.scene, aspect));
+  }
+  setup.light = setup.scene.fileLight ? *setup.scene.fileLight : Light{};
+  if (!view.light.empty()) {
+    BAKE_ASSIGN_OR_RETURN(setup.light, parseLight(view.light));
+  }
+  setup.light.direction = normalize(setup.light.direction);
+  return setup;
+}
 
 Status parseSize(const std::string& text, ViewSettings& view) {
   int width = 0, height = 0;

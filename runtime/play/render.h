@@ -9,6 +9,7 @@
 #include "core/cli.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
+#include "scene/scene.h"
 
 namespace bake::play {
 
@@ -18,6 +19,7 @@ struct ViewSettings {
   int height = 512;
   std::string camera;  // "x,y,z[:tx,ty,tz]"; empty: from the file, else framed automatically
   std::string light;   // "x,y,z" towards the light; empty: from the file, else a default
+  bool quiet = false;  // for commands without the common options
 };
 
 struct RenderSettings {
@@ -29,6 +31,14 @@ struct RenderSettings {
 
 // "WxH"
 Status parseSize(const std::string& text, ViewSettings& view);
+
+// The scene of the settings (the bundled example when no file is given), its camera and its light.
+struct ViewSetup {
+  Scene scene;
+  Camera camera;
+  Light light;
+};
+Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics);
 
 Status runRender(const RenderSettings& settings, Diagnostics& diagnostics);
 

@@ -15,12 +15,14 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
   OffscreenTarget target;
   target.width_ = width;
   target.height_ = height;
-  glCreateRenderbuffers(1, &target.colour_);
-  glNamedRenderbufferStorage(target.colour_, GL_RGBA16F, width, height);
+  glCreateTextures(GL_TEXTURE_2D, 1, &target.colour_);  // a texture, so a window can present it
+  glTextureStorage2D(target.colour_, 1, GL_RGBA16F, width, height);
+  glTextureParameteri(target.colour_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(target.colour_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glCreateRenderbuffers(1, &target.depth_);
   glNamedRenderbufferStorage(target.depth_, GL_DEPTH_COMPONENT24, width, height);
   glCreateFramebuffers(1, &target.framebuffer_);
-  glNamedFramebufferRenderbuffer(target.framebuffer_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, target.colour_);
+  glNamedFramebufferTexture(target.framebuffer_, GL_COLOR_ATTACHMENT0, target.colour_, 0);
   glNamedFramebufferRenderbuffer(target.framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, target.depth_);
   const GLenum status = glCheckNamedFramebufferStatus(target.framebuffer_, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -47,7 +49,7 @@ OffscreenTarget::~OffscreenTarget() { release(); }
 
 void OffscreenTarget::release() {
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
-  if (colour_) glDeleteRenderbuffers(1, &colour_);
+  if (colour_) glDeleteTextures(1, &colour_);
   if (depth_) glDeleteRenderbuffers(1, &depth_);
   framebuffer_ = colour_ = depth_ = 0;
 }

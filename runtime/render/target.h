@@ -17,6 +17,7 @@ class OffscreenTarget {
 
   void bind() const;
   Image readLinearRgba() const;  // top row first
+  unsigned colourTexture() const { return colour_; }
   int width() const { return width_; }
   int height() const { return height_; }
 

@@ -2,12 +2,13 @@
 #include "core/cli.h"
 #include "play/render.h"
 #include "play/validate.h"
+#include "play/view.h"
 
 namespace {
 
 void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::string& size) {
   command.add_option("scenes", view.scenes, "Packages (.glb/.gltf) that together make the scene; none: the bundled example");
-  command.add_option("--size", size, "Frame size WIDTHxHEIGHT")->default_str("512x512");
+  command.add_option("--size", size, "Frame or window size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--camera", view.camera, "Camera eye x,y,z or eye:target x,y,z:x,y,z (default: the file's camera, else framed)");
   command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)");
 }
@@ -17,7 +18,7 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
 int main(int argc, char** argv) {
   bake::Diagnostics diagnostics("bakeplay");
   CLI::App app{"The reference OpenGL runtime of the bake toolchain: renders and validates packages.", "bakeplay"};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);  // no command: view the bundled example scene
   app.set_version_flag("--version", std::string("bakeplay ") + bake::toolkitVersion());
 
   bake::play::RenderSettings render;
@@ -43,7 +44,20 @@ int main(int argc, char** argv) {
   validateCommand->add_option("--size", validate.size, "Reference view size in pixels (square)")->default_val(validate.size);
   bake::addCommonOptions(*validateCommand, validate.common, {.version = false, .report = true, .depfile = false, .threads = false, .printInputs = false});
 
+  bake::play::WindowSettings view;
+  std::string viewSize = "960x720";
+  CLI::App* viewCommand = app.add_subcommand("view", "Show a scene in a window (drag: orbit, scroll: zoom, right drag or arrows: light)");
+  addViewOptions(*viewCommand, view.view, viewSize);
+  viewCommand->add_option("--screenshot", view.screenshot, "Write the window's picture (.png) after --frames frames and close");
+  viewCommand->add_option("--frames", view.frames, "Frames to show before --screenshot")->default_val(view.frames);
+  viewCommand->add_flag("-q,--quiet", view.view.quiet, "Print nothing but errors");
+
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
+    if (viewCommand->parsed() || app.get_subcommands().empty()) {
+      diagnostics.setQuiet(view.view.quiet);
+      BAKE_RETURN_IF_ERROR(bake::play::parseSize(viewSize, view.view));
+      return bake::play::runView(view, diagnostics);
+    }
     if (validateCommand->parsed()) {
       diagnostics.setQuiet(validate.common.quiet);
       return bake::play::runValidate(validate, diagnostics);
@@ -53,6 +67,6 @@ int main(int argc, char** argv) {
       BAKE_RETURN_IF_ERROR(bake::play::parseSize(renderSize, render.view));
       return bake::play::runRender(render, diagnostics);
     }
-    return bake::usageError("no command given");
+    return bake::internalError("unhandled command");
   });
 }
