@@ -1,6 +1,7 @@
 #include "play/view.h"
 
 #include <GL/glcorearb.h>
+#define GLFW_INCLUDE_NONE  // glcorearb.h already declares GL; glfw3.h would pull in GL/gl.h
 #include <GLFW/glfw3.h>
 
 #include <algorithm>

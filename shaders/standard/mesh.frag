@@ -12,6 +12,7 @@ in vec2 vTexcoord0;  // not sampled yet; passed through for textured materials
 #endif
 
 uniform vec3 uLightDir;   // direction towards the light, world space
+uniform vec3 uLightColour = vec3(1.0);  // linear; KHR_lights_punctual colour when the scene has one
 uniform vec3 uCameraPos;  // world space
 uniform vec4 uBaseColor;  // linear RGBA
 
@@ -25,5 +26,5 @@ void main() {
 #endif
   vec3 l = normalize(uLightDir);
   vec3 v = normalize(uCameraPos - vWorldPosition);
-  fragColor = vec4(blinnPhong(n, l, v, uBaseColor.rgb), uBaseColor.a);
+  fragColor = vec4(blinnPhong(n, l, v, uBaseColor.rgb, uLightColour), uBaseColor.a);
 }

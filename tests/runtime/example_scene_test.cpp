@@ -69,3 +69,31 @@ TEST(ExampleScene, BadOutputsAreRefused) {
 
 }  // namespace
 }  // namespace bake::play
+
+namespace bake::play {
+namespace {
+
+// `bakeplay view` in a real window under Xvfb: after a few frames its screenshot must show the same
+// picture as `render` (both share the renderer and the sRGB encoding).
+TEST(ExampleScene, WindowShowsTheSamePictureUnderXvfb) {
+  const fs::path dir = test::freshTempDir("example_window");
+  ASSERT_EQ(std::system("command -v xvfb-run >/dev/null"), 0) << "xvfb-run is missing: run scripts/setup.sh";
+  const std::string command = std::string("xvfb-run -a -s '-screen 0 640x480x24' '") + BAKEPLAY_PATH +
+                              "' view --size 160x120 --frames 3 --screenshot '" + (dir / "window.png").string() + "' -q";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  RenderSettings settings;
+  settings.view.width = 160;
+  settings.view.height = 120;
+  settings.output = (dir / "render.png").string();
+  Diagnostics diagnostics("bakeplay", true);
+  ASSERT_TRUE(runRender(settings, diagnostics).isOk());
+  auto window = readImage(dir / "window.png");
+  auto rendered = readImage(dir / "render.png");
+  ASSERT_TRUE(window.isOk() && rendered.isOk());
+  auto difference = compareImages(*window, *rendered, 2.5 / 255.0);
+  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
+  EXPECT_LE(difference->maxError, 2.5 / 255.0) << describe(*difference);
+}
+
+}  // namespace
+}  // namespace bake::play
