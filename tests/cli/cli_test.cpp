@@ -72,6 +72,19 @@ void replaceAll(std::string& text, const std::string& from, const std::string& t
   }
 }
 
+// This process's environment with the case's changes: a string sets a variable, null removes it.
+std::vector<std::string> environmentFor(const json& changes) {
+  std::vector<std::string> out;
+  for (char** entry = environ; *entry; ++entry) {
+    const std::string text = *entry;
+    if (!changes.contains(text.substr(0, text.find('=')))) out.push_back(text);
+  }
+  for (const auto& [name, value] : changes.items()) {
+    if (value.is_string()) out.push_back(name + "=" + value.get<std::string>());
+  }
+  return out;
+}
+
 struct ProcessResult {
   int exitCode = -1;
   std::string out, err;
@@ -131,9 +144,13 @@ class CliCase : public ::testing::TestWithParam<Case> {
     posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<std::string> environment = environmentFor(spec_.value("env", json::object()));
+    std::vector<char*> envp;
+    for (std::string& entry : environment) envp.push_back(entry.data());
+    envp.push_back(nullptr);
     pid_t pid = 0;
     ProcessResult result;
-    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0) {
+    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0) {
       int status = 0;
       waitpid(pid, &status, 0);
       result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
