@@ -97,3 +97,33 @@ TEST(ExampleScene, WindowShowsTheSamePictureUnderXvfb) {
 
 }  // namespace
 }  // namespace bake::play
+
+namespace bake::play {
+namespace {
+
+// Leaving out what a scene does not use: a scene without normals compiles no HAS_NORMALS variant
+// and uploads no normals; the report lists exactly the variants compiled.
+TEST(ExampleScene, OnlyTheVariantsTheSceneUsesAreCompiled) {
+  const fs::path dir = test::freshTempDir("variants");
+  glb::Primitive primitive;
+  primitive.attributes.push_back(glb::Attribute::fromFloats("POSITION", 3, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+  primitive.attributes.push_back(glb::Attribute::fromFloats("_UNUSED_0", 1, std::vector<float>{1, 2, 3}));
+  glb::Package package;
+  package.meshes.push_back({"flat", {primitive}});
+  ASSERT_TRUE(glb::write(dir / "flat.glb", package).isOk());
+
+  RenderSettings settings;
+  settings.view.scenes = {(dir / "flat.glb").string()};
+  settings.view.width = settings.view.height = 32;
+  settings.output = (dir / "flat.png").string();
+  settings.common.reportPath = (dir / "report.json").string();
+  Diagnostics diagnostics("bakeplay", true);
+  ASSERT_TRUE(runRender(settings, diagnostics).isOk());
+  const auto bytes = test::readAll(dir / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(bytes.begin(), bytes.end());
+  EXPECT_EQ(report["statistics"]["shaderVariants"], nlohmann::json::array({"standard/mesh.vert+standard/mesh.frag[]"}));
+  EXPECT_EQ(report["statistics"]["gpuBytes"], 3 * 12) << "only POSITION is uploaded";
+}
+
+}  // namespace
+}  // namespace bake::play

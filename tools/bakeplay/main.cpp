@@ -1,10 +1,14 @@
-// bakeplay: the reference runtime. `render` draws a scene headless to PNG/EXR; more commands below.
+// bakeplay: the reference runtime. `render` draws a scene headless to PNG/EXR, `validate` checks
+// packages, `view` opens a window (also what bakeplay does with no command).
 #include "core/cli.h"
 #include "play/render.h"
 #include "play/validate.h"
 #include "play/view.h"
 
 namespace {
+
+const bake::CommonOptionSet kReportOnly = {.version = false, .report = true, .depfile = false, .threads = false,
+                                           .printInputs = false};
 
 void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::string& size) {
   command.add_option("scenes", view.scenes, "Packages (.glb/.gltf) that together make the scene; none: the bundled example");
@@ -13,60 +17,71 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
   command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)");
 }
 
+CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, std::string& size) {
+  CLI::App* command = app.add_subcommand("render", "Render a scene headless (EGL) to a PNG or EXR image");
+  addViewOptions(*command, render.view, size);
+  command->add_option("-o,--output", render.output, "Image to write (.png: sRGB 8-bit, .exr: linear half)")->required();
+  command->add_option("--frames", render.frames, "Render this many frames and report median and p95 frame times");
+  bake::CommonOptionSet options = kReportOnly;
+  options.depfile = true;
+  bake::addCommonOptions(*command, render.common, options);
+  return command;
+}
+
+CLI::App* addValidateCommand(CLI::App& app, bake::play::ValidateSettings& validate) {
+  CLI::App* command = app.add_subcommand(
+      "validate", "Check packages: structure, values, extensions, shader compilation, reference views (exit 3 on failure)");
+  command->add_option("packages", validate.packages, "Packages to validate")->required();
+  command->add_option("--golden", validate.goldens, "Expected image of each package's first reference view (one per package)");
+  command->add_option("--tolerance", validate.tolerance.rmse, "Largest RMSE allowed against the golden (0..1 units)")
+      ->capture_default_str();
+  command->add_option("--pixel-threshold", validate.tolerance.threshold, "Channel difference that counts a pixel as off")
+      ->capture_default_str();
+  command->add_option("--max-off-percent", validate.tolerance.percentOver, "Largest share of off pixels allowed, in percent")
+      ->capture_default_str();
+  command->add_option("--views", validate.viewsDirectory, "Write the rendered reference views into this directory");
+  command->add_option("--size", validate.size, "Reference view size in pixels (square)")->capture_default_str();
+  bake::addCommonOptions(*command, validate.common, kReportOnly);
+  return command;
+}
+
+CLI::App* addViewCommand(CLI::App& app, bake::play::WindowSettings& view, std::string& size) {
+  CLI::App* command = app.add_subcommand("view", "Show a scene in a window (drag: orbit, scroll: zoom, right drag or arrows: light)");
+  addViewOptions(*command, view.view, size);
+  command->add_option("--screenshot", view.screenshot, "Write the window's picture (.png) after --frames frames and close");
+  command->add_option("--frames", view.frames, "Frames to show before --screenshot")->capture_default_str();
+  command->add_flag("-q,--quiet", view.view.quiet, "Print nothing but errors");
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   bake::Diagnostics diagnostics("bakeplay");
   CLI::App app{"The reference OpenGL runtime of the bake toolchain: renders and validates packages.", "bakeplay"};
-  app.require_subcommand(0, 1);  // no command: view the bundled example scene
   app.set_version_flag("--version", std::string("bakeplay ") + bake::toolkitVersion());
+  app.require_subcommand(0, 1);  // no command: view the bundled example scene
 
   bake::play::RenderSettings render;
-  std::string renderSize = "512x512";
-  CLI::App* renderCommand = app.add_subcommand("render", "Render a scene headless (EGL) to a PNG or EXR image");
-  addViewOptions(*renderCommand, render.view, renderSize);
-  renderCommand->add_option("-o,--output", render.output, "Image to write (.png: sRGB 8-bit, .exr: linear half)")->required();
-  renderCommand->add_option("--frames", render.frames, "Render this many frames and report median and p95 frame times");
-  bake::addCommonOptions(*renderCommand, render.common, {.version = false, .report = true, .depfile = true, .threads = false, .printInputs = false});
-
   bake::play::ValidateSettings validate;
-  CLI::App* validateCommand = app.add_subcommand(
-      "validate", "Check packages: structure, values, extensions, shader compilation, reference views (exit 3 on failure)");
-  validateCommand->add_option("packages", validate.packages, "Packages to validate")->required();
-  validateCommand->add_option("--golden", validate.goldens, "Expected image of each package's first reference view (one per package)");
-  validateCommand->add_option("--tolerance", validate.tolerance.rmse, "Largest RMSE allowed against the golden (0..1 units)")
-      ->default_val(validate.tolerance.rmse);
-  validateCommand->add_option("--pixel-threshold", validate.tolerance.threshold, "Channel difference that counts a pixel as off")
-      ->default_val(validate.tolerance.threshold);
-  validateCommand->add_option("--max-off-percent", validate.tolerance.percentOver, "Largest share of off pixels allowed, in percent")
-      ->default_val(validate.tolerance.percentOver);
-  validateCommand->add_option("--views", validate.viewsDirectory, "Write the rendered reference views into this directory");
-  validateCommand->add_option("--size", validate.size, "Reference view size in pixels (square)")->default_val(validate.size);
-  bake::addCommonOptions(*validateCommand, validate.common, {.version = false, .report = true, .depfile = false, .threads = false, .printInputs = false});
-
   bake::play::WindowSettings view;
-  std::string viewSize = "960x720";
-  CLI::App* viewCommand = app.add_subcommand("view", "Show a scene in a window (drag: orbit, scroll: zoom, right drag or arrows: light)");
-  addViewOptions(*viewCommand, view.view, viewSize);
-  viewCommand->add_option("--screenshot", view.screenshot, "Write the window's picture (.png) after --frames frames and close");
-  viewCommand->add_option("--frames", view.frames, "Frames to show before --screenshot")->default_val(view.frames);
-  viewCommand->add_flag("-q,--quiet", view.view.quiet, "Print nothing but errors");
+  std::string renderSize = "512x512", viewSize = "960x720";
+  CLI::App* renderCommand = addRenderCommand(app, render, renderSize);
+  CLI::App* validateCommand = addValidateCommand(app, validate);
+  addViewCommand(app, view, viewSize);
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    if (viewCommand->parsed() || app.get_subcommands().empty()) {
-      diagnostics.setQuiet(view.view.quiet);
-      BAKE_RETURN_IF_ERROR(bake::play::parseSize(viewSize, view.view));
-      return bake::play::runView(view, diagnostics);
-    }
-    if (validateCommand->parsed()) {
-      diagnostics.setQuiet(validate.common.quiet);
-      return bake::play::runValidate(validate, diagnostics);
-    }
     if (renderCommand->parsed()) {
       diagnostics.setQuiet(render.common.quiet);
       BAKE_RETURN_IF_ERROR(bake::play::parseSize(renderSize, render.view));
       return bake::play::runRender(render, diagnostics);
     }
-    return bake::internalError("unhandled command");
+    if (validateCommand->parsed()) {
+      diagnostics.setQuiet(validate.common.quiet);
+      return bake::play::runValidate(validate, diagnostics);
+    }
+    diagnostics.setQuiet(view.view.quiet);
+    BAKE_RETURN_IF_ERROR(bake::play::parseSize(viewSize, view.view));
+    return bake::play::runView(view, diagnostics);
   });
 }
