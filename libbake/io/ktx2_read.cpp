@@ -1,49 +1,34 @@
-// KTX 2.0 writer and reader for bake::ktx2 (io/ktx2.h).
+// KTX 2.0 reader for bake::ktx2 (io/ktx2.h): decodeHeader(), decode() and read().
 // Source: the Khronos KTX File Format Specification 2.0, sections "File Structure", "Index", "Level
 // Index", "Data Format Descriptor" (with the Khronos Data Format Specification 1.3 basic descriptor
 // block), "Key/Value Data", "Mip Level Array" / "mipPadding", "supercompressionScheme" (Zstandard
-// notes), "Texture Type" and "KTXwriter". Every byte-level constant is in bake_formats/ktx2.h.
-// The writer is deterministic: zero padding, keys sorted, levels stored smallest first. The reader
-// treats its input as untrusted: each offset and length is checked against the file before use, and
-// nothing is allocated that the file's size (or, for Zstandard, its actual output) does not justify.
-
-#include "io/ktx2.h"
+// notes) and "Texture Type". Every byte-level constant is in bake_formats/ktx2.h.
+// The reader treats its input as untrusted: each offset and length is checked against the file before
+// use, and nothing is allocated that the file's size (or, for Zstandard, its actual output) does not
+// justify.
 
 #include <zstd.h>
 
 #include <algorithm>
-#include <bit>
-#include <cstring>
-#include <limits>
 #include <memory>
-#include <optional>
 
 #include "bake_formats/ktx2.h"
 #include "core/atomic_file.h"
-#include "core/version.h"
+#include "io/ktx2.h"
+#include "io/ktx2_layout.h"
 
 namespace bake::ktx2 {
 namespace fmt = bake::format::ktx2;
 
+using layout::alignUp;
+using layout::describeLevelSize;
+using layout::levelElement;
+using layout::levelSize;
+using layout::maxLevels;
+
 namespace {
 
 // ---- Formats ------------------------------------------------------------------------------------------
-
-// The Format enum indexes fmt::kFormats directly; these pin that correspondence.
-static_assert(fmt::kFormats.size() == 8);
-static_assert(fmt::kFormats[std::size_t(Format::R8)].vkFormat == fmt::kVkFormatR8Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::RG8)].vkFormat == fmt::kVkFormatR8G8Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::RGBA8)].vkFormat == fmt::kVkFormatR8G8B8A8Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::R16)].vkFormat == fmt::kVkFormatR16Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::RG16)].vkFormat == fmt::kVkFormatR16G16Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::RGBA16)].vkFormat == fmt::kVkFormatR16G16B16A16Unorm);
-static_assert(fmt::kFormats[std::size_t(Format::RGBA16F)].vkFormat == fmt::kVkFormatR16G16B16A16Sfloat);
-static_assert(fmt::kFormats[std::size_t(Format::R32F)].vkFormat == fmt::kVkFormatR32Sfloat);
-
-bool isKnownFormat(Format format) { return std::size_t(format) < fmt::kFormats.size(); }
-
-// Only for formats that passed isKnownFormat (a cast integer may not name one).
-const fmt::FormatInfo& infoOf(Format format) { return fmt::kFormats[std::size_t(format)]; }
 
 Format formatOf(const fmt::FormatInfo& info) { return Format(&info - fmt::kFormats.data()); }
 
@@ -56,62 +41,7 @@ std::string supportedFormatList() {
   return list;
 }
 
-// ---- Overflow-safe sizes --------------------------------------------------------------------------------
-
-std::optional<std::uint64_t> checkedMul(std::uint64_t a, std::uint64_t b) {
-  std::uint64_t product = 0;
-  if (__builtin_mul_overflow(a, b, &product)) return std::nullopt;
-  return product;
-}
-
-// Size of one dimension at a mip level: halved per level, never below 1.
-std::uint32_t levelDimension(std::uint32_t base, std::uint32_t level) {
-  if (level >= 32) return 1;  // shifting a 32-bit value by 32 or more is undefined
-  return std::max<std::uint32_t>(1, base >> level);
-}
-
-// Bytes of one level holding every layer, or nullopt when that does not fit in 64 bits (only an
-// absurd header can ask for that).
-std::optional<std::uint64_t> levelSize(std::uint32_t width, std::uint32_t height, std::uint32_t layerCount,
-                                       std::uint32_t texelBytes, std::uint32_t level) {
-  auto size = checkedMul(levelDimension(width, level), levelDimension(height, level));
-  if (size) size = checkedMul(*size, layerCount);
-  if (size) size = checkedMul(*size, texelBytes);
-  return size;
-}
-
-// Number of levels of a full chain for the largest dimension: floor(log2(n)) + 1.
-std::uint32_t maxLevels(std::uint32_t largestDimension) { return std::uint32_t(std::bit_width(largestDimension)); }
-
-std::uint64_t alignUp(std::uint64_t value, std::uint64_t alignment) {
-  return (value + alignment - 1) / alignment * alignment;
-}
-
-// "r x c texels x L layers x B bytes": how a level size was derived, for messages.
-std::string describeLevelSize(std::uint32_t width, std::uint32_t height, std::uint32_t layerCount,
-                              std::uint32_t texelBytes, std::uint32_t level) {
-  return std::to_string(levelDimension(width, level)) + "x" + std::to_string(levelDimension(height, level)) +
-         " texels x " + std::to_string(layerCount) + (layerCount == 1 ? " layer" : " layers") + " x " +
-         std::to_string(texelBytes) + " bytes";
-}
-
-std::string levelElement(std::uint32_t level) { return "level " + std::to_string(level); }
-
 // ---- Little-endian bytes ----------------------------------------------------------------------------------
-
-void put8(std::vector<std::uint8_t>& out, std::size_t at, std::uint8_t value) { out[at] = value; }
-
-void put16(std::vector<std::uint8_t>& out, std::size_t at, std::uint16_t value) {
-  for (int i = 0; i < 2; ++i) out[at + i] = std::uint8_t(value >> (8 * i));
-}
-
-void put32(std::vector<std::uint8_t>& out, std::size_t at, std::uint32_t value) {
-  for (int i = 0; i < 4; ++i) out[at + i] = std::uint8_t(value >> (8 * i));
-}
-
-void put64(std::vector<std::uint8_t>& out, std::size_t at, std::uint64_t value) {
-  for (int i = 0; i < 8; ++i) out[at + i] = std::uint8_t(value >> (8 * i));
-}
 
 // Readers: the caller has checked that [at, at + width) lies inside `bytes`.
 std::uint8_t get8(std::span<const std::uint8_t> bytes, std::size_t at) { return bytes[at]; }
@@ -130,87 +60,6 @@ std::uint64_t get64(std::span<const std::uint8_t> bytes, std::size_t at) {
   std::uint64_t value = 0;
   for (int i = 7; i >= 0; --i) value = value << 8 | bytes[at + i];
   return value;
-}
-
-// ---- Writer -----------------------------------------------------------------------------------------------
-
-std::string writerValue(const WriteOptions& options) {
-  return options.writer.empty() ? std::string(fmt::kWriterName) + " " + kToolkitVersion : options.writer;
-}
-
-// The basic descriptor block for an unpacked RGBSDA format: one sample per channel, R G B A order.
-std::vector<std::uint8_t> encodeDataFormatDescriptor(const fmt::FormatInfo& info, bool supercompressed) {
-  const std::size_t blockSize = fmt::kDfdBlockHeaderSize + info.channels * fmt::kDfdSampleSize;
-  std::vector<std::uint8_t> dfd(fmt::kDfdTotalSizeFieldSize + blockSize, 0);
-  put32(dfd, 0, std::uint32_t(dfd.size()));
-
-  const std::size_t block = fmt::kDfdTotalSizeFieldSize;
-  put32(dfd, block + fmt::kDfdOffsetVendorAndType,
-        fmt::kDfdVendorKhronos | fmt::kDfdDescriptorTypeBasic << fmt::kDfdDescriptorTypeShift);
-  put32(dfd, block + fmt::kDfdOffsetVersionAndSize,
-        fmt::kDfdVersion1_3 | std::uint32_t(blockSize) << fmt::kDfdBlockSizeShift);
-  put8(dfd, block + fmt::kDfdOffsetColorModel, fmt::kDfdModelRgbsda);
-  put8(dfd, block + fmt::kDfdOffsetColorPrimaries, fmt::kDfdPrimariesBt709);
-  put8(dfd, block + fmt::kDfdOffsetTransferFunction, fmt::kDfdTransferLinear);
-  put8(dfd, block + fmt::kDfdOffsetFlags, fmt::kDfdFlagsAlphaStraight);
-  // texelBlockDimension stays 0 ("1 texel" in each dimension). bytesPlane0 is 0 for supercompressed
-  // data ("unsized"), as KTX2 document revisions before 5 require; readers must accept both forms.
-  put8(dfd, block + fmt::kDfdOffsetBytesPlane, supercompressed ? 0 : std::uint8_t(fmt::texelSize(info)));
-
-  const std::uint32_t bits = info.typeSize * 8;
-  for (std::uint32_t c = 0; c < info.channels; ++c) {
-    const std::size_t sample = block + fmt::kDfdOffsetSamples + c * fmt::kDfdSampleSize;
-    std::uint8_t channelType = fmt::kChannelOrder[c];
-    if (info.isFloat) channelType |= fmt::kDfdSampleFloat | fmt::kDfdSampleSigned;
-    put16(dfd, sample + fmt::kDfdSampleOffsetBitOffset, std::uint16_t(c * bits));
-    put8(dfd, sample + fmt::kDfdSampleOffsetBitLength, std::uint8_t(bits - 1));
-    put8(dfd, sample + fmt::kDfdSampleOffsetChannelType, channelType);
-    // samplePosition stays 0: every channel is at the texel's origin.
-    put32(dfd, sample + fmt::kDfdSampleOffsetLower, info.isFloat ? fmt::kDfdFloatLower : fmt::kDfdUnormLower);
-    put32(dfd, sample + fmt::kDfdSampleOffsetUpper,
-          info.isFloat ? fmt::kDfdFloatUpper : (bits == 8 ? fmt::kDfdUnorm8Upper : fmt::kDfdUnorm16Upper));
-  }
-  return dfd;
-}
-
-// Entries in std::map order, which is the byte order of the UTF-8 keys (char_traits<char> compares as
-// unsigned char), i.e. the Unicode code point order the specification asks for.
-std::vector<std::uint8_t> encodeKeyValueData(const std::map<std::string, std::vector<std::uint8_t>>& entries) {
-  std::vector<std::uint8_t> kvd;
-  for (const auto& [key, value] : entries) {
-    const std::size_t length = key.size() + 1 + value.size();
-    const std::size_t at = kvd.size();
-    kvd.resize(at + 4 + alignUp(length, fmt::kKeyValueAlignment), 0);
-    put32(kvd, at, std::uint32_t(length));
-    std::memcpy(kvd.data() + at + 4, key.data(), key.size());
-    // The key's NUL terminator and the valuePadding are the zeros resize() wrote.
-    if (!value.empty()) std::memcpy(kvd.data() + at + 4 + key.size() + 1, value.data(), value.size());
-  }
-  return kvd;
-}
-
-Result<std::vector<std::uint8_t>> compressLevel(std::span<const std::uint8_t> level, int zstdLevel,
-                                                std::uint32_t index) {
-  std::vector<std::uint8_t> compressed(ZSTD_compressBound(level.size()));
-  const std::size_t size = ZSTD_compress(compressed.data(), compressed.size(), level.data(), level.size(), zstdLevel);
-  if (ZSTD_isError(size)) {
-    return internalError(std::string("Zstandard compression failed: ") + ZSTD_getErrorName(size),
-                         {"", levelElement(index)});
-  }
-  compressed.resize(size);
-  return compressed;
-}
-
-Status validateMetadata(const std::map<std::string, std::vector<std::uint8_t>>& metadata) {
-  for (const auto& [key, value] : metadata) {
-    const std::string element = "metadata key '" + key + "'";
-    if (key.empty()) return invalidInput("metadata keys must not be empty", {"", "metadata"});
-    if (key.find('\0') != std::string::npos) return invalidInput("the key contains a NUL byte", {"", element});
-    if (key.size() + 1 + value.size() > std::numeric_limits<std::uint32_t>::max() - 8) {
-      return invalidInput("the entry is too large for KTX2 key/value data", {"", element});
-    }
-  }
-  return Status::ok();
 }
 
 // ---- Reader -------------------------------------------------------------------------------------------------
@@ -594,153 +443,6 @@ Result<std::vector<std::uint8_t>> readLevel(std::span<const std::uint8_t> bytes,
 
 // ---- Public API -------------------------------------------------------------------------------------------
 
-std::uint32_t vkFormatOf(Format format) { return isKnownFormat(format) ? infoOf(format).vkFormat : 0; }
-
-const char* formatName(Format format) { return isKnownFormat(format) ? infoOf(format).name : "unknown"; }
-
-std::uint32_t bytesPerTexel(Format format) { return isKnownFormat(format) ? fmt::texelSize(infoOf(format)) : 0; }
-
-std::uint32_t channelCount(Format format) { return isKnownFormat(format) ? infoOf(format).channels : 0; }
-
-void Texture::setText(const std::string& key, const std::string& value) {
-  std::vector<std::uint8_t> bytes(value.begin(), value.end());
-  bytes.push_back(0);  // the specification asks text values to carry their NUL terminator
-  metadata[key] = std::move(bytes);
-}
-
-std::string Texture::text(const std::string& key) const {
-  const auto found = metadata.find(key);
-  if (found == metadata.end()) return "";
-  const auto& bytes = found->second;
-  // Readers must not rely on the NUL being there; stop at the first one when it is.
-  return std::string(bytes.begin(), std::find(bytes.begin(), bytes.end(), std::uint8_t{0}));
-}
-
-std::uint32_t Texture::levelWidth(std::uint32_t level) const { return levelDimension(width, level); }
-
-std::uint32_t Texture::levelHeight(std::uint32_t level) const { return levelDimension(height, level); }
-
-std::size_t Texture::levelByteSize(std::uint32_t level) const {
-  const auto size = levelSize(width, height, layerCount(), bytesPerTexel(format), level);
-  return size ? std::size_t(*size) : std::numeric_limits<std::size_t>::max();  // saturates; validate() reports it
-}
-
-std::uint32_t fullMipCount(std::uint32_t width, std::uint32_t height) { return maxLevels(std::max(width, height)); }
-
-Status validate(const Texture& texture) {
-  const Location where{"", "texture"};
-  if (!isKnownFormat(texture.format)) {
-    return invalidInput("format value " + std::to_string(int(texture.format)) + " is not a ktx2::Format", where);
-  }
-  if (texture.width == 0 || texture.height == 0) {
-    return invalidInput("the size " + std::to_string(texture.width) + "x" + std::to_string(texture.height) +
-                            " is empty",
-                        where);
-  }
-  const std::uint32_t maxCount = fullMipCount(texture.width, texture.height);
-  if (texture.levels.empty() || texture.levels.size() > maxCount) {
-    return invalidInput("the texture has " + std::to_string(texture.levels.size()) + " levels; a " +
-                            std::to_string(texture.width) + "x" + std::to_string(texture.height) +
-                            " texture has 1 to " + std::to_string(maxCount),
-                        where);
-  }
-  const std::uint32_t texelBytes = bytesPerTexel(texture.format);
-  for (std::uint32_t level = 0; level < texture.levels.size(); ++level) {
-    const auto expected = levelSize(texture.width, texture.height, texture.layerCount(), texelBytes, level);
-    if (!expected || *expected != texture.levels[level].size()) {
-      return invalidInput(
-          "the level holds " + std::to_string(texture.levels[level].size()) + " bytes, but " +
-              describeLevelSize(texture.width, texture.height, texture.layerCount(), texelBytes, level) + " need " +
-              (expected ? std::to_string(*expected) : std::string("more than 2^64")),
-          {"", levelElement(level)});
-    }
-  }
-  return validateMetadata(texture.metadata);
-}
-
-Result<std::vector<std::uint8_t>> encode(const Texture& texture, const WriteOptions& options) {
-  BAKE_RETURN_IF_ERROR(validate(texture));
-  if (options.zstd && (options.zstdLevel < ZSTD_minCLevel() || options.zstdLevel > ZSTD_maxCLevel())) {
-    return Status(ExitCode::Usage, "zstd level " + std::to_string(options.zstdLevel) + " is outside " +
-                                       std::to_string(ZSTD_minCLevel()) + ".." + std::to_string(ZSTD_maxCLevel()));
-  }
-  const fmt::FormatInfo& info = infoOf(texture.format);
-  const std::uint32_t levelCount = std::uint32_t(texture.levels.size());
-
-  // Level payloads: the texture's own bytes, or their Zstandard frames.
-  std::vector<std::vector<std::uint8_t>> compressed;
-  std::vector<std::span<const std::uint8_t>> payloads;
-  for (std::uint32_t level = 0; level < levelCount; ++level) {
-    if (options.zstd) {
-      BAKE_ASSIGN_OR_RETURN(auto frame, compressLevel(texture.levels[level], options.zstdLevel, level));
-      compressed.push_back(std::move(frame));
-    }
-  }
-  for (std::uint32_t level = 0; level < levelCount; ++level) {
-    payloads.push_back(options.zstd ? std::span<const std::uint8_t>(compressed[level])
-                                    : std::span<const std::uint8_t>(texture.levels[level]));
-  }
-
-  // Our KTXwriter replaces any earlier writer's: only the most recent writer is identified.
-  auto metadata = texture.metadata;
-  const std::string writer = writerValue(options);
-  metadata[fmt::kKeyWriter] = std::vector<std::uint8_t>(writer.begin(), writer.end());
-  metadata[fmt::kKeyWriter].push_back(0);
-  BAKE_RETURN_IF_ERROR(validateMetadata(metadata));
-
-  const std::vector<std::uint8_t> dfd = encodeDataFormatDescriptor(info, options.zstd);
-  const std::vector<std::uint8_t> kvd = encodeKeyValueData(metadata);
-  const std::uint64_t dfdOffset = fmt::kLevelIndexOffset + std::uint64_t(levelCount) * fmt::kLevelIndexEntrySize;
-  const std::uint64_t kvdOffset = dfdOffset + dfd.size();
-  const std::uint64_t kvdEnd = kvdOffset + kvd.size();
-  if (kvdEnd > std::numeric_limits<std::uint32_t>::max()) {
-    return invalidInput("the key/value data (" + std::to_string(kvd.size()) +
-                            " bytes) does not fit the 32-bit KTX2 index",
-                        {"", "metadata"});
-  }
-
-  // Place the levels, smallest first, each on its alignment boundary.
-  const std::uint64_t alignment =
-      options.zstd ? fmt::kSupercompressedLevelAlignment : fmt::uncompressedLevelAlignment(fmt::texelSize(info));
-  std::vector<std::uint64_t> offsets(levelCount);
-  std::uint64_t end = kvdEnd;
-  for (std::uint32_t level = levelCount; level-- > 0;) {
-    offsets[level] = alignUp(end, alignment);
-    end = offsets[level] + payloads[level].size();
-  }
-
-  std::vector<std::uint8_t> file(end, 0);  // every byte not written below is padding, and zero
-  std::copy(fmt::kIdentifier.begin(), fmt::kIdentifier.end(), file.begin());
-  put32(file, fmt::kOffsetVkFormat, info.vkFormat);
-  put32(file, fmt::kOffsetTypeSize, info.typeSize);
-  put32(file, fmt::kOffsetPixelWidth, texture.width);
-  put32(file, fmt::kOffsetPixelHeight, texture.height);
-  put32(file, fmt::kOffsetPixelDepth, 0);
-  put32(file, fmt::kOffsetLayerCount, texture.layers);
-  put32(file, fmt::kOffsetFaceCount, 1);
-  put32(file, fmt::kOffsetLevelCount, levelCount);
-  put32(file, fmt::kOffsetSupercompressionScheme,
-        options.zstd ? fmt::kSupercompressionZstd : fmt::kSupercompressionNone);
-  put32(file, fmt::kOffsetDfdByteOffset, std::uint32_t(dfdOffset));
-  put32(file, fmt::kOffsetDfdByteLength, std::uint32_t(dfd.size()));
-  put32(file, fmt::kOffsetKvdByteOffset, std::uint32_t(kvdOffset));
-  put32(file, fmt::kOffsetKvdByteLength, std::uint32_t(kvd.size()));
-  put64(file, fmt::kOffsetSgdByteOffset, 0);
-  put64(file, fmt::kOffsetSgdByteLength, 0);
-  for (std::uint32_t level = 0; level < levelCount; ++level) {
-    const std::size_t entry = fmt::kLevelIndexOffset + level * fmt::kLevelIndexEntrySize;
-    put64(file, entry + fmt::kLevelEntryByteOffset, offsets[level]);
-    put64(file, entry + fmt::kLevelEntryByteLength, payloads[level].size());
-    put64(file, entry + fmt::kLevelEntryUncompressedByteLength, texture.levels[level].size());
-  }
-  std::copy(dfd.begin(), dfd.end(), file.begin() + std::ptrdiff_t(dfdOffset));
-  std::copy(kvd.begin(), kvd.end(), file.begin() + std::ptrdiff_t(kvdOffset));
-  for (std::uint32_t level = 0; level < levelCount; ++level) {
-    std::copy(payloads[level].begin(), payloads[level].end(), file.begin() + std::ptrdiff_t(offsets[level]));
-  }
-  return file;
-}
-
 Result<Header> decodeHeader(std::span<const std::uint8_t> bytes, const std::string& name) {
   if (bytes.size() < fmt::kIdentifierSize ||
       !std::equal(fmt::kIdentifier.begin(), fmt::kIdentifier.end(), bytes.begin())) {
@@ -825,16 +527,6 @@ Result<Texture> decode(std::span<const std::uint8_t> bytes, const std::string& n
     followsEnd = entry.byteOffset + entry.byteLength;
   }
   return texture;
-}
-
-Status write(const std::filesystem::path& path, const Texture& texture, const WriteOptions& options) {
-  auto bytes = encode(texture, options);
-  if (!bytes.isOk()) {
-    Status status = bytes.takeStatus();
-    status.inFile(path.string());
-    return status;
-  }
-  return writeFileAtomic(path, *bytes);
 }
 
 Result<Texture> read(const std::filesystem::path& path) {
