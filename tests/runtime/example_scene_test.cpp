@@ -10,10 +10,10 @@ namespace bake::play {
 namespace {
 namespace fs = std::filesystem;
 
-Image renderExample(const fs::path& file) {
+Image renderExample(const fs::path& file, int width = 256, int height = 192) {
   RenderSettings settings;
-  settings.view.width = 256;
-  settings.view.height = 192;
+  settings.view.width = width;
+  settings.view.height = height;
   settings.output = file.string();
   Diagnostics diagnostics("bakeplay", true);
   const Status status = runRender(settings, diagnostics);
@@ -67,12 +67,6 @@ TEST(ExampleScene, BadOutputsAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "missing"));
 }
 
-}  // namespace
-}  // namespace bake::play
-
-namespace bake::play {
-namespace {
-
 // `bakeplay view` in a real window under Xvfb: after a few frames its screenshot must show the same
 // picture as `render` (both share the renderer and the sRGB encoding).
 TEST(ExampleScene, WindowShowsTheSamePictureUnderXvfb) {
@@ -81,25 +75,13 @@ TEST(ExampleScene, WindowShowsTheSamePictureUnderXvfb) {
   const std::string command = std::string("xvfb-run -a -s '-screen 0 640x480x24' '") + BAKEPLAY_PATH +
                               "' view --size 160x120 --frames 3 --screenshot '" + (dir / "window.png").string() + "' -q";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  RenderSettings settings;
-  settings.view.width = 160;
-  settings.view.height = 120;
-  settings.output = (dir / "render.png").string();
-  Diagnostics diagnostics("bakeplay", true);
-  ASSERT_TRUE(runRender(settings, diagnostics).isOk());
+  const Image rendered = renderExample(dir / "render.png", 160, 120);
   auto window = readImage(dir / "window.png");
-  auto rendered = readImage(dir / "render.png");
-  ASSERT_TRUE(window.isOk() && rendered.isOk());
-  auto difference = compareImages(*window, *rendered, 2.5 / 255.0);
+  ASSERT_TRUE(window.isOk()) << window.status().describe();
+  auto difference = compareImages(*window, rendered, 2.5 / 255.0);
   ASSERT_TRUE(difference.isOk()) << difference.status().describe();
   EXPECT_LE(difference->maxError, 2.5 / 255.0) << describe(*difference);
 }
-
-}  // namespace
-}  // namespace bake::play
-
-namespace bake::play {
-namespace {
 
 // Leaving out what a scene does not use: a scene without normals compiles no HAS_NORMALS variant
 // and uploads no normals; the report lists exactly the variants compiled.
