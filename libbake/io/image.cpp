@@ -9,6 +9,8 @@
 // written (no DateTime, no Software), so equal images give equal files.
 #include "io/image.h"
 
+#include "core/path.h"
+
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -28,12 +30,6 @@ namespace bake {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowercaseExtension(const fs::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
 
 const char* pixelTypeName(PixelType type) {
   switch (type) {

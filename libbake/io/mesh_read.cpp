@@ -39,6 +39,7 @@
 #include <string_view>
 
 #include "core/atomic_file.h"
+#include "core/path.h"
 #include "io/gltf.h"
 #include "io/mesh_scan.h"
 #include "mesh/weld.h"
@@ -373,11 +374,6 @@ MeshFormat formatOf(const std::string& extension) {
   return MeshFormat::Unknown;
 }
 
-std::string lowercase(std::string text) {
-  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 Result<Prescan> prescan(MeshFormat format, std::string_view bytes, const fs::path& path) {
   switch (format) {
     case MeshFormat::Obj: return prescanObj(bytes, path);
@@ -476,7 +472,7 @@ Result<TriangleMesh> readMesh(const fs::path& path, const MeshReadOptions& optio
   if (!std::isfinite(options.weldTolerance) || options.weldTolerance < 0.0) {
     return usageError("the weld tolerance must be a finite, non-negative number");
   }
-  const std::string extension = lowercase(path.extension().string());
+  const std::string extension = lowercaseExtension(path);
   const MeshFormat format = formatOf(extension);
   if (format == MeshFormat::Unknown) {
     const std::string what = extension.empty() ? "a file without extension" : "extension '" + extension + "'";

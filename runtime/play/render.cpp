@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/path.h"
 #include "core/session.h"
 #include "gl/context.h"
 #include "io/image.h"
@@ -52,12 +53,6 @@ FrameTimes renderFrames(SceneRenderer& renderer, const FrameContext& frame, int 
   return times;
 }
 
-std::string extensionOf(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
 nlohmann::json timingJson(const std::vector<double>& samples) {
   if (samples.empty()) return nullptr;  // not measured (timer queries unreliable on this driver)
   const Percentiles p = percentiles(samples);
@@ -65,7 +60,7 @@ nlohmann::json timingJson(const std::vector<double>& samples) {
 }
 
 Status renderScene(const RenderSettings& settings, BakeSession& session) {
-  const std::string extension = extensionOf(settings.output);
+  const std::string extension = lowercaseExtension(settings.output);
   if (extension != ".png" && extension != ".exr") {
     return usageError("output " + settings.output + " must end in .png or .exr");
   }
