@@ -14,3 +14,19 @@ pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 if(BAKE_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
+
+# Geodesic solvers: Eigen for sparse matrices, CHOLMOD (SuiteSparse 5, no CMake config in Debian 12)
+# for the supernodal Cholesky factorisation of the heat method.
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(bake_cholmod INTERFACE)
+target_include_directories(bake_cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(bake_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+
+# CGAL is a peer and oracle only (tests and benchmarks), never linked into libbake. Its headers are
+# slow to compile: keep them in few translation units.
+if(BAKE_BUILD_TESTS OR BAKE_BUILD_BENCH)
+  find_package(CGAL REQUIRED)
+endif()

@@ -167,9 +167,11 @@ std::size_t remapTriangles(TriangleMesh& mesh, const std::vector<std::uint32_t>&
 
 }  // namespace
 
-WeldStats weldVertices(TriangleMesh& mesh, double relativeTolerance) {
+WeldStats weldVertices(TriangleMesh& mesh, double relativeTolerance,
+                       std::vector<std::uint32_t>* vertexMap) {
   assert(std::isfinite(relativeTolerance) && relativeTolerance >= 0.0);
   WeldStats stats;
+  if (vertexMap) vertexMap->clear();
   if (mesh.positions.empty()) return stats;
 
   const BoundingBox box = boundingBoxOf(mesh.positions);
@@ -182,6 +184,7 @@ WeldStats weldVertices(TriangleMesh& mesh, double relativeTolerance) {
   compactVertices(mesh, representative);
   stats.verticesWelded = before - mesh.positions.size();
   stats.degenerateTrianglesRemoved = remapTriangles(mesh, representative);
+  if (vertexMap) *vertexMap = std::move(representative);
   return stats;
 }
 

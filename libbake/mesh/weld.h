@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "io/mesh.h"
 
@@ -26,6 +28,8 @@ struct WeldStats {
 // Survivors keep their relative order; triangles are remapped and those whose corners are no longer
 // distinct are removed. Named points are untouched. Precondition: relativeTolerance is finite and
 // non-negative, and the mesh passed validateMesh.
-WeldStats weldVertices(TriangleMesh& mesh, double relativeTolerance = 0.0);
+// vertexMap, when given, receives for every old vertex its index after welding.
+WeldStats weldVertices(TriangleMesh& mesh, double relativeTolerance = 0.0,
+                       std::vector<std::uint32_t>* vertexMap = nullptr);
 
 }  // namespace bake

@@ -1,0 +1,52 @@
+// The heat method (Crane, Weischedel and Wardetzky 2013) made robust (Sharp and Crane 2020; Sharp,
+// Soliman and Crane 2019): the cotangent Laplacian is built on the intrinsic Delaunay triangulation
+// (edge flips on edge lengths) of a mollified, tufted cover of the mesh, so needles, obtuse and
+// zero-area faces and non-manifold edges all give a positive semi-definite, well-conditioned system.
+// Both systems are factorised once (sparse Cholesky); every field after that costs two solves.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/status.h"
+#include "geodesic/sources.h"
+#include "geodesic/surface.h"
+
+namespace bake::geodesic {
+
+struct HeatOptions {
+  // Time step factor m in t = m h^2, h the mean intrinsic edge length; 0 picks it from the mesh so
+  // that heat does not underflow far from the source on large meshes.
+  double timeFactor = 0.0;
+  // Mollification epsilon relative to the mean edge length.
+  double mollifyFactor = 1e-6;
+  unsigned threads = 0;
+};
+
+struct HeatStats {
+  std::size_t edgeFlips = 0;
+  double timeStep = 0.0;
+  double mollifyEpsilon = 0.0;
+  std::size_t tuftedEdges = 0;  // non-manifold edges resolved by the tufted cover
+  double factorSeconds = 0.0;
+};
+
+class HeatSolver {
+ public:
+  static Result<HeatSolver> build(const Surface& surface, const HeatOptions& options = {});
+  HeatSolver(HeatSolver&&) noexcept;
+  HeatSolver& operator=(HeatSolver&&) noexcept;
+  ~HeatSolver();
+
+  std::vector<double> distances(std::span<const SurfacePoint> sources) const;
+  const HeatStats& stats() const;
+
+ private:
+  struct State;
+  explicit HeatSolver(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace bake::geodesic
