@@ -174,6 +174,7 @@ SurfaceBuild buildSurface(const TriangleMesh& mesh, double weldTolerance) {
   s.positions.reserve(positionsOnly.positions.size());
   for (const Vec3f& p : positionsOnly.positions)
     s.positions.push_back({double(p[0]) - centre[0], double(p[1]) - centre[1], double(p[2]) - centre[2]});
+  s.origin = centre;
 
   // Repeated faces (same corner set) would make a clean edge look non-manifold.
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> seen;

@@ -22,7 +22,10 @@ using Vec3d = std::array<double, 3>;
 inline constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
 struct Surface {
+  // Positions relative to `origin` (the input's bounding-box centre, so far-off models keep their
+  // precision): input coordinates = positions + origin.
   std::vector<Vec3d> positions;
+  Vec3d origin{0.0, 0.0, 0.0};
   std::vector<std::array<std::uint32_t, 3>> triangles;
 
   // Undirected edges, edges[e] = {a, b} with a < b.

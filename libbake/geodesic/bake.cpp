@@ -1,0 +1,146 @@
+// geobake's run: read, clean, resolve sources, solve, verify, write; each stage timed in the report.
+#include "geodesic/bake.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/session.h"
+#include "geodesic/bake_package.h"
+#include "geodesic/bake_stages.h"
+#include "io/glb.h"
+#include "io/mesh.h"
+
+namespace bake::geodesic {
+namespace {
+
+using nlohmann::json;
+
+Status checkSettings(const Settings& settings) {
+  if (settings.encoding == Encoding::Unorm16 && settings.normalization == Normalization::None)
+    return usageError("--encoding unorm16 needs normalised fields (--normalize per-field or global)");
+  for (std::int64_t v : settings.sourceVertices)
+    if (v < 0) return usageError("--source-vertex " + std::to_string(v) + ": vertex indices are >= 0");
+  if (!(settings.weldTolerance >= 0.0) || !std::isfinite(settings.weldTolerance))
+    return usageError("--weld-tolerance must be a finite number >= 0");
+  return {};
+}
+
+json optionsOf(const Settings& settings) {
+  return {{"method", methodName(settings.method)},
+          {"combine", settings.combine},
+          {"autoSources", settings.autoSources},
+          {"normalization", settings.normalization == Normalization::PerField ? "per-field"
+                            : settings.normalization == Normalization::Global ? "global"
+                                                                                : "none"},
+          {"encoding", settings.encoding == Encoding::Float ? "float" : "unorm16"},
+          {"verify", settings.verifySamples},
+          {"weldTolerance", settings.weldTolerance},
+          {"draco", settings.draco},
+          {"threads", settings.common.threads}};
+}
+
+void warnAboutCleaning(const SurfaceCleanStats& stats, Diagnostics& diagnostics) {
+  if (stats.degenerateFacesRemoved > 0)
+    diagnostics.warning("degenerate-faces", std::to_string(stats.degenerateFacesRemoved) +
+                                                " faces with a repeated corner (after welding) are left out of the solve");
+  if (stats.duplicateFacesRemoved > 0)
+    diagnostics.warning("duplicate-faces",
+                        std::to_string(stats.duplicateFacesRemoved) + " repeated faces are left out of the solve");
+  if (stats.nonManifoldEdges > 0)
+    diagnostics.warning("non-manifold-edges", std::to_string(stats.nonManifoldEdges) +
+                                                  " non-manifold edges: paths continue into every face of such an edge");
+}
+
+json cleaningStatistics(const SurfaceCleanStats& stats) {
+  return {{"verticesWelded", stats.verticesWelded},
+          {"degenerateFacesRemoved", stats.degenerateFacesRemoved},
+          {"duplicateFacesRemoved", stats.duplicateFacesRemoved},
+          {"zeroAreaFaces", stats.zeroAreaFaces},
+          {"unreferencedVertices", stats.unreferencedVertices},
+          {"boundaryEdges", stats.boundaryEdges},
+          {"nonManifoldEdges", stats.nonManifoldEdges},
+          {"components", stats.components}};
+}
+
+Status bake(const Settings& settings, BakeSession& session) {
+  Report& report = session.report();
+  Diagnostics& diagnostics = session.diagnostics();
+  session.addInput(settings.input);
+  if (!settings.sourcesFile.empty()) session.addInput(settings.sourcesFile);
+
+  TriangleMesh mesh;
+  {
+    StageTimer timer(&report, "read");
+    BAKE_ASSIGN_OR_RETURN(mesh, readMesh(settings.input));
+    BAKE_RETURN_IF_ERROR(validateMesh(mesh, settings.input));
+  }
+  SurfaceBuild build;
+  {
+    StageTimer timer(&report, "clean");
+    build = buildSurface(mesh, settings.weldTolerance);
+  }
+  warnAboutCleaning(build.stats, diagnostics);
+
+  std::vector<ResolvedField> fields;
+  {
+    StageTimer timer(&report, "sources");
+    BAKE_ASSIGN_OR_RETURN(fields, resolveFields(settings, mesh, build, diagnostics));
+  }
+
+  SolveStats solveStats;
+  std::vector<std::vector<double>> distances;
+  BAKE_ASSIGN_OR_RETURN(distances, solveFields(build.surface, fields, settings, solveStats));
+  if (settings.method == Method::Heat) report.addStage("factorise", solveStats.setupSeconds);
+  report.addStage("solve", solveStats.fieldSeconds);
+
+  std::vector<FieldError> errors;
+  if (settings.verifySamples > 0) {
+    StageTimer timer(&report, "verify");
+    errors = verifyFields(build.surface, fields, distances, settings.verifySamples, settings.common.threads);
+    for (std::size_t f = 0; f < errors.size(); ++f) {
+      report.addAccuracy("geodesic distance, field " + std::to_string(f) + " (" + fields[f].name + ")",
+                         "exact polyhedral distance (window propagation), relative to the field's largest distance",
+                         {{"samples", errors[f].samples},
+                          {"meanRelative", errors[f].meanRelative},
+                          {"maxRelative", errors[f].maxRelative},
+                          {"unreachableMismatches", errors[f].unreachableMismatches}});
+      if (!diagnostics.quiet())
+        std::fprintf(stderr, "geobake: field %zu: %s error vs exact at %zu vertices: mean %.3g %%, max %.3g %% of radius\n",
+                     f, methodName(settings.method), errors[f].samples, 100.0 * errors[f].meanRelative,
+                     100.0 * errors[f].maxRelative);
+    }
+  }
+
+  {
+    StageTimer timer(&report, "write");
+    const glb::Package package = buildPackage(mesh, build, fields, distances, errors, settings);
+    glb::WriteOptions options;
+    options.draco.enabled = settings.draco;
+    BAKE_ASSIGN_OR_RETURN(const auto bytes, glb::encode(package, options));
+    BAKE_RETURN_IF_ERROR(session.stageOutput(settings.output, bytes));
+  }
+
+  std::size_t unreachable = 0;
+  for (const auto& field : distances)
+    for (std::uint32_t v : build.vertexMap) unreachable += field[v] == kUnreachable ? 1 : 0;
+  report.setStatistic("vertices", mesh.vertexCount());
+  report.setStatistic("triangles", mesh.triangleCount());
+  report.setStatistic("surfaceVertices", build.surface.vertexCount());
+  report.setStatistic("surfaceTriangles", build.surface.triangleCount());
+  report.setStatistic("cleaning", cleaningStatistics(build.stats));
+  report.setStatistic("fields", fields.size());
+  report.setStatistic("unreachableVertexValues", unreachable);
+  report.setStatistic("solver", solveStats.details);
+  return {};
+}
+
+}  // namespace
+
+Status run(const Settings& settings, Diagnostics& diagnostics) {
+  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+  BakeSession session("geobake", settings.common, diagnostics);
+  session.report().setOptions(optionsOf(settings));
+  return session.finish(bake(settings, session));
+}
+
+}  // namespace bake::geodesic

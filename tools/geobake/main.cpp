@@ -1,0 +1,96 @@
+// geobake: bakes per-vertex geodesic distance fields into a glTF package (formats/geodesic.md).
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+#include "core/cli.h"
+#include "geodesic/bake.h"
+
+namespace {
+
+// "x,y,z" -> a point; CLI11 2.1 has no tuple parser for repeated options.
+bool parsePoint(const std::string& text, std::array<double, 3>& point) {
+  char* end = nullptr;
+  const char* at = text.c_str();
+  for (int k = 0; k < 3; ++k) {
+    point[k] = std::strtod(at, &end);
+    if (end == at) return false;
+    at = end;
+    if (k < 2) {
+      if (*at != ',') return false;
+      ++at;
+    }
+  }
+  return *at == '\0' && std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace bake::geodesic;
+  Settings settings;
+  std::vector<std::string> points;
+  bake::Diagnostics diagnostics("geobake");
+  CLI::App app{"Bakes per-vertex geodesic distance fields from feature sources (GeoTextures) into a glTF\n"
+               "package: attributes _GEODESIC_0, _GEODESIC_1, ... normalised to [0, 1], described by the\n"
+               "BAKE_geodesic extension.",
+               "geobake"};
+  app.add_option("mesh", settings.input, "Input mesh (.obj .ply .off .stl .gltf .glb)")->required();
+  app.add_option("-o,--output", settings.output, "Package to write (.glb)")->required();
+
+  auto* sources = app.add_option_group("Sources", "At least one kind is needed");
+  sources->add_option("--source-vertex", settings.sourceVertices, "Source at this input vertex index (repeatable)");
+  sources->add_option("--source-point", points, "Source at the surface point nearest to X,Y,Z (repeatable)");
+  sources->add_option("--source-node", settings.sourceNodes, "Source at the named glTF node (repeatable)");
+  sources->add_option("--sources", settings.sourcesFile,
+                      "JSON file of fields: {\"fields\": [{\"name\": ..., \"sources\": [{\"vertex\": i} | "
+                      "{\"point\": [x, y, z]} | {\"node\": \"name\"}]}]}");
+  sources->add_option("--auto-sources", settings.autoSources, "Add N sources by farthest-point sampling");
+  app.add_flag("--combine", settings.combine,
+               "One field of all command-line sources (distance to the nearest) instead of one field each");
+
+  const std::map<std::string, Method> methods{{"exact", Method::Exact}, {"heat", Method::Heat}, {"fmm", Method::FastMarching}};
+  app.add_option("--method", settings.method,
+                 "exact: window propagation (exact polyhedral distances); heat: robust heat method; fmm: fast marching")
+      ->transform(CLI::CheckedTransformer(methods))
+      ->default_str("exact");
+  const std::map<std::string, Normalization> normalizations{
+      {"per-field", Normalization::PerField}, {"global", Normalization::Global}, {"none", Normalization::None}};
+  app.add_option("--normalize", settings.normalization,
+                 "per-field: each field / its largest distance; global: / the largest of all; none: model units")
+      ->transform(CLI::CheckedTransformer(normalizations))
+      ->default_str("per-field");
+  const std::map<std::string, Encoding> encodings{{"float", Encoding::Float}, {"unorm16", Encoding::Unorm16}};
+  app.add_option("--encoding", settings.encoding, "float (32-bit) or unorm16 (normalized 16-bit)")
+      ->transform(CLI::CheckedTransformer(encodings))
+      ->default_str("float");
+  app.add_option("--verify", settings.verifySamples,
+                 "Measure the error against exact distances at K sampled vertices (report and stderr)");
+  app.add_option("--weld-tolerance", settings.weldTolerance,
+                 "Weld positions closer than this fraction of the bounding-box diagonal (0: identical only)")
+      ->default_str("0");
+  app.add_option("--heat-time", settings.heat.timeFactor,
+                 "Heat method: time step t = m h^2 with this m (0: chosen from the mesh)")
+      ->default_str("0");
+  app.add_option("--geotexture", settings.geotexture,
+                 "Add a material choosing this GeoTexture preset for bakeplay (formats/geodesic-material.md)");
+  app.add_flag("--draco", settings.draco, "Compress the mesh with Draco (KHR_draco_mesh_compression)");
+  bake::addCommonOptions(app, settings.common);
+
+  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
+    diagnostics.setQuiet(settings.common.quiet);
+    for (const std::string& text : points) {
+      std::array<double, 3> point{};
+      if (!parsePoint(text, point)) return bake::usageError("--source-point " + text + ": expected X,Y,Z");
+      settings.sourcePoints.push_back(point);
+    }
+    if (settings.common.printInputs) {
+      std::printf("%s\n", settings.input.c_str());
+      if (!settings.sourcesFile.empty()) std::printf("%s\n", settings.sourcesFile.c_str());
+      return {};
+    }
+    return run(settings, diagnostics);
+  });
+}
