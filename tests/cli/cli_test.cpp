@@ -179,6 +179,16 @@ class CliCase : public ::testing::TestWithParam<Case> {
     }
   }
 
+  // The JSON chunk of a GLB (glTF 2.0, 4.4.3: it follows the 12-byte header and an 8-byte chunk header).
+  static json glbJson(const fs::path& path) {
+    const std::vector<std::uint8_t> bytes = readAll(path);
+    if (bytes.size() < 20) return json::object();
+    const std::uint32_t length = std::uint32_t(bytes[12]) | std::uint32_t(bytes[13]) << 8 |
+                                 std::uint32_t(bytes[14]) << 16 | std::uint32_t(bytes[15]) << 24;
+    if (bytes.size() < 20 + std::size_t(length)) return json::object();
+    return json::parse(bytes.begin() + 20, bytes.begin() + 20 + length, nullptr, false);
+  }
+
   void checkFiles() {
     const json expectations = spec_.value("expectFiles", json::object());
     for (const auto& [rawPath, expected] : expectations.items()) {
@@ -193,6 +203,17 @@ class CliCase : public ::testing::TestWithParam<Case> {
       if (expected.contains("schema")) {
         const json answer = runNodeChecker("check_schema.mjs", {(sourceDir() / expected["schema"].get<std::string>()).string(), path.string()});
         EXPECT_TRUE(answer.is_object() && answer.value("valid", false)) << path << ": " << answer.dump(2);
+      }
+      if (expected.contains("extensionSchema")) {
+        // {"BAKE_x": "formats/x.schema.json"}: the root extension object of a GLB against its schema.
+        for (const auto& [name, schema] : expected["extensionSchema"].items()) {
+          const json document = glbJson(path);
+          ASSERT_TRUE(document.contains("extensions") && document["extensions"].contains(name)) << path << " lacks " << name;
+          const fs::path extracted = tmp_ / (name + ".extension.json");
+          std::ofstream(extracted) << document["extensions"][name].dump();
+          const json answer = runNodeChecker("check_schema.mjs", {(sourceDir() / schema.get<std::string>()).string(), extracted.string()});
+          EXPECT_TRUE(answer.is_object() && answer.value("valid", false)) << path << ": " << name << ": " << answer.dump(2);
+        }
       }
       if (expected.value("gltfValid", false)) {
         const json answer = runNodeChecker("validate_gltf.mjs", {path.string()});

@@ -21,26 +21,14 @@
 
 #include "io/mesh.h"
 #include "mesh/mesh_stats.h"
+#include "support/data.h"
 #include "support/golden.h"
 
 namespace bake {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path dataDir() {
-  if (const char* fromEnvironment = std::getenv("BAKE_DATA_DIR"); fromEnvironment && *fromEnvironment) {
-    return fromEnvironment;
-  }
-  return test::sourceDir() / ".." / "shared" / "data";
-}
-
-#define SKIP_WITHOUT_DATA()                                                       \
-  do {                                                                            \
-    if (!fs::is_directory(dataDir() / "meshes")) {                                \
-      GTEST_SKIP() << "shared data set not found at " << dataDir().string()       \
-                   << " (set BAKE_DATA_DIR to its folder to run the data tests)"; \
-    }                                                                             \
-  } while (0)
+using test::dataDir;
 
 std::size_t referencedVertexCount(const TriangleMesh& mesh) {
   return mesh.vertexCount() - computeMeshStats(mesh).unreferencedVertices;
@@ -54,7 +42,7 @@ struct RealMesh {
 };
 
 TEST(DataMeshes, RealMeshesReadWithTheirPublishedCounts) {
-  SKIP_WITHOUT_DATA();
+  BAKE_SKIP_WITHOUT_DATA();
   const RealMesh meshes[] = {
       {"fertility.off", 4494, 0, 9000},
       {"camelhead.off", 11381, 0, 22704},
@@ -76,7 +64,7 @@ TEST(DataMeshes, RealMeshesReadWithTheirPublishedCounts) {
 }
 
 TEST(DataMeshes, EveryMeshInTheDataSetReadsOrFailsClearly) {
-  SKIP_WITHOUT_DATA();
+  BAKE_SKIP_WITHOUT_DATA();
   for (const char* folder : {"real", "stress"}) {
     for (const fs::directory_entry& entry : fs::directory_iterator(dataDir() / "meshes" / folder)) {
       SCOPED_TRACE(entry.path().string());
@@ -93,7 +81,7 @@ TEST(DataMeshes, EveryMeshInTheDataSetReadsOrFailsClearly) {
 }
 
 TEST(DataMeshes, StressMeshesKeepTheirFaces) {
-  SKIP_WITHOUT_DATA();
+  BAKE_SKIP_WITHOUT_DATA();
   const fs::path stress = dataDir() / "meshes" / "stress";
 
   const Result<TriangleMesh> allDegenerate = readMesh(stress / "all_degen.off");
@@ -125,7 +113,7 @@ TEST(DataMeshes, StressMeshesKeepTheirFaces) {
 }
 
 TEST(DataMeshes, GridWithCollapsedRowWeldsItsCoincidentVertices) {
-  SKIP_WITHOUT_DATA();
+  BAKE_SKIP_WITHOUT_DATA();
   const fs::path grid = dataDir() / "meshes" / "stress" / "grid_zero_area.off";
   const Result<TriangleMesh> raw = readMesh(grid);
   ASSERT_TRUE(raw.isOk()) << raw.status().describe();
@@ -150,7 +138,7 @@ TEST(DataMeshes, GridWithCollapsedRowWeldsItsCoincidentVertices) {
 }
 
 TEST(DataMeshes, WeldingTheTeapotMergesItsDuplicatePositions) {
-  SKIP_WITHOUT_DATA();
+  BAKE_SKIP_WITHOUT_DATA();
   const fs::path teapot = dataDir() / "meshes" / "real" / "teapot.obj";
   const Result<TriangleMesh> raw = readMesh(teapot);
   ASSERT_TRUE(raw.isOk()) << raw.status().describe();
