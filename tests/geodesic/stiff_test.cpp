@@ -27,8 +27,8 @@ std::vector<double> solve(Which which, const Surface& surface, const std::vector
     case Which::Exact: return exactDistances(surface, sources);
     case Which::Heat: {
       Result<HeatSolver> solver = HeatSolver::build(surface);
-      EXPECT_TRUE(solver.ok()) << solver.status().describe();
-      if (!solver.ok()) return std::vector<double>(surface.vertexCount(), std::nan(""));
+      EXPECT_TRUE(solver.isOk()) << solver.status().describe();
+      if (!solver.isOk()) return std::vector<double>(surface.vertexCount(), std::nan(""));
       return solver.value().distances(sources);
     }
     case Which::Fmm: return fastMarchingDistances(surface, sources);
@@ -129,7 +129,7 @@ TEST_P(StiffCase, StressGridsAreEuclidean) {
   BAKE_SKIP_WITHOUT_DATA();
   for (const char* file : {"grid_flat_64.off", "grid_needles.off", "grid_zero_area.off", "grid_obtuse.off"}) {
     Result<TriangleMesh> mesh = readMesh(test::dataDir() / "meshes" / "stress" / file);
-    ASSERT_TRUE(mesh.ok()) << mesh.status().describe();
+    ASSERT_TRUE(mesh.isOk()) << mesh.status().describe();
     const SurfaceBuild build = buildSurface(mesh.value());
     const Surface& s = build.surface;
     // A corner (on the boundary) and the vertex nearest the middle.
@@ -150,7 +150,7 @@ TEST_P(StiffCase, DegenerateStressFilesGiveFiniteResults) {
   BAKE_SKIP_WITHOUT_DATA();
   for (const char* file : {"all_degen.off", "degtri_nullface_bis.off", "non_manifold_face_graph.off"}) {
     Result<TriangleMesh> mesh = readMesh(test::dataDir() / "meshes" / "stress" / file);
-    ASSERT_TRUE(mesh.ok()) << mesh.status().describe();
+    ASSERT_TRUE(mesh.isOk()) << mesh.status().describe();
     const SurfaceBuild build = buildSurface(mesh.value());
     const Surface& s = build.surface;
     ASSERT_GT(s.triangleCount(), 0u) << file;

@@ -1,0 +1,21 @@
+// bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
+#include "core/cli.h"
+#include "mesh/shape_tool.h"
+
+int main(int argc, char** argv) {
+  bake::ShapeToolSettings settings;
+  bake::Diagnostics diagnostics("bakeshape");
+  std::string names;
+  for (const std::string& name : bake::shapeNames()) names += (names.empty() ? "" : ", ") + name;
+  CLI::App app{"Generates closed example shapes by polygonising signed distance fields (marching tetrahedra).",
+               "bakeshape"};
+  app.add_option("shape", settings.shape.name, "One of: " + names)->required();
+  app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj)")->required();
+  app.add_option("--resolution", settings.shape.resolution, "Grid cells along the longest side")->default_str("64");
+  bake::addCommonOptions(app, settings.common, {.version = true, .report = true, .depfile = true, .threads = false,
+                                                .printInputs = false});
+  return bake::runTool(app, diagnostics, argc, argv, [&] {
+    diagnostics.setQuiet(settings.common.quiet);
+    return bake::runShapeTool(settings, diagnostics);
+  });
+}
