@@ -23,6 +23,10 @@ struct HeatOptions {
   // Mollification epsilon relative to the mean edge length.
   double mollifyFactor = 1e-6;
   unsigned threads = 0;
+  // Sources in components with two or more sources are held at exactly 0 by a Dirichlet condition,
+  // which costs one extra back-substitution per source; beyond this many the field is only shifted
+  // so that its mean over the sources is 0 (then clamped at 0).
+  std::size_t maxPinnedSources = 64;
 };
 
 struct HeatStats {
@@ -30,6 +34,8 @@ struct HeatStats {
   double timeStep = 0.0;
   double mollifyEpsilon = 0.0;
   std::size_t tuftedEdges = 0;  // non-manifold edges resolved by the tufted cover
+  bool doubledCover = false;    // both sides of every face (boundary, non-manifold or unoriented input)
+  double geodesicExtent = 0.0;  // estimated longest geodesic, which bounds the time step from below
   double factorSeconds = 0.0;
 };
 

@@ -1,0 +1,38 @@
+// A sparse Cholesky factorisation held by CHOLMOD (Chen, Davis, Hager and Rajamanickam 2008),
+// supernodal where the fill makes it pay. Several matrices with one sparsity pattern share one
+// symbolic analysis (fill-reducing ordering and supernodes). Solving is const and thread-safe: each
+// call works in its own CHOLMOD workspace and only reads the factor.
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include <cstddef>
+#include <memory>
+#include <span>
+
+#include "core/status.h"
+
+namespace bake::geodesic {
+
+class CholeskyFactor {
+ public:
+  // Factorises each matrix (upper triangles of symmetric positive definite matrices, all with the
+  // same pattern) after one shared analysis.
+  static Result<std::vector<CholeskyFactor>> factoriseAll(
+      std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers);
+
+  CholeskyFactor(CholeskyFactor&&) noexcept;
+  CholeskyFactor& operator=(CholeskyFactor&&) noexcept;
+  ~CholeskyFactor();
+
+  std::size_t size() const;
+  // Solves A X = B for `columns` right-hand sides stored column after column (size() values each).
+  void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns = 1) const;
+
+ private:
+  struct Impl;
+  explicit CholeskyFactor(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bake::geodesic

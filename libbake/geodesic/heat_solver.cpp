@@ -1,0 +1,256 @@
+// The heat method (Crane, Weischedel and Wardetzky 2013, Algorithm 1) on the robust intrinsic
+// Laplacian of Sharp and Crane 2020:
+//   build:     tufted cover -> mollify -> intrinsic Delaunay flips -> L, M; factorise M + tL and L
+//              (L pinned at one vertex per component, so it is definite).
+//   per field: I.   solve (M + tL) u = delta_sources          (heat flow for time t)
+//              II.  X = -grad u / |grad u| per face             (direction away from the sources)
+//              III. solve L phi = div X                         (the function whose gradient best fits X)
+// Step III fixes phi only up to a constant per component. One source: phi is shifted so that it is 0
+// at the source. Several sources: shifting by the minimum (as CGAL 5.5 does) lets the solution's
+// error pull distances between sources towards 0; instead every source is held at 0 by a Dirichlet
+// condition, imposed on the pinned factor with Lagrange multipliers: phi = G(b + C lambda) + mu, where
+// G is the pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = 0 and the
+// multipliers sum to 0 (so the pinned row's equation holds too). That is one extra back-substitution
+// per source and a small dense system; components without a source are unreachable.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include <Eigen/Dense>
+
+#include "geodesic/heat.h"
+#include "geodesic/heat_cholmod.h"
+#include "geodesic/heat_intrinsic.h"
+#include "geodesic/heat_operators.h"
+#include "geodesic/heat_timestep.h"
+
+namespace bake::geodesic {
+
+// Everything a field needs after build(); read-only in distances().
+struct HeatSystem {
+  std::size_t vertexCount = 0;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> componentOf;
+  std::uint32_t componentCount = 0;
+  std::vector<char> isolated;  // vertices without a face: never reached
+  std::vector<char> pinned;    // one vertex per component, held at 0 in the pinned Poisson factor
+  HeatOperators ops;
+  std::optional<CholeskyFactor> heat;
+  std::optional<CholeskyFactor> poisson;
+  std::size_t maxPinnedSources = 0;
+};
+
+struct HeatSolver::State : HeatSystem {
+  HeatStats stats;
+};
+
+namespace {
+
+// A source as a row of the constraint matrix C: its corners and normalised barycentric weights.
+struct SourceRow {
+  std::array<std::uint32_t, 3> vertices;
+  std::array<double, 3> weights;
+  std::uint32_t component;
+  std::int64_t vertex;  // the vertex it sits on, or -1
+};
+
+std::vector<SourceRow> sourceRows(const HeatSystem& state, std::span<const SurfacePoint> sources) {
+  std::vector<SourceRow> rows;
+  std::vector<char> vertexSeen(state.vertexCount, 0);
+  for (const SurfacePoint& p : sources) {
+    if (p.face >= state.triangles.size()) continue;
+    SourceRow row{state.triangles[p.face], {}, 0, -1};
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      row.weights[i] = std::isfinite(p.barycentric[i]) ? std::max(0.0, p.barycentric[i]) : 0.0;
+      sum += row.weights[i];
+      if (p.barycentric[i] == 1.0) row.vertex = row.vertices[i];
+    }
+    if (!(sum > 0.0)) row.weights = {1.0, 0.0, 0.0}, sum = 1.0;
+    for (double& w : row.weights) w /= sum;
+    if (row.vertex >= 0) {
+      if (vertexSeen[row.vertex]) continue;  // a repeated source would make the constraints singular
+      vertexSeen[row.vertex] = 1;
+      row.weights = {0.0, 0.0, 0.0};
+      for (int i = 0; i < 3; ++i) row.weights[i] = row.vertices[i] == row.vertex ? 1.0 : 0.0;
+    }
+    row.component = state.componentOf[row.vertices[0]];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double rowDot(const SourceRow& row, const double* field) {
+  double s = 0.0;
+  for (int i = 0; i < 3; ++i) s += row.weights[i] * field[row.vertices[i]];
+  return s;
+}
+
+// Step I: heat from the sources, spread over their face corners by barycentric weight.
+std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRow>& rows) {
+  std::vector<double> delta(state.vertexCount, 0.0), u(state.vertexCount, 0.0);
+  for (const SourceRow& row : rows)
+    for (int i = 0; i < 3; ++i) delta[row.vertices[i]] += row.weights[i];
+  state.heat->solve(delta, u);
+  return u;
+}
+
+// Steps II and III with the pinned factor: phi0 = G div X.
+std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u) {
+  std::vector<double> rhs(state.vertexCount, 0.0), phi(state.vertexCount, 0.0);
+  divergenceOfNormalizedGradient(state.ops, u, rhs);
+  for (std::size_t v = 0; v < state.vertexCount; ++v)
+    if (state.pinned[v] || state.isolated[v]) rhs[v] = 0.0;
+  state.poisson->solve(rhs, phi);
+  return phi;
+}
+
+// Solves [S 1; 1^T 0] [lambda; mu] = [r; 0] for one component's sources (least squares when sources
+// coincide). Returns lambda followed by mu.
+Eigen::VectorXd multipliers(const Eigen::MatrixXd& s, const Eigen::VectorXd& r) {
+  const Eigen::Index k = s.rows();
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(k + 1, k + 1);
+  system.topLeftCorner(k, k) = s;
+  system.topRightCorner(k, 1).setOnes();
+  system.bottomLeftCorner(1, k).setOnes();
+  Eigen::VectorXd right = Eigen::VectorXd::Zero(k + 1);
+  right.head(k) = r;
+  return system.completeOrthogonalDecomposition().solve(right);
+}
+
+// Makes every source of a component with several sources sit at 0 (see the file comment), in place.
+void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
+                const std::vector<std::size_t>& members, std::vector<double>& phi) {
+  const std::size_t n = state.vertexCount, k = members.size();
+  std::vector<double> c(n * k, 0.0), gc(n * k, 0.0);
+  for (std::size_t s = 0; s < k; ++s)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = rows[members[s]].vertices[i];
+      if (!state.pinned[v]) c[s * n + v] += rows[members[s]].weights[i];
+    }
+  state.poisson->solve(c, gc, k);
+  Eigen::MatrixXd schur(k, k);
+  Eigen::VectorXd right(k);
+  for (std::size_t a = 0; a < k; ++a) {
+    right[a] = -rowDot(rows[members[a]], phi.data());
+    for (std::size_t b = 0; b < k; ++b) schur(a, b) = rowDot(rows[members[a]], gc.data() + b * n);
+  }
+  const Eigen::VectorXd solution = multipliers(0.5 * (schur + schur.transpose()), right);
+  const std::uint32_t component = rows[members[0]].component;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (state.componentOf[v] != component) continue;
+    double shift = solution[k];
+    for (std::size_t s = 0; s < k; ++s) shift += solution[s] * gc[s * n + v];
+    phi[v] += shift;
+  }
+}
+
+// Shifts a component so that its sources' mean value is 0 (one source: that source is at 0).
+void shiftToSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
+                    const std::vector<std::size_t>& members, std::vector<double>& phi) {
+  double mean = 0.0;
+  for (std::size_t m : members) mean += rowDot(rows[m], phi.data());
+  mean /= static_cast<double>(members.size());
+  const std::uint32_t component = rows[members[0]].component;
+  for (std::size_t v = 0; v < state.vertexCount; ++v)
+    if (state.componentOf[v] == component) phi[v] -= mean;
+}
+
+std::vector<char> pinOnePerComponent(const Surface& surface, const std::vector<char>& isolated) {
+  std::vector<char> pinned(surface.vertexCount(), 0), done(surface.componentCount, 0);
+  for (std::uint32_t v = 0; v < surface.vertexCount(); ++v)
+    if (!isolated[v] && !done[surface.componentOf[v]]) done[surface.componentOf[v]] = pinned[v] = 1;
+  return pinned;
+}
+
+bool finiteGeometry(const Surface& surface) {
+  for (const Vec3d& p : surface.positions)
+    for (double x : p)
+      if (!std::isfinite(x)) return false;
+  return std::all_of(surface.edgeLengths.begin(), surface.edgeLengths.end(),
+                     [](double l) { return std::isfinite(l); });
+}
+
+}  // namespace
+
+Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& options) {
+  if (!finiteGeometry(surface)) return invalidInput("surface has non-finite vertex positions");
+  auto state = std::make_unique<State>();
+  state->vertexCount = surface.vertexCount();
+  state->triangles = surface.triangles;
+  state->componentOf = surface.componentOf;
+  state->componentCount = surface.componentCount;
+  state->maxPinnedSources = options.maxPinnedSources;
+  state->isolated.assign(surface.vertexCount(), 1);
+  for (const auto& t : surface.triangles)
+    for (std::uint32_t v : t) state->isolated[v] = 0;
+  state->pinned = pinOnePerComponent(surface, state->isolated);
+  HeatStats& stats = state->stats;
+  if (surface.triangleCount() == 0) return HeatSolver(std::move(state));
+
+  IntrinsicBuildStats intrinsic;
+  IntrinsicTriangulation mesh = buildTuftedCover(surface, intrinsic);
+  const double h = surface.meanEdgeLength > 0.0 ? surface.meanEdgeLength : 1.0;
+  stats.mollifyEpsilon = mollify(mesh, options.mollifyFactor * h);
+  stats.edgeFlips = flipToDelaunay(mesh);
+  stats.tuftedEdges = intrinsic.nonManifoldEdges;
+  stats.doubledCover = intrinsic.doubled;
+  state->ops = buildHeatOperators(mesh, surface.vertexCount());
+  stats.geodesicExtent = estimateGeodesicExtent(surface);
+  stats.timeStep = heatTimeStep(h, stats.geodesicExtent, options.timeFactor);
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<char> poissonIdentity(surface.vertexCount());
+  for (std::size_t v = 0; v < surface.vertexCount(); ++v)
+    poissonIdentity[v] = state->isolated[v] || state->pinned[v];
+  const std::vector<double> none(surface.vertexCount(), 0.0);
+  const auto heatMatrix = assembleUpper(state->ops, stats.timeStep, state->ops.mass, state->isolated);
+  const auto poissonMatrix = assembleUpper(state->ops, 1.0, none, poissonIdentity);
+  const std::array<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>*, 2> matrices{&heatMatrix,
+                                                                                          &poissonMatrix};
+  BAKE_ASSIGN_OR_RETURN(std::vector<CholeskyFactor> factors, CholeskyFactor::factoriseAll(matrices));
+  state->heat.emplace(std::move(factors[0]));
+  state->poisson.emplace(std::move(factors[1]));
+  stats.factorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return HeatSolver(std::move(state));
+}
+
+std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources) const {
+  const State& state = *state_;
+  std::vector<double> result(state.vertexCount, kUnreachable);
+  const std::vector<SourceRow> rows = sourceRows(state, sources);
+  if (rows.empty() || !state.heat) return result;
+
+  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows));
+  std::map<std::uint32_t, std::vector<std::size_t>> byComponent;
+  for (std::size_t r = 0; r < rows.size(); ++r) byComponent[rows[r].component].push_back(r);
+  std::size_t pinnedTotal = 0;
+  for (const auto& [component, members] : byComponent)
+    if (members.size() > 1) pinnedTotal += members.size();
+  for (const auto& [component, members] : byComponent) {
+    if (members.size() > 1 && pinnedTotal <= state.maxPinnedSources)
+      pinSources(state, rows, members, phi);
+    else
+      shiftToSources(state, rows, members, phi);
+  }
+
+  std::vector<char> reached(state.componentCount, 0);
+  for (const auto& [component, members] : byComponent) reached[component] = 1;
+  for (std::size_t v = 0; v < state.vertexCount; ++v)
+    if (reached[state.componentOf[v]] && !state.isolated[v])
+      result[v] = std::isfinite(phi[v]) ? std::max(0.0, phi[v]) : 0.0;
+  for (const SourceRow& row : rows)
+    if (row.vertex >= 0) result[static_cast<std::size_t>(row.vertex)] = 0.0;
+  return result;
+}
+
+const HeatStats& HeatSolver::stats() const { return state_->stats; }
+
+HeatSolver::HeatSolver(std::unique_ptr<State> state) : state_(std::move(state)) {}
+HeatSolver::HeatSolver(HeatSolver&&) noexcept = default;
+HeatSolver& HeatSolver::operator=(HeatSolver&&) noexcept = default;
+HeatSolver::~HeatSolver() = default;
+
+}  // namespace bake::geodesic
