@@ -88,6 +88,9 @@ glb::Primitive meshPrimitive(const TriangleMesh& mesh) {
     for (const Vec2f& t : mesh.texcoords) flat.insert(flat.end(), t.begin(), t.end());
     primitive.attributes.push_back(glb::Attribute::fromFloats("TEXCOORD_0", 2, flat));
   }
+  // Other attributes of a glTF input pass through; fields of an earlier bake are replaced.
+  for (const glb::Attribute& extra : mesh.extraAttributes)
+    if (extra.name.rfind(fmt::kAttributePrefix, 0) != 0) primitive.attributes.push_back(extra);
   primitive.indices.reserve(mesh.triangleCount() * 3);
   for (const Triangle& t : mesh.triangles) primitive.indices.insert(primitive.indices.end(), t.begin(), t.end());
   return primitive;

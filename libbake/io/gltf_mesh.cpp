@@ -62,13 +62,61 @@ std::vector<std::uint32_t> triangleList(const glb::Primitive& primitive) {
   return list;
 }
 
+bool carriedByTriangleMesh(const std::string& name) {
+  return name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0";
+}
+
+bool sameLayout(const glb::Attribute& a, const glb::Attribute& b) {
+  return a.componentType == b.componentType && a.components == b.components && a.normalized == b.normalized;
+}
+
+// TANGENT xyz follows the transform's upper 3x3 (renormalised); w, the handedness, flips with a mirror.
+glb::Attribute transformTangents(const Matrix& m, const glb::Attribute& tangent) {
+  std::vector<float> t = tangent.toFloats();
+  const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+                     m[8] * (m[1] * m[6] - m[5] * m[2]);
+  for (std::size_t v = 0; v + 3 < t.size(); v += 4) {
+    double out[3];
+    for (int r = 0; r < 3; ++r) out[r] = m[r] * t[v] + m[4 + r] * t[v + 1] + m[8 + r] * t[v + 2];
+    const double length = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+    for (int r = 0; r < 3; ++r) t[v + std::size_t(r)] = length > 0 ? float(out[r] / length) : 0.0f;
+    if (det < 0) t[v + 3] = -t[v + 3];
+  }
+  return glb::Attribute::fromFloats(tangent.name, 4, t);
+}
+
 struct Flattener {
   const glb::Package& package;
   const std::string& name;
   TriangleMesh mesh;
   bool allHaveNormals = true;
   bool allHaveTexcoords = true;
+  bool firstPrimitive = true;
   std::size_t skipped = 0;
+
+  // Keeps the extra attributes every primitive so far has with one layout, and appends this one's.
+  void appendExtras(const glb::Primitive& primitive, const Matrix& world) {
+    if (firstPrimitive) {
+      for (const glb::Attribute& attribute : primitive.attributes) {
+        if (carriedByTriangleMesh(attribute.name)) continue;
+        glb::Attribute empty = attribute;
+        empty.bytes.clear();
+        if (attribute.name == "TANGENT") empty.componentType = glb::ComponentType::F32, empty.normalized = false;
+        mesh.extraAttributes.push_back(std::move(empty));
+      }
+      firstPrimitive = false;
+    }
+    std::vector<glb::Attribute> kept;
+    for (glb::Attribute& extra : mesh.extraAttributes) {
+      const glb::Attribute* own = primitive.find(extra.name);
+      if (!own) continue;
+      const glb::Attribute appended = extra.name == "TANGENT" && own->components == 4 ? transformTangents(world, *own) : *own;
+      if (!sameLayout(appended, extra)) continue;
+      extra.bytes.insert(extra.bytes.end(), appended.bytes.begin(), appended.bytes.end());
+      kept.push_back(std::move(extra));
+    }
+    mesh.extraAttributes = std::move(kept);
+  }
 
   void appendPrimitive(const glb::Primitive& primitive, const Matrix& world) {
     if (primitive.mode < format::glb::kModeTriangles) {
@@ -85,6 +133,7 @@ struct Flattener {
     const std::vector<float> n = normal ? normal->toFloats() : std::vector<float>();
     const std::vector<float> t = texcoord ? texcoord->toFloats() : std::vector<float>();
     const std::uint32_t base = std::uint32_t(mesh.positions.size());
+    appendExtras(primitive, world);
     for (std::size_t v = 0; v < position->count(); ++v) {
       mesh.positions.push_back(transformPoint(world, &p[3 * v]));
       mesh.normals.push_back(normal ? transformNormal(world, &n[3 * v]) : Vec3f{});

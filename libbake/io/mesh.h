@@ -13,6 +13,7 @@
 
 #include "core/diagnostics.h"
 #include "core/status.h"
+#include "io/glb.h"
 
 namespace bake {
 
@@ -32,6 +33,10 @@ struct TriangleMesh {
   std::vector<Vec3f> normals;    // empty, or one per vertex
   std::vector<Vec2f> texcoords;  // empty, or one per vertex
   std::vector<NamedPoint> namedPoints;
+  // Other per-vertex attributes of a glTF input (COLOR_0, TEXCOORD_1, TANGENT, JOINTS_0, _NAME, ...),
+  // carried verbatim so a baker can write them back; only attributes every primitive has, with the
+  // same layout, survive. TANGENT is transformed to world space like the positions.
+  std::vector<glb::Attribute> extraAttributes;
 
   std::size_t vertexCount() const { return positions.size(); }
   std::size_t triangleCount() const { return triangles.size(); }

@@ -145,11 +145,16 @@ void compactVertices(TriangleMesh& mesh, std::vector<std::uint32_t>& representat
     mesh.positions[next] = mesh.positions[v];
     if (!mesh.normals.empty()) mesh.normals[next] = mesh.normals[v];
     if (!mesh.texcoords.empty()) mesh.texcoords[next] = mesh.texcoords[v];
+    for (glb::Attribute& extra : mesh.extraAttributes) {  // survivors keep their own values
+      const std::size_t size = extra.elementSize();
+      std::memmove(extra.bytes.data() + next * size, extra.bytes.data() + std::size_t(v) * size, size);
+    }
     ++next;
   }
   mesh.positions.resize(next);
   if (!mesh.normals.empty()) mesh.normals.resize(next);
   if (!mesh.texcoords.empty()) mesh.texcoords.resize(next);
+  for (glb::Attribute& extra : mesh.extraAttributes) extra.bytes.resize(next * extra.elementSize());
   for (std::uint32_t& r : representative) r = newIndex[r];
 }
 

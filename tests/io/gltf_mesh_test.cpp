@@ -53,6 +53,35 @@ TEST(GltfMesh, PlacesInstancesInWorldSpace) {
   EXPECT_FLOAT_EQ(mesh->namedPoints[1].position[0], 10.0f);
 }
 
+TEST(GltfMesh, CarriesOtherAttributesEveryPrimitiveHas) {
+  glb::Primitive first = triangle();
+  const std::vector<float> colours = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 1, 1};
+  const std::vector<float> tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
+  first.attributes.push_back(glb::Attribute::fromFloats("COLOR_0", 4, colours));
+  first.attributes.push_back(glb::Attribute::fromFloats("TANGENT", 4, tangents));
+  first.attributes.push_back(glb::Attribute::fromFloats("_WEIGHT", 1, std::vector<float>{1, 2, 3, 4}));
+  glb::Primitive second = first;
+  second.attributes.pop_back();  // no _WEIGHT: it cannot survive
+  glb::Package package;
+  package.meshes.push_back({"quad", {first, second}});
+  glb::Node node{"node", 0, {}, std::nullopt};
+  node.rotation = {0, 0, 0.70710678118654752, 0.70710678118654752};  // 90 degrees about +z
+  package.nodes = {node};
+  const fs::path dir = test::freshTempDir("gltf_mesh_extras");
+  ASSERT_TRUE(glb::write(dir / "scene.glb", package).isOk());
+  auto mesh = readGltfMesh(dir / "scene.glb");
+  ASSERT_TRUE(mesh.isOk()) << mesh.status().describe();
+  ASSERT_EQ(mesh->extraAttributes.size(), 2u);
+  EXPECT_EQ(mesh->extraAttributes[0].name, "COLOR_0");
+  EXPECT_EQ(mesh->extraAttributes[0].count(), 8u);
+  EXPECT_EQ(mesh->extraAttributes[0].toFloats()[4 * 5 + 1], 1.0f);  // vertex 1 of the second primitive: green
+  ASSERT_EQ(mesh->extraAttributes[1].name, "TANGENT");
+  const std::vector<float> t = mesh->extraAttributes[1].toFloats();
+  EXPECT_NEAR(t[0], 0.0f, 1e-6);  // (1,0,0) turned to (0,1,0)
+  EXPECT_NEAR(t[1], 1.0f, 1e-6);
+  EXPECT_EQ(t[3], 1.0f);
+}
+
 TEST(GltfMesh, RejectsCyclesAndEmptyScenes) {
   glb::Package package;
   package.meshes.push_back({"tri", {triangle()}});
