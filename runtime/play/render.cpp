@@ -10,6 +10,7 @@
 #include "core/session.h"
 #include "gl/context.h"
 #include "io/image.h"
+#include "render/geodesic.h"
 #include "render/renderer.h"
 #include "render/target.h"
 #include "scene/scene.h"
@@ -20,7 +21,7 @@ namespace {
 FrameContext frameContext(const Scene& scene, const Camera& camera, const Light& light, const ViewSettings& view) {
   const float aspect = float(view.width) / float(view.height);
   return {scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
-          perspective(camera.yfov, aspect, camera.znear, camera.zfar), view.width, view.height};
+          perspective(camera.yfov, aspect, camera.znear, camera.zfar), view.width, view.height, view.time};
 }
 
 struct FrameTimes {
@@ -122,6 +123,7 @@ Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics) 
     const RendererRegistry& registry = RendererRegistry::builtIn();
     BAKE_ASSIGN_OR_RETURN(setup.scene, loadScene(files, diagnostics, [&](const std::string& e) { return registry.has(e); }));
   }
+  BAKE_RETURN_IF_ERROR(attachGeoTextures(setup.scene, view.geotexture));
   const float aspect = float(view.width) / float(view.height);
   setup.camera = setup.scene.fileCamera ? *setup.scene.fileCamera : frameBounds(setup.scene, aspect);
   if (!view.camera.empty()) {
@@ -162,7 +164,9 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"size", {settings.view.width, settings.view.height}},
                                {"camera", settings.view.camera},
                                {"light", settings.view.light},
-                               {"frames", settings.frames}});
+                               {"frames", settings.frames},
+                               {"geotexture", settings.view.geotexture},
+                               {"time", settings.view.time}});
   return session.finish(renderScene(settings, session));
 }
 

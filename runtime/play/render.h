@@ -20,6 +20,8 @@ struct ViewSettings {
   std::string camera;  // "x,y,z[:tx,ty,tz]"; empty: from the file, else framed automatically
   std::string light;   // "x,y,z" towards the light; empty: from the file, else a default
   bool quiet = false;  // for commands without the common options
+  std::string geotexture;  // GeoTexture preset for every primitive with geodesic fields; empty: the files'
+  float time = 0.0f;       // seconds, for animated techniques
 };
 
 struct RenderSettings {

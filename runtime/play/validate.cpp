@@ -8,6 +8,7 @@
 #include "core/session.h"
 #include "gl/context.h"
 #include "io/image.h"
+#include "render/geodesic.h"
 #include "render/renderer.h"
 #include "render/target.h"
 #include "scene/scene.h"
@@ -110,6 +111,7 @@ Verdict validateOne(const std::string& file, const std::string& golden, const Va
   const RendererRegistry& registry = RendererRegistry::builtIn();
   auto scene = loadScene({file}, session.diagnostics(), [&](const std::string& e) { return registry.has(e); });
   if (!scene.isOk()) return fail(scene.status());
+  if (const Status s = attachGeoTextures(*scene, ""); !s.isOk()) return fail(s);  // bare fields compile too
   std::vector<Image> views;
   if (const Status s = renderViews(*scene, settings, views); !s.isOk()) return fail(s);
 
@@ -190,6 +192,7 @@ Status checkPackageStructure(const glb::Package& package, const std::string& nam
   for (std::size_t i = 0; i < package.materials.size(); ++i) {
     BAKE_RETURN_IF_ERROR(checkVendorExtensions(package.materials[i], {name, "material " + std::to_string(i)}));
   }
+  BAKE_RETURN_IF_ERROR(checkGeodesicPackage(package, name));
   return {};
 }
 

@@ -137,6 +137,7 @@ Status runView(const WindowSettings& settings, Diagnostics& diagnostics) {
 
   OffscreenTarget target;
   double smoothedMs = 0;
+  const double startSeconds = glfwGetTime();
   for (int frameIndex = 1; !window->shouldClose(); ++frameIndex) {
     const auto start = std::chrono::steady_clock::now();
     int width = 0, height = 0;
@@ -152,8 +153,10 @@ Status runView(const WindowSettings& settings, Diagnostics& diagnostics) {
     Light light = setup.light;
     light.direction = state.light.direction();
     const float aspect = float(width) / float(height);
+    // Animation runs in real time from --time; a screenshot keeps --time, to match `render`.
+    const float time = settings.view.time + (settings.screenshot.empty() ? float(glfwGetTime() - startSeconds) : 0.0f);
     const FrameContext frame{setup.scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
-                             perspective(camera.yfov, aspect, camera.znear, camera.zfar), width, height};
+                             perspective(camera.yfov, aspect, camera.znear, camera.zfar), width, height, time};
     target.bind();
     renderer.drawFrame(frame);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

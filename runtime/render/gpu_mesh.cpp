@@ -96,6 +96,15 @@ void GpuPrimitive::draw() const {
   }
 }
 
+void GpuPrimitive::drawAsPatches() const {
+  glBindVertexArray(vao_);
+  if (indexed_) {
+    glDrawElements(GL_PATCHES, count_, GL_UNSIGNED_INT, nullptr);
+  } else {
+    glDrawArrays(GL_PATCHES, 0, count_);
+  }
+}
+
 bool GpuPrimitive::has(const std::string& attribute) const {
   for (const std::string& name : attributes_) {
     if (name == attribute) return true;

@@ -26,6 +26,8 @@ class GpuPrimitive {
   ~GpuPrimitive();
 
   void draw() const;
+  // Draws a triangle list as 3-vertex patches, for programs with tessellation stages.
+  void drawAsPatches() const;
   bool has(const std::string& attribute) const;
   std::size_t uploadedBytes() const { return bytes_; }
 

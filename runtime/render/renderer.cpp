@@ -2,6 +2,7 @@
 
 #include <GL/glcorearb.h>
 
+#include "render/geodesic.h"
 #include "render/standard.h"
 
 namespace bake::play {
@@ -11,6 +12,7 @@ const RendererRegistry& RendererRegistry::builtIn() {
     RendererRegistry r;
     r.add("", [] { return std::make_unique<StandardRenderer>(); });
     // Technique renderers register here: r.add("BAKE_<technique>", ...).
+    r.add("BAKE_geodesic", [] { return std::make_unique<GeodesicRenderer>(); });
     return r;
   }();
   return registry;

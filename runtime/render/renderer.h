@@ -24,6 +24,7 @@ struct FrameContext {
   Mat4 projection;
   int width = 0;
   int height = 0;
+  float time = 0.0f;  // seconds, for animated techniques (GeoTexture fronts)
 };
 
 class TechniqueRenderer {

@@ -15,6 +15,10 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
   command.add_option("--size", size, "Frame or window size WIDTHxHEIGHT")->capture_default_str();
   command.add_option("--camera", view.camera, "Camera eye x,y,z or eye:target x,y,z:x,y,z (default: the file's camera, else framed)");
   command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)");
+  command.add_option("--geotexture", view.geotexture,
+                     "GeoTexture preset for every primitive with geodesic fields (isolines, sand-water, moss-granite, "
+                     "paint-metal-rust, water-lava, opacity-front, wave-displacement)");
+  command.add_option("--time", view.time, "Animation time in seconds (GeoTexture fronts with a speed)")->capture_default_str();
 }
 
 CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, std::string& size) {
