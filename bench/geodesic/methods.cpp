@@ -1,0 +1,75 @@
+// The methods under test, each as one function from (surface, source vertices) to a measurement:
+// libbake's exact window propagation, heat method and fast marching, and CGAL's exact
+// Surface_mesh_shortest_path and Heat_method_3 (intrinsic Delaunay) as peers. Setup that a method does
+// once per mesh (the heat methods' factorisations) is timed apart from the per-field time. Each runs
+// inside runIsolated, so a failure is thrown as an exception and becomes a failed row.
+#include <chrono>
+#include <stdexcept>
+
+#include "bench_geodesic.h"
+#include "cgal_geodesic.h"
+#include "geodesic/methods.h"
+
+namespace bake::bench {
+namespace {
+
+using geodesic::Surface;
+using geodesic::SurfacePoint;
+using Clock = std::chrono::steady_clock;
+
+std::vector<SurfacePoint> surfacePoints(const Surface& s, const std::vector<std::uint32_t>& vertices) {
+  std::vector<SurfacePoint> points;
+  for (std::uint32_t v : vertices) points.push_back(geodesic::vertexPoint(s, v));
+  return points;
+}
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+template <class T>
+T valueOrThrow(Result<T> result) {
+  if (!result.isOk()) throw std::runtime_error(result.status().describe());
+  return std::move(result).value();
+}
+
+Measurement timeField(const MethodSettings& settings, const std::function<std::vector<double>()>& field) {
+  Measurement m;
+  m.seconds = medianSeconds([&] { m.distances = field(); }, settings.repeats, settings.repeatBudgetSeconds, &m.runs);
+  return m;
+}
+
+}  // namespace
+
+std::vector<Method> allMethods(const MethodSettings& settings) {
+  std::vector<Method> methods;
+  methods.push_back({"exact", [settings](const Surface& s, const std::vector<std::uint32_t>& sources) {
+    const auto points = surfacePoints(s, sources);
+    return timeField(settings, [&] { return geodesic::exactDistances(s, points); });
+  }});
+  methods.push_back({"heat", [settings](const Surface& s, const std::vector<std::uint32_t>& sources) {
+    const auto points = surfacePoints(s, sources);
+    const auto start = Clock::now();
+    const geodesic::HeatSolver solver = valueOrThrow(geodesic::HeatSolver::build(s));
+    const double setup = secondsSince(start);
+    Measurement m = timeField(settings, [&] { return solver.distances(points); });
+    m.setupSeconds = setup;
+    return m;
+  }});
+  methods.push_back({"fmm", [settings](const Surface& s, const std::vector<std::uint32_t>& sources) {
+    const auto points = surfacePoints(s, sources);
+    return timeField(settings, [&] { return geodesic::fastMarchingDistances(s, points); });
+  }});
+  methods.push_back({"cgal-exact", [settings](const Surface& s, const std::vector<std::uint32_t>& sources) {
+    return timeField(settings, [&] { return valueOrThrow(peers::cgalExactDistances(s.positions, s.triangles, sources)); });
+  }});
+  methods.push_back({"cgal-heat", [settings](const Surface& s, const std::vector<std::uint32_t>& sources) {
+    const auto start = Clock::now();
+    peers::CgalHeatSolver solver = valueOrThrow(peers::CgalHeatSolver::build(s.positions, s.triangles));
+    const double setup = secondsSince(start);
+    Measurement m = timeField(settings, [&] { return valueOrThrow(solver.distances(sources)); });
+    m.setupSeconds = setup;
+    return m;
+  }});
+  return methods;
+}
+
+}  // namespace bake::bench
