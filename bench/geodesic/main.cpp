@@ -155,7 +155,9 @@ std::string ratio(const Row* ours, const Row* peer, bool setup) {
   return b > 0.0 ? number(a / b) : "-";
 }
 
-std::string errorText(const Row* row) { return row ? number(row->error.mean) + "/" + number(row->error.max) : "-"; }
+std::string errorText(const Row* row) {
+  return row && !std::isnan(row->error.mean) ? number(row->error.mean) + "/" + number(row->error.max) : "-";
+}
 
 void summarise(std::ostream& out, const Rung& rung, std::size_t sourceCount, const std::vector<Row>& rows) {
   const Row* exact = findRow(rows, "exact");
