@@ -6,10 +6,13 @@
 //              II.  X = -grad u / |grad u| per face             (direction away from the sources)
 //              III. solve L phi = div X                         (the function whose gradient best fits X)
 // Step III fixes phi only up to a constant per component. One source: phi is shifted so that it is 0
-// at the source. Several sources: shifting by the minimum (as CGAL 5.5 does) lets the solution's
+// at the source. A source inside a face holds phi's linear interpolant there at the interpolant of its
+// true distances to the face's corners (straight segments in the face), not at 0: the distance is a
+// cone whose tip lies inside the face, and forcing its interpolant to 0 would pull the corners, and
+// with them the whole field, down by a fraction of an edge. Several sources: shifting by the minimum (as CGAL 5.5 does) lets the solution's
 // error pull distances between sources towards 0; instead every source is held at 0 by a Dirichlet
 // condition, imposed on the pinned factor with Lagrange multipliers: phi = G(b + C lambda) + mu, where
-// G is the pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = 0 and the
+// G is the pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = r and the
 // multipliers sum to 0 (so the pinned row's equation holds too). That is one extra back-substitution
 // per source and a small dense system; components without a source are unreachable.
 #include <algorithm>
@@ -32,6 +35,7 @@ namespace bake::geodesic {
 struct HeatSystem {
   std::size_t vertexCount = 0;
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<Vec3d> positions;
   std::vector<std::uint32_t> componentOf;
   std::uint32_t componentCount = 0;
   std::vector<char> isolated;  // vertices without a face: never reached
@@ -52,16 +56,30 @@ namespace {
 struct SourceRow {
   std::array<std::uint32_t, 3> vertices;
   std::array<double, 3> weights;
+  double value;  // what phi's interpolant must be at the source (0 at a vertex)
   std::uint32_t component;
   std::int64_t vertex;  // the vertex it sits on, or -1
 };
+
+// The linear interpolant, at a point of a face, of the distances from that point to the face's corners.
+double interpolatedCornerDistance(const HeatSystem& state, const SourceRow& row) {
+  Vec3d point{0.0, 0.0, 0.0};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) point[k] += row.weights[i] * state.positions[row.vertices[i]][k];
+  double value = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3d& corner = state.positions[row.vertices[i]];
+    value += row.weights[i] * std::hypot(corner[0] - point[0], corner[1] - point[1], corner[2] - point[2]);
+  }
+  return value;
+}
 
 std::vector<SourceRow> sourceRows(const HeatSystem& state, std::span<const SurfacePoint> sources) {
   std::vector<SourceRow> rows;
   std::vector<char> vertexSeen(state.vertexCount, 0);
   for (const SurfacePoint& p : sources) {
     if (p.face >= state.triangles.size()) continue;
-    SourceRow row{state.triangles[p.face], {}, 0, -1};
+    SourceRow row{state.triangles[p.face], {}, 0.0, 0, -1};
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
       row.weights[i] = std::isfinite(p.barycentric[i]) ? std::max(0.0, p.barycentric[i]) : 0.0;
@@ -77,6 +95,7 @@ std::vector<SourceRow> sourceRows(const HeatSystem& state, std::span<const Surfa
       for (int i = 0; i < 3; ++i) row.weights[i] = row.vertices[i] == row.vertex ? 1.0 : 0.0;
     }
     row.component = state.componentOf[row.vertices[0]];
+    row.value = interpolatedCornerDistance(state, row);
     rows.push_back(row);
   }
   return rows;
@@ -134,7 +153,7 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
   Eigen::MatrixXd schur(k, k);
   Eigen::VectorXd right(k);
   for (std::size_t a = 0; a < k; ++a) {
-    right[a] = -rowDot(rows[members[a]], phi.data());
+    right[a] = rows[members[a]].value - rowDot(rows[members[a]], phi.data());
     for (std::size_t b = 0; b < k; ++b) schur(a, b) = rowDot(rows[members[a]], gc.data() + b * n);
   }
   const Eigen::VectorXd solution = multipliers(0.5 * (schur + schur.transpose()), right);
@@ -147,11 +166,11 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
   }
 }
 
-// Shifts a component so that its sources' mean value is 0 (one source: that source is at 0).
+// Shifts a component so that its sources' mean error is 0 (one source: that source is exact).
 void shiftToSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
                     const std::vector<std::size_t>& members, std::vector<double>& phi) {
   double mean = 0.0;
-  for (std::size_t m : members) mean += rowDot(rows[m], phi.data());
+  for (std::size_t m : members) mean += rowDot(rows[m], phi.data()) - rows[m].value;
   mean /= static_cast<double>(members.size());
   const std::uint32_t component = rows[members[0]].component;
   for (std::size_t v = 0; v < state.vertexCount; ++v)
@@ -180,6 +199,7 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   auto state = std::make_unique<State>();
   state->vertexCount = surface.vertexCount();
   state->triangles = surface.triangles;
+  state->positions = surface.positions;
   state->componentOf = surface.componentOf;
   state->componentCount = surface.componentCount;
   state->maxPinnedSources = options.maxPinnedSources;

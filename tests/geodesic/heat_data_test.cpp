@@ -1,0 +1,152 @@
+// The heat method on the shared mesh set: finite, non-negative fields on the stiff cases, accuracy
+// against exact polyhedral distances (CGAL's Surface_mesh_shortest_path) on the real meshes, and on
+// meshes of more than a million triangles, where the usual time step t = h^2 would underflow.
+// Midpoint subdivision does not move the surface, so the exact distances of a subdivided mesh at its
+// original vertices are those of the original mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "cgal_geodesic.h"
+#include "geodesic/heat.h"
+#include "geodesic/heat_meshes.h"
+#include "io/mesh.h"
+
+namespace bake::geodesic {
+namespace {
+
+using testing::FieldError;
+using testing::relativeError;
+
+const std::filesystem::path kMeshes = "/work/shared/data/meshes";
+
+Surface loadSurface(const std::filesystem::path& path) {
+  Result<TriangleMesh> mesh = readMesh(path);
+  EXPECT_TRUE(mesh.isOk()) << mesh.status().describe();
+  return mesh.isOk() ? buildSurface(*mesh).surface : Surface{};
+}
+
+HeatSolver buildSolver(const Surface& surface) {
+  Result<HeatSolver> solver = HeatSolver::build(surface);
+  EXPECT_TRUE(solver.isOk()) << solver.status().describe();
+  return std::move(solver).value();
+}
+
+std::uint32_t firstVertexWithFace(const Surface& s) { return s.triangles.empty() ? 0 : s.triangles[0][0]; }
+
+std::vector<double> exactFrom(const Surface& s, const std::vector<std::uint32_t>& sources) {
+  Result<std::vector<double>> exact = peers::cgalExactDistances(s.positions, s.triangles, sources);
+  EXPECT_TRUE(exact.isOk()) << exact.status().describe();
+  return exact.isOk() ? *exact : std::vector<double>(s.vertexCount(), kUnreachable);
+}
+
+std::vector<SurfacePoint> vertexSources(const Surface& s, const std::vector<std::uint32_t>& vertices) {
+  std::vector<SurfacePoint> points;
+  for (std::uint32_t v : vertices) points.push_back(vertexPoint(s, v));
+  return points;
+}
+
+TEST(DataHeat, StiffMeshesGiveFiniteNonNegativeDistances) {
+  if (!std::filesystem::exists(kMeshes / "stress")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  for (const char* name : {"grid_needles.off", "grid_obtuse.off", "grid_zero_area.off", "grid_flat_64.off",
+                           "all_degen.off", "degtri_nullface_bis.off", "non_manifold_face_graph.off"}) {
+    SCOPED_TRACE(name);
+    const Surface s = loadSurface(kMeshes / "stress" / name);
+    ASSERT_GT(s.triangleCount(), 0u);
+    const HeatSolver solver = buildSolver(s);
+    const SurfacePoint inside{0, {0.2, 0.3, 0.5}};
+    for (const std::vector<SurfacePoint>& sources :
+         {std::vector<SurfacePoint>{vertexPoint(s, firstVertexWithFace(s))}, std::vector<SurfacePoint>{inside},
+          std::vector<SurfacePoint>{inside, vertexPoint(s, s.triangles.back()[1])}}) {
+      const std::vector<double> d = solver.distances(sources);
+      for (std::size_t v = 0; v < d.size(); ++v) {
+        ASSERT_FALSE(std::isnan(d[v])) << "vertex " << v;
+        ASSERT_GE(d[v], 0.0) << "vertex " << v;
+        if (d[v] != kUnreachable) ASSERT_LE(d[v], 10.0 * s.diagonal + 1.0) << "vertex " << v;
+      }
+    }
+  }
+}
+
+TEST(DataHeat, StressGridsMatchPlanarDistance) {
+  if (!std::filesystem::exists(kMeshes / "stress")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  for (const char* name : {"grid_flat_64.off", "grid_needles.off", "grid_obtuse.off", "grid_zero_area.off"}) {
+    SCOPED_TRACE(name);
+    const Surface s = loadSurface(kMeshes / "stress" / name);
+    ASSERT_GT(s.triangleCount(), 0u);
+    const HeatSolver solver = buildSolver(s);
+    const std::uint32_t source = s.triangles[s.triangleCount() / 2][0];
+    const std::vector<double> d = solver.distances(vertexSources(s, {source}));
+    std::vector<double> planar(s.vertexCount(), kUnreachable);
+    for (std::size_t v = 0; v < s.vertexCount(); ++v)
+      if (!s.facesOfVertex(static_cast<std::uint32_t>(v)).empty())
+        planar[v] = std::hypot(s.positions[v][0] - s.positions[source][0],
+                               s.positions[v][1] - s.positions[source][1],
+                               s.positions[v][2] - s.positions[source][2]);
+    const FieldError error = relativeError(d, planar);
+    EXPECT_LE(error.mean, 0.015);
+    EXPECT_LE(error.max, 0.05);
+  }
+}
+
+TEST(DataHeat, RealMeshesMatchExactDistances) {
+  if (!std::filesystem::exists(kMeshes / "real")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  for (const char* name :
+       {"camelhead.off", "fertility.off", "nefertiti.obj", "stanford-bunny.obj", "teapot.obj"}) {
+    SCOPED_TRACE(name);
+    const Surface s = loadSurface(kMeshes / "real" / name);
+    ASSERT_GT(s.triangleCount(), 0u);
+    const HeatSolver solver = buildSolver(s);
+    const std::uint32_t a = firstVertexWithFace(s), b = s.triangles[s.triangleCount() / 2][1];
+    for (const std::vector<std::uint32_t>& sources : {std::vector<std::uint32_t>{a}, std::vector<std::uint32_t>{a, b}}) {
+      const std::vector<double> exact = exactFrom(s, sources);
+      const std::vector<double> d = solver.distances(vertexSources(s, sources));
+      for (std::size_t v = 0; v < d.size(); ++v) ASSERT_EQ(std::isfinite(d[v]), std::isfinite(exact[v])) << v;
+      const FieldError error = relativeError(d, exact);
+      EXPECT_LE(error.mean, 0.015) << sources.size() << " sources";
+      EXPECT_LE(error.max, 0.05) << sources.size() << " sources";
+      for (std::uint32_t v : sources) EXPECT_EQ(d[v], 0.0);
+    }
+  }
+}
+
+TEST(DataHeat, MillionTriangleSphereNeedsNoTuning) {
+  const double radius = 3.0;
+  const Surface s = testing::geodesicSphere(8, radius);  // 1,310,720 triangles
+  const HeatSolver solver = buildSolver(s);
+  EXPECT_GT(solver.stats().timeStep, s.meanEdgeLength * s.meanEdgeLength);  // the extent bound is active
+  const std::vector<double> d = solver.distances(vertexSources(s, {0}));
+  std::vector<double> exact(s.vertexCount());
+  for (std::size_t v = 0; v < s.vertexCount(); ++v) {
+    double c = 0.0;
+    for (int k = 0; k < 3; ++k) c += s.positions[0][k] * s.positions[v][k] / (radius * radius);
+    exact[v] = radius * std::acos(std::clamp(c, -1.0, 1.0));
+  }
+  const FieldError error = relativeError(d, exact);
+  EXPECT_LE(error.mean, 0.02);
+  EXPECT_LE(error.max, 0.02);
+}
+
+TEST(DataHeat, MillionTriangleBunnyNeedsNoTuning) {
+  if (!std::filesystem::exists(kMeshes / "real")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  const Surface original = loadSurface(kMeshes / "real" / "stanford-bunny.obj");
+  ASSERT_GT(original.triangleCount(), 0u);
+  std::vector<Vec3d> positions = original.positions;
+  testing::Triangles triangles = original.triangles;
+  for (int i = 0; i < 2; ++i) testing::subdivide(positions, triangles, [](const Vec3d& p) { return p; });
+  const Surface fine = makeSurface(std::move(positions), std::move(triangles));
+  ASSERT_GE(fine.triangleCount(), 1000000u);
+  const std::uint32_t source = firstVertexWithFace(original);
+  const std::vector<double> exact = exactFrom(original, {source});
+  const HeatSolver solver = buildSolver(fine);
+  std::vector<double> d = solver.distances(vertexSources(fine, {source}));
+  d.resize(original.vertexCount());  // subdivision keeps the original vertices first
+  const FieldError error = relativeError(d, exact);
+  EXPECT_LE(error.mean, 0.02);
+  EXPECT_LE(error.max, 0.02);
+}
+
+}  // namespace
+}  // namespace bake::geodesic
