@@ -240,7 +240,26 @@ Result<std::vector<int>> resolveFields(const GeoTextureParams& params, const glb
   return distinct;
 }
 
-Status checkFieldAttribute(const glb::Attribute& a, const Location& where) {
+// Whether the package stores distances in model units (normalization "none") rather than in [0, 1].
+bool storesModelUnits(const glb::Package& package) {
+  const nlohmann::json& root = package.extensions.value(fmt::kExtension, nlohmann::json::object());
+  return root.is_object() && root.value("normalization", "") == fmt::kNormalizationNone;
+}
+
+// Factor from a stored value to the normalised distance the presets use: 1, or 1 / maxDistance for
+// fields stored in model units.
+float normalisingFactor(const glb::Package& package, const std::string& attribute) {
+  if (!storesModelUnits(package)) return 1;
+  for (const nlohmann::json& field : package.extensions[fmt::kExtension].value("fields", nlohmann::json::array())) {
+    if (field.is_object() && field.value("attribute", "") == attribute) {
+      const double maxDistance = field.value("maxDistance", 0.0);
+      return maxDistance > 0 ? float(1.0 / maxDistance) : 1.0f;
+    }
+  }
+  return 1;
+}
+
+Status checkFieldAttribute(const glb::Attribute& a, const Location& where, bool modelUnits = false) {
   const bool f32 = a.componentType == glb::ComponentType::F32;
   const bool unorm16 = a.componentType == glb::ComponentType::U16 && a.normalized;
   if (a.components != 1 || !(f32 || unorm16)) {
@@ -250,10 +269,10 @@ Status checkFieldAttribute(const glb::Attribute& a, const Location& where) {
   const std::vector<float> values = a.toFloats();
   for (std::size_t i = 0; i < values.size(); ++i) {
     const float v = values[i];
-    const bool inRange = v >= -1e-6f && v <= 1.0f + 1e-6f;
+    const bool inRange = v >= -1e-6f && (modelUnits || v <= 1.0f + 1e-6f);
     if (!inRange && v != fmt::kUnreachableFloat) {
-      return invalidInput(a.name + " vertex " + std::to_string(i) + " holds " + std::to_string(v) +
-                              ": fields hold normalised distances in [0, 1] or " +
+      return invalidInput(a.name + " vertex " + std::to_string(i) + " holds " + std::to_string(v) + ": fields hold " +
+                              (modelUnits ? "distances >= 0" : "normalised distances in [0, 1]") + " or " +
                               std::to_string(fmt::kUnreachableFloat) + " for unreachable vertices", where);
     }
   }
@@ -446,7 +465,7 @@ Status checkGeodesicPackage(const glb::Package& package, const std::string& name
       for (const glb::Attribute& attribute : primitive.attributes) {
         if (!isFieldAttribute(attribute.name)) continue;
         if (!fieldIndexOf(attribute.name)) return invalidInput(attribute.name + " is not named _GEODESIC_<k>", where);
-        BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where));
+        BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where, storesModelUnits(package)));
         (attribute.componentType == glb::ComponentType::U16 ? unorm : floats) = true;
       }
       if (unorm && floats) return invalidInput("geodesic fields mix float and unorm16 encodings", where);
@@ -490,9 +509,11 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
       locations["NORMAL"] = kNormalLocation;
     }
     bool unorm = false;
+    const glb::Package& package = scene.packages[instance.package];
     for (std::size_t slot = 0; slot < fields.size(); ++slot) {
       const glb::Attribute& attribute = *primitive.find(attributeName(fields[slot]));
-      BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where));
+      BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where, storesModelUnits(package)));
+      item.fieldScale[slot] = normalisingFactor(package, attribute.name);
       const bool isUnorm = attribute.componentType == glb::ComponentType::U16;
       if (slot > 0 && isUnorm != unorm) return invalidInput("the fields a material reads mix encodings", where);
       unorm = isUnorm;
@@ -535,6 +556,7 @@ void GeodesicRenderer::setUniforms(const Item& item, const FrameContext& frame) 
   setVec3(program, "uObjectCentre", item.objectCentre);
   setFloat(program, "uObjectRadius", item.objectRadius);
   setFloat(program, "uHeightScale", item.objectRadius * item.worldScale);
+  glProgramUniform4fv(program, glGetUniformLocation(program, "uFieldScale"), 1, item.fieldScale.data());
 
   setFloat(program, "uTime", frame.time);
   setFloat(program, "uSpeed", p.speed);

@@ -93,6 +93,7 @@ class GeodesicRenderer : public TechniqueRenderer {
     Vec3 objectCentre{0, 0, 0};
     float objectRadius = 1;
     float worldScale = 1;  // largest axis scale of `world`
+    std::array<float, 4> fieldScale{1, 1, 1, 1};  // stored value -> normalised distance, per slot
     bool tessellated = false;
     bool translucent = false;
   };

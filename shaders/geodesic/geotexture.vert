@@ -29,6 +29,7 @@ uniform mat4 uViewProj;
 uniform mat3 uNormalMatrix;
 uniform vec3 uObjectCentre;   // bounding-box centre, object space
 uniform float uObjectRadius;  // bounding-sphere radius around it, object space
+uniform vec4 uFieldScale = vec4(1.0);  // stored value -> normalised distance (fields in model units)
 
 out vec3 vWorldPosition;
 out vec3 vNormal;
@@ -46,9 +47,9 @@ bool unreachable(float value) {
 #endif
 }
 
-// The value as a distance, and whether it reaches (1) or not (0).
-vec2 slot(float value) {
-  return unreachable(value) ? vec2(kUnreachableDistance, 0.0) : vec2(clamp(value, 0.0, 1.0), 1.0);
+// The value as a normalised distance, and whether it reaches (1) or not (0).
+vec2 slot(float value, float scale) {
+  return unreachable(value) ? vec2(kUnreachableDistance, 0.0) : vec2(clamp(value * scale, 0.0, 1.0), 1.0);
 }
 
 void main() {
@@ -61,20 +62,20 @@ void main() {
 #endif
   vNoisePosition = (aPosition - uObjectCentre) / max(uObjectRadius, 1e-20);
 
-  vec2 s0 = slot(aField0);
+  vec2 s0 = slot(aField0, uFieldScale[0]);
 #if FIELD_COUNT > 1
-  vec2 s1 = slot(aField1);
+  vec2 s1 = slot(aField1, uFieldScale[1]);
 #else
   vec2 s1 = s0;
 #endif
 #ifdef COMBINE_MIN
   vec2 merged = vec2(min(s0.x, s1.x), max(s0.y, s1.y));
 #if FIELD_COUNT > 2
-  vec2 s2 = slot(aField2);
+  vec2 s2 = slot(aField2, uFieldScale[2]);
   merged = vec2(min(merged.x, s2.x), max(merged.y, s2.y));
 #endif
 #if FIELD_COUNT > 3
-  vec2 s3 = slot(aField3);
+  vec2 s3 = slot(aField3, uFieldScale[3]);
   merged = vec2(min(merged.x, s3.x), max(merged.y, s3.y));
 #endif
   vDistance = vec2(merged.x);

@@ -435,6 +435,23 @@ TEST(GeoTextureRender, Unorm16FieldsLookLikeFloatFields) {
   EXPECT_LT(difference->rmse, 0.01) << describe(*difference);
 }
 
+// normalization "none" stores model units (here radians, up to pi); the presets still see [0, 1].
+TEST(GeoTextureRender, FieldsInModelUnitsAreNormalised) {
+  const nlohmann::json material = geoMaterial("isolines");
+  glb::Package units = spherePackage(material);
+  units.extensions["BAKE_geodesic"]["normalization"] = "none";
+  for (int k = 0; k < 2; ++k) {
+    glb::Attribute& field = units.meshes[0].primitives[0].attributes[std::size_t(2 + k)];
+    std::vector<float> values = field.toFloats();
+    for (float& v : values) v = v < 0 ? v : v * std::numbers::pi_v<float>;
+    field = glb::Attribute::fromFloats(field.name, 1, values);
+  }
+  EXPECT_TRUE(checkGeodesicPackage(units, "units.glb").isOk());
+  auto difference = compareImages(renderPackage(spherePackage(material), "units_ref"), renderPackage(units, "units"), 0.1);
+  ASSERT_TRUE(difference.isOk());
+  EXPECT_LT(difference->rmse, 0.01) << describe(*difference);
+}
+
 TEST(GeoTextureRender, AnimatedThresholdAdvancesWithTime) {
   const glb::Package package = spherePackage(
       geoMaterial("sand-water", {{"thresholds", {0.1}}, {"speed", 0.2}, {"colors", {kRed, kBlue}}}));
