@@ -207,6 +207,29 @@ float largestAxisScale(const Mat4& m) {
   return scale > 0 ? scale : 1;
 }
 
+// Area-weighted vertex normals of a triangle list, summed over every vertex at the same position, so
+// vertices split at seams agree: displacement along them opens no cracks between patches.
+glb::Attribute smoothNormals(const glb::Primitive& primitive) {
+  const std::vector<float> p = primitive.find("POSITION")->toFloats();
+  const std::size_t vertices = p.size() / 3;
+  auto corner = [&](std::size_t i) { return primitive.indices.empty() ? i : std::size_t(primitive.indices[i]); };
+  const std::size_t corners = primitive.indices.empty() ? vertices : primitive.indices.size();
+  auto at = [&](std::size_t v) { return Vec3{p[3 * v], p[3 * v + 1], p[3 * v + 2]}; };
+  std::map<Vec3, Vec3> byPosition;
+  for (std::size_t c = 0; c + 2 < corners; c += 3) {
+    const std::size_t a = corner(c), b = corner(c + 1), d = corner(c + 2);
+    if (a >= vertices || b >= vertices || d >= vertices) continue;
+    const Vec3 n = cross(at(b) - at(a), at(d) - at(a));  // length = twice the area
+    for (std::size_t v : {a, b, d}) byPosition[at(v)] = byPosition[at(v)] + n;
+  }
+  std::vector<float> normals(vertices * 3, 0.0f);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Vec3 n = normalize(byPosition[at(v)]);
+    std::copy(n.begin(), n.end(), normals.begin() + std::ptrdiff_t(3 * v));
+  }
+  return glb::Attribute::fromFloats("NORMAL", 3, normals);
+}
+
 bool isFieldAttribute(const std::string& name) { return name.rfind(fmt::kAttributePrefix, 0) == 0; }
 
 std::optional<int> fieldIndexOf(const std::string& name) {
@@ -503,8 +526,17 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
     variant.defines.push_back(infoOf(params.preset).define);
     variant.defines.push_back("FIELD_COUNT " + std::to_string(fields.size()));
     if (params.combineMin) variant.defines.push_back("COMBINE_MIN");
+    // Patches need triangle lists; strips and fans fall back to bump-only waves.
+    item.tessellated = params.preset == GeoPreset::WaveDisplacement && params.wave.displace && primitive.mode == 4;
+    // Displacement needs one normal per position; a primitive without normals gets smooth ones.
+    std::optional<glb::Primitive> withNormals;
+    if (item.tessellated && !primitive.find("NORMAL")) {
+      withNormals = primitive;
+      withNormals->attributes.push_back(smoothNormals(primitive));
+    }
+    const glb::Primitive& drawn = withNormals ? *withNormals : primitive;
     std::map<std::string, int> locations = {{"POSITION", kPositionLocation}};
-    if (primitive.find("NORMAL")) {
+    if (drawn.find("NORMAL")) {
       variant.defines.push_back("HAS_NORMALS");
       locations["NORMAL"] = kNormalLocation;
     }
@@ -520,8 +552,6 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
       locations[attribute.name] = kFirstFieldLocation + int(slot);
     }
     if (unorm) variant.defines.push_back("FIELD_UNORM16");
-    // Patches need triangle lists; strips and fans fall back to bump-only waves.
-    item.tessellated = params.preset == GeoPreset::WaveDisplacement && params.wave.displace && primitive.mode == 4;
     if (item.tessellated) {
       variant.program.tessControl = "geodesic/geotexture.tesc";
       variant.program.tessEvaluation = "geodesic/geotexture.tese";
@@ -531,7 +561,7 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
     if (item.translucent) variant.defines.push_back("TRANSLUCENT");
 
     BAKE_ASSIGN_OR_RETURN(item.program, shaders.program(variant));
-    BAKE_ASSIGN_OR_RETURN(item.gpu, GpuPrimitive::upload(primitive, locations));
+    BAKE_ASSIGN_OR_RETURN(item.gpu, GpuPrimitive::upload(drawn, locations));
     const Bounds bounds = boundsOf(primitive);
     item.objectCentre = bounds.centre;
     item.objectRadius = bounds.radius;

@@ -491,8 +491,10 @@ struct WaveFrame {
 class GeoTextureWave : public test::GlTest {
  protected:
   // Draws through SceneRenderer, counting the primitives that reach the rasteriser.
-  WaveFrame draw(const nlohmann::json& material) {
-    const fs::path file = writePackage(spherePackage(material), "wave");
+  WaveFrame draw(const nlohmann::json& material, bool withNormals = true) {
+    glb::Package package = spherePackage(material);
+    if (!withNormals) std::erase_if(package.meshes[0].primitives[0].attributes, [](const glb::Attribute& a) { return a.name == "NORMAL"; });
+    const fs::path file = writePackage(package, "wave");
     Diagnostics diagnostics("bakeplay", true);
     auto scene = loadScene({file}, diagnostics, [](const std::string&) { return true; });
     EXPECT_TRUE(scene.isOk()) << scene.status().describe();
@@ -546,6 +548,15 @@ TEST_F(GeoTextureWave, TessellationRefinesOnlyWhereTheWaveIs) {
   // Outside the packet nothing is split: a packet that touches no vertex leaves the count unchanged.
   const WaveFrame away = draw(geoMaterial("wave-displacement", {{"thresholds", {-0.5}}}));
   EXPECT_EQ(away.primitives, flat.primitives);
+}
+
+// Without vertex normals the renderer makes smooth ones, so the displaced surface matches the one
+// displaced along the package's own (here exact) normals.
+TEST_F(GeoTextureWave, PrimitivesWithoutNormalsDisplaceSmoothly) {
+  const WaveFrame own = draw(waveMaterial(0.08, true));
+  const WaveFrame made = draw(waveMaterial(0.08, true), false);
+  EXPECT_EQ(own.primitives, made.primitives);
+  EXPECT_LT(coverageDifference(own.image, made.image), 10);
 }
 
 TEST_F(GeoTextureWave, DisplacementMovesTheSilhouetteBumpsDoNot) {
