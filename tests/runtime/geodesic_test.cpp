@@ -264,27 +264,44 @@ TEST(GeoTextureValidate, ChecksFieldsAndMaterials) {
 
 // `bakeplay validate` renders each package: every preset's shaders compile and draw, a bare package
 // (fields, no material) too, and a broken material fails with its reason.
-TEST(GeoTextureValidate, ValidateCommandAcceptsEveryPreset) {
+// Runs `bakeplay validate` on packages; the status, with the verdict lines on failure.
+Status validatePackages(const std::vector<std::string>& packages, std::string& verdicts) {
   ValidateSettings settings;
   settings.size = 32;
   settings.common.quiet = true;
-  for (const std::string& preset : geoPresetNames()) {
-    settings.packages.push_back(writePackage(spherePackage(geoMaterial(preset)), "validate_" + preset).string());
-  }
-  settings.packages.push_back(writePackage(spherePackage(nullptr), "validate_bare").string());
-  settings.packages.push_back(writePackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "validate_u16").string());
+  settings.packages = packages;
   Diagnostics diagnostics("bakeplay", true);
   std::FILE* out = std::tmpfile();
   const Status status = runValidate(settings, diagnostics, out);
   std::rewind(out);
   char line[4096];
-  std::string text;
-  while (std::fgets(line, sizeof line, out)) text += line;
+  while (std::fgets(line, sizeof line, out)) verdicts += line;
   std::fclose(out);
-  EXPECT_TRUE(status.isOk()) << status.describe() << "\n" << text;
+  return status;
+}
 
-  settings.packages = {writePackage(spherePackage(geoMaterial("isolines", {{"fields", {4}}})), "validate_bad").string()};
-  EXPECT_EQ(runValidate(settings, diagnostics, std::tmpfile()).code(), ExitCode::InvalidInput);
+TEST(GeoTextureValidate, ValidateCommandAcceptsEveryPreset) {
+  std::vector<std::string> packages;
+  for (const std::string& preset : geoPresetNames()) {
+    packages.push_back(writePackage(spherePackage(geoMaterial(preset)), "validate_" + preset).string());
+  }
+  std::string verdicts;
+  const Status status = validatePackages(packages, verdicts);
+  EXPECT_TRUE(status.isOk()) << status.describe() << "\n" << verdicts;
+}
+
+TEST(GeoTextureValidate, ValidateCommandOnBareAndBrokenPackages) {
+  std::string verdicts;
+  const Status good = validatePackages({writePackage(spherePackage(nullptr), "validate_bare").string(),
+                                        writePackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "validate_u16").string()},
+                                       verdicts);
+  EXPECT_TRUE(good.isOk()) << good.describe() << "\n" << verdicts;
+  verdicts.clear();
+  const Status bad = validatePackages({writePackage(spherePackage(geoMaterial("isolines", {{"fields", {4}}})), "validate_bad").string()},
+                                      verdicts);
+  EXPECT_EQ(bad.code(), ExitCode::InvalidInput);
+  EXPECT_NE(verdicts.find("FAIL"), std::string::npos);
+  EXPECT_NE(verdicts.find("no _GEODESIC_4 attribute"), std::string::npos) << verdicts;
 }
 
 // ---------------------------------------------------------------------------------------------
