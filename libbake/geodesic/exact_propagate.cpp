@@ -114,7 +114,33 @@ void Propagator::push(double key, std::uint32_t item) {
 void Propagator::relaxVertex(std::uint32_t v, double distance) {
   if (!(distance < distance_[v])) return;
   distance_[v] = distance;
-  push(distance, v | kVertexBit);
+  // Only vertices that re-emit need their turn in the queue; the edge paths of the others are
+  // relaxed once at the end (closeOverEdges), which keeps the heap small.
+  if (emits_[v]) push(distance, v | kVertexBit);
+}
+
+void Propagator::closeOverEdges() {
+  // Edge paths are valid paths: a Dijkstra over them from every distance found bounds each vertex from
+  // above, so even a vertex no window reached (broken input) gets a finite distance when connected.
+  heap_.clear();
+  for (std::uint32_t v = 0; v < surface_.vertexCount(); ++v)
+    if (distance_[v] < kUnreachable) push(distance_[v], v);
+  const auto later = [](const Entry& a, const Entry& b) { return a.key > b.key; };
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const Entry top = heap_.back();
+    heap_.pop_back();
+    if (top.key > distance_[top.item] || top.key > options_.maxDistance) continue;
+    for (std::uint32_t e : surface_.edgesOfVertex(top.item)) {
+      const auto& ends = surface_.edges[e];
+      const std::uint32_t other = ends[0] == top.item ? ends[1] : ends[0];
+      const double candidate = top.key + surface_.edgeLengths[e];
+      if (candidate < distance_[other]) {
+        distance_[other] = candidate;
+        push(candidate, other);
+      }
+    }
+  }
 }
 
 void Propagator::addSource(const SurfacePoint& point) {
@@ -161,6 +187,7 @@ void Propagator::run() {
       processWindow(top.item, top.key);
     }
   }
+  closeOverEdges();
 }
 
 std::vector<double> Propagator::takeDistances() {
@@ -212,6 +239,8 @@ void Propagator::processWindow(std::uint32_t id, double key) {
     return;
   }
   windows_[id].propagated = true;
+  // Vertex distances may have dropped since it was queued: the endpoint filter may now reject it.
+  if (dominatedByEndpoints(w, length)) return;
   ++stats_.windowsPropagated;
   const Point2 source{w.sx, -w.sy};
   const Point2 first{0.0, 0.0}, second{length, 0.0};
@@ -220,7 +249,7 @@ void Propagator::processWindow(std::uint32_t id, double key) {
     const FaceSide& s = side(g, w.edge);
     const FaceCrossing crossing = crossFace(w, length, s.third, tolerance);
     if (crossing.reachesC)
-      relaxVertex(s.vertex, w.sigma + std::hypot(s.third.x - source.x, s.third.y - source.y));
+      relaxVertex(s.vertex, w.sigma + length2d(s.third.x - source.x, s.third.y - source.y));
     if (crossing.onAC.valid)
       emitChild(w, g, source, first, surface_.edges[w.edge][0], s.third, s.edgeToFirst, crossing.onAC);
     if (crossing.onBC.valid)

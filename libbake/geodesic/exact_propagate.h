@@ -43,6 +43,7 @@ class Propagator {
 
   void push(double key, std::uint32_t item);
   void relaxVertex(std::uint32_t v, double distance);
+  void closeOverEdges();
   void processVertex(std::uint32_t v, double key);
   void emitFromVertex(std::uint32_t v);
   void processWindow(std::uint32_t id, double key);

@@ -70,9 +70,9 @@ FaceCrossing crossFace(const Window& w, double length, Point2 c, double toleranc
 
 Point2 sourceInFrame(Point2 s, Point2 p, Point2 q) {
   const double dx = q.x - p.x, dy = q.y - p.y;
-  const double len = std::hypot(dx, dy);
+  const double len = length2d(dx, dy);
   const double rx = s.x - p.x, ry = s.y - p.y;
-  if (len == 0.0) return {0.0, std::hypot(rx, ry)};
+  if (len == 0.0) return {0.0, length2d(rx, ry)};
   const double ux = dx / len, uy = dy / len;
   return {rx * ux + ry * uy, std::fabs(ux * ry - uy * rx)};
 }
@@ -102,7 +102,7 @@ int crossingPoints(const Window& a, const Window& b, double lo, double hi, std::
     if (!std::isfinite(x)) continue;
     // A few Newton steps on the unsquared difference repair cancellation in the quadratic.
     for (int it = 0; it < 3 && x > lo && x < hi; ++it) {
-      const double ra = std::hypot(x - a.sx, a.sy), rb = std::hypot(x - b.sx, b.sy);
+      const double ra = length2d(x - a.sx, a.sy), rb = length2d(x - b.sx, b.sy);
       const double f = a.sigma + ra - b.sigma - rb;
       const double df = (ra > 0.0 ? (x - a.sx) / ra : 0.0) - (rb > 0.0 ? (x - b.sx) / rb : 0.0);
       if (df == 0.0 || !std::isfinite(f / df)) break;

@@ -14,6 +14,9 @@ namespace bake::geodesic::exact {
 
 inline constexpr std::uint32_t kNone = 0xffffffffu;
 
+// sqrt(x^2 + y^2) without std::hypot's overflow guards (slow, and lengths here are far from overflow).
+inline double length2d(double x, double y) { return std::sqrt(x * x + y * y); }
+
 struct Window {
   double b0 = 0.0, b1 = 0.0;  // interval on the edge
   double sx = 0.0, sy = 0.0;  // pseudo-source in the edge frame, sy >= 0 towards fromFace
@@ -24,7 +27,7 @@ struct Window {
   bool alive = true;
   bool propagated = false;
 
-  double distanceAt(double x) const { return sigma + std::hypot(x - sx, sy); }
+  double distanceAt(double x) const { return sigma + length2d(x - sx, sy); }
   double minDistance() const {
     const double x = std::fmin(std::fmax(sx, b0), b1);
     return distanceAt(x);

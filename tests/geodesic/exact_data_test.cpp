@@ -150,7 +150,7 @@ TEST_P(DataGeodesicExactReal, AgreesWithCgal) {
       const auto single = exactDistances(s, std::vector<SurfacePoint>{points.front()});
       for (std::uint32_t v = 0; v < s.vertexCount(); ++v) {
         ASSERT_FALSE(std::isnan(ours[v]));
-        EXPECT_LE(ours[v], single[v]);
+        EXPECT_LE(ours[v], single[v] + 1e-9 * s.diagonal);
         if (upper[v] == kUnreachable) {
           EXPECT_EQ(single[v], kUnreachable) << v;
           continue;
