@@ -11,6 +11,7 @@
 #include <bake_formats/geodesic.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -56,19 +57,23 @@ class Reader {
  public:
   Reader(const nlohmann::json& body, Location where) : body_(body), where_(std::move(where)) {}
 
-  Status number(const char* key, float& out, float lo, float hi) const { return numberIn(body_, key, key, out, lo, hi); }
-  Status numberIn(const nlohmann::json& object, const char* key, const std::string& path, float& out, float lo,
-                  float hi) const {
+  Status number(const char* key, float& out, float lo, float hi) const {
+    return numberIn(body_, key, key, out, lo, hi);
+  }
+  Status numberIn(const nlohmann::json& object, const char* key, const std::string& path, float& out,
+                  float lo, float hi) const {
     if (!object.contains(key)) return {};
     const nlohmann::json& value = object[key];
-    if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < lo || value.get<double>() > hi) {
+    if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < lo ||
+        value.get<double>() > hi) {
       return error(path + " must be a number in [" + trimmed(lo) + ", " + trimmed(hi) + "]");
     }
     out = value.get<float>();
     return {};
   }
   Status colour(const nlohmann::json& value, const std::string& path, Rgb& out) const {
-    if (!value.is_array() || (value.size() != 3 && value.size() != 4)) return error(path + " must be [r, g, b] (linear)");
+    if (!value.is_array() || (value.size() != 3 && value.size() != 4))
+      return error(path + " must be [r, g, b] (linear)");
     for (std::size_t c = 0; c < 3; ++c) {
       if (!value[c].is_number() || value[c].get<double>() < 0 || value[c].get<double>() > 1) {
         return error(path + " components must be numbers in [0, 1]");
@@ -80,10 +85,12 @@ class Reader {
   Status numbers(const char* key, std::array<float, 4>& out, float lo, float hi) const {
     if (!body_.contains(key)) return {};
     const nlohmann::json& list = body_[key];
-    if (!list.is_array() || list.empty() || list.size() > 4) return error(std::string(key) + " must be a list of 1 to 4 numbers");
+    if (!list.is_array() || list.empty() || list.size() > 4)
+      return error(std::string(key) + " must be a list of 1 to 4 numbers");
     for (std::size_t i = 0; i < list.size(); ++i) {
       if (!list[i].is_number() || list[i].get<double>() < lo || list[i].get<double>() > hi) {
-        return error(std::string(key) + "[" + std::to_string(i) + "] must be a number in [" + trimmed(lo) + ", " + trimmed(hi) + "]");
+        return error(std::string(key) + "[" + std::to_string(i) + "] must be a number in [" + trimmed(lo) +
+                     ", " + trimmed(hi) + "]");
       }
       out[i] = list[i].get<float>();
     }
@@ -95,7 +102,8 @@ class Reader {
     return body_.contains(key) && body_[key].is_object() ? body_[key] : empty;
   }
   Status requireObject(const char* key) const {
-    return body_.contains(key) && !body_[key].is_object() ? error(std::string(key) + " must be an object") : Status();
+    return body_.contains(key) && !body_[key].is_object() ? error(std::string(key) + " must be an object")
+                                                          : Status();
   }
   Status error(const std::string& message) const {
     return invalidInput("BAKE_geodesic material: " + message, where_);
@@ -152,7 +160,8 @@ Status readColours(const Reader& in, GeoTextureParams& params) {
     BAKE_RETURN_IF_ERROR(in.colour(body["unreachableColor"], "unreachableColor", params.unreachableColour));
   }
   const nlohmann::json& isolines = in.object("isolines");
-  if (isolines.contains("color")) BAKE_RETURN_IF_ERROR(in.colour(isolines["color"], "isolines.color", params.isolineColour));
+  if (isolines.contains("color"))
+    BAKE_RETURN_IF_ERROR(in.colour(isolines["color"], "isolines.color", params.isolineColour));
   return {};
 }
 
@@ -212,7 +221,9 @@ float largestAxisScale(const Mat4& m) {
 glb::Attribute smoothNormals(const glb::Primitive& primitive) {
   const std::vector<float> p = primitive.find("POSITION")->toFloats();
   const std::size_t vertices = p.size() / 3;
-  auto corner = [&](std::size_t i) { return primitive.indices.empty() ? i : std::size_t(primitive.indices[i]); };
+  auto corner = [&](std::size_t i) {
+    return primitive.indices.empty() ? i : std::size_t(primitive.indices[i]);
+  };
   const std::size_t corners = primitive.indices.empty() ? vertices : primitive.indices.size();
   auto at = [&](std::size_t v) { return Vec3{p[3 * v], p[3 * v + 1], p[3 * v + 2]}; };
   std::map<Vec3, Vec3> byPosition;
@@ -235,7 +246,9 @@ bool isFieldAttribute(const std::string& name) { return name.rfind(fmt::kAttribu
 std::optional<int> fieldIndexOf(const std::string& name) {
   if (!isFieldAttribute(name)) return std::nullopt;
   const std::string digits = name.substr(std::string(fmt::kAttributePrefix).size());
-  if (digits.empty() || digits.size() > 3 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return std::nullopt;
+  const auto isDigit = [](unsigned char c) { return std::isdigit(c) != 0; };
+  if (digits.empty() || digits.size() > 3 || !std::all_of(digits.begin(), digits.end(), isDigit))
+    return std::nullopt;
   return std::stoi(digits);
 }
 
@@ -246,13 +259,15 @@ Result<std::vector<int>> resolveFields(const GeoTextureParams& params, const glb
   std::vector<int> fields = params.fields;
   if (!params.fieldsGiven) {
     const std::vector<int> present = geodesicFieldsOf(primitive);
-    std::erase_if(fields, [&](int f) { return std::find(present.begin(), present.end(), f) == present.end(); });
+    std::erase_if(fields,
+                  [&](int f) { return std::find(present.begin(), present.end(), f) == present.end(); });
     if (fields.empty()) fields.push_back(params.fields.front());
   }
   for (int field : fields) {
     if (!primitive.find(attributeName(field))) {
-      return invalidInput("the material reads geodesic field " + std::to_string(field) + " but the primitive has no " +
-                              attributeName(field) + " attribute", where);
+      return invalidInput("the material reads geodesic field " + std::to_string(field) +
+                              " but the primitive has no " + attributeName(field) + " attribute",
+                          where);
     }
   }
   // Slots hold distinct attributes (an attribute binds to one location).
@@ -273,7 +288,8 @@ bool storesModelUnits(const glb::Package& package) {
 // fields stored in model units.
 float normalisingFactor(const glb::Package& package, const std::string& attribute) {
   if (!storesModelUnits(package)) return 1;
-  for (const nlohmann::json& field : package.extensions[fmt::kExtension].value("fields", nlohmann::json::array())) {
+  for (const nlohmann::json& field :
+       package.extensions[fmt::kExtension].value("fields", nlohmann::json::array())) {
     if (field.is_object() && field.value("attribute", "") == attribute) {
       const double maxDistance = field.value("maxDistance", 0.0);
       return maxDistance > 0 ? float(1.0 / maxDistance) : 1.0f;
@@ -294,9 +310,11 @@ Status checkFieldAttribute(const glb::Attribute& a, const Location& where, bool 
     const float v = values[i];
     const bool inRange = v >= -1e-6f && (modelUnits || v <= 1.0f + 1e-6f);
     if (!inRange && v != fmt::kUnreachableFloat) {
-      return invalidInput(a.name + " vertex " + std::to_string(i) + " holds " + std::to_string(v) + ": fields hold " +
+      return invalidInput(a.name + " vertex " + std::to_string(i) + " holds " + std::to_string(v) +
+                              ": fields hold " +
                               (modelUnits ? "distances >= 0" : "normalised distances in [0, 1]") + " or " +
-                              std::to_string(fmt::kUnreachableFloat) + " for unreachable vertices", where);
+                              std::to_string(fmt::kUnreachableFloat) + " for unreachable vertices",
+                          where);
     }
   }
   return {};
@@ -323,12 +341,15 @@ Status checkRootExtension(const glb::Package& package, const std::string& name) 
       const Location here{name, "mesh " + std::to_string(m) + " primitive " + std::to_string(p)};
       for (const nlohmann::json& field : fields) {
         const std::string attribute = field.is_object() ? field.value("attribute", "") : "";
-        if (!fieldIndexOf(attribute)) return invalidInput("fields entry without a valid _GEODESIC_k attribute", where);
+        if (!fieldIndexOf(attribute))
+          return invalidInput("fields entry without a valid _GEODESIC_k attribute", where);
         const glb::Attribute* a = primitive.find(attribute);
-        if (!a) return invalidInput("field attribute " + attribute + " listed in BAKE_geodesic is missing", here);
+        if (!a)
+          return invalidInput("field attribute " + attribute + " listed in BAKE_geodesic is missing", here);
         const bool isUnorm = a->componentType == glb::ComponentType::U16;
         if (!encoding.empty() && isUnorm != (encoding == fmt::kEncodingUnorm16)) {
-          return invalidInput(attribute + " is not stored as the declared encoding \"" + encoding + "\"", here);
+          return invalidInput(attribute + " is not stored as the declared encoding \"" + encoding + "\"",
+                              here);
         }
       }
     }
@@ -384,7 +405,8 @@ GeoTextureParams geoPresetDefaults(GeoPreset preset) {
       p.thresholds = {0.1f, 0.25f, 0.4f, 0.4f};
       p.widths = {0.01f, 0.03f, 0.01f, 0.01f};
       p.noiseFrequency = 25, p.noiseAmplitude = 0.04f;
-      p.colours = {rgb(0, 0, 0), rgb(0.42f, 0.15f, 0.04f), rgb(0.55f, 0.56f, 0.58f), rgb(0.06f, 0.16f, 0.55f)};
+      p.colours = {rgb(0, 0, 0), rgb(0.42f, 0.15f, 0.04f), rgb(0.55f, 0.56f, 0.58f),
+                   rgb(0.06f, 0.16f, 0.55f)};
       break;
     case GeoPreset::WaterLava:
       p.fields = {0, 1};
@@ -423,14 +445,18 @@ Result<GeoTextureParams> parseGeoTexture(const nlohmann::json& extension, const 
   BAKE_RETURN_IF_ERROR(in.numbers("widths", params.widths, 0, 10));
   BAKE_RETURN_IF_ERROR(in.number("speed", params.speed, -100, 100));
   BAKE_RETURN_IF_ERROR(in.requireObject("frontNoise"));
-  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("frontNoise"), "frequency", "frontNoise.frequency", params.noiseFrequency, 0, 1e4f));
-  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("frontNoise"), "amplitude", "frontNoise.amplitude", params.noiseAmplitude, 0, 10));
+  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("frontNoise"), "frequency", "frontNoise.frequency",
+                                   params.noiseFrequency, 0, 1e4f));
+  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("frontNoise"), "amplitude", "frontNoise.amplitude",
+                                   params.noiseAmplitude, 0, 10));
   BAKE_RETURN_IF_ERROR(in.number("patternScale", params.patternScale, 1e-3f, 1e3f));
   BAKE_RETURN_IF_ERROR(in.number("bumpScale", params.bumpScale, 0, 100));
   BAKE_RETURN_IF_ERROR(readColours(in, params));
   BAKE_RETURN_IF_ERROR(in.requireObject("isolines"));
-  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("isolines"), "spacing", "isolines.spacing", params.isolineSpacing, 1e-3f, 1));
-  BAKE_RETURN_IF_ERROR(in.numberIn(in.object("isolines"), "width", "isolines.width", params.isolineWidth, 0, 64));
+  BAKE_RETURN_IF_ERROR(
+      in.numberIn(in.object("isolines"), "spacing", "isolines.spacing", params.isolineSpacing, 1e-3f, 1));
+  BAKE_RETURN_IF_ERROR(
+      in.numberIn(in.object("isolines"), "width", "isolines.width", params.isolineWidth, 0, 64));
   BAKE_RETURN_IF_ERROR(in.number("opacity", params.opacity, 0, 1));
   BAKE_RETURN_IF_ERROR(readWave(in, params.wave));
   return params;
@@ -461,7 +487,8 @@ Status attachGeoTextures(Scene& scene, const std::string& preset) {
     if (geodesicFieldsOf(primitive).empty()) continue;
     const std::string technique = scene.technique(instance);
     if (technique == fmt::kExtension) {
-      if (!preset.empty()) package.materials[std::size_t(primitive.material)]["extensions"][fmt::kExtension]["texture"] = preset;
+      if (!preset.empty())
+        package.materials[std::size_t(primitive.material)]["extensions"][fmt::kExtension]["texture"] = preset;
       continue;
     }
     if (!technique.empty()) continue;
@@ -470,8 +497,10 @@ Status attachGeoTextures(Scene& scene, const std::string& preset) {
       primitive.material = found->second;
       continue;
     }
-    nlohmann::json material = scene.material(instance).is_object() ? scene.material(instance) : nlohmann::json::object();
-    material["extensions"][fmt::kExtension] = {{"version", fmt::kVersion}, {"texture", preset.empty() ? "isolines" : preset}};
+    nlohmann::json material =
+        scene.material(instance).is_object() ? scene.material(instance) : nlohmann::json::object();
+    material["extensions"][fmt::kExtension] = {{"version", fmt::kVersion},
+                                               {"texture", preset.empty() ? "isolines" : preset}};
     package.materials.push_back(std::move(material));
     primitive.material = int(package.materials.size()) - 1;
     added[key] = primitive.material;
@@ -487,7 +516,8 @@ Status checkGeodesicPackage(const glb::Package& package, const std::string& name
       bool unorm = false, floats = false;
       for (const glb::Attribute& attribute : primitive.attributes) {
         if (!isFieldAttribute(attribute.name)) continue;
-        if (!fieldIndexOf(attribute.name)) return invalidInput(attribute.name + " is not named _GEODESIC_<k>", where);
+        if (!fieldIndexOf(attribute.name))
+          return invalidInput(attribute.name + " is not named _GEODESIC_<k>", where);
         BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where, storesModelUnits(package)));
         (attribute.componentType == glb::ComponentType::U16 ? unorm : floats) = true;
       }
@@ -513,8 +543,9 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
   for (std::size_t index : instances) {
     const Instance& instance = scene.instances[index];
     const glb::Primitive& primitive = scene.primitive(instance);
-    const Location where{scene.files.empty() ? "" : scene.files[instance.package],
-                         "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(instance.primitive)};
+    const Location where{
+        scene.files.empty() ? "" : scene.files[instance.package],
+        "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(instance.primitive)};
     const nlohmann::json& material = scene.material(instance);
     Item item;
     BAKE_ASSIGN_OR_RETURN(item.params, parseGeoTexture(material["extensions"][fmt::kExtension], where));
@@ -527,7 +558,8 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
     variant.defines.push_back("FIELD_COUNT " + std::to_string(fields.size()));
     if (params.combineMin) variant.defines.push_back("COMBINE_MIN");
     // Patches need triangle lists; strips and fans fall back to bump-only waves.
-    item.tessellated = params.preset == GeoPreset::WaveDisplacement && params.wave.displace && primitive.mode == 4;
+    item.tessellated =
+        params.preset == GeoPreset::WaveDisplacement && params.wave.displace && primitive.mode == 4;
     // Displacement needs one normal per position; a primitive without normals gets smooth ones.
     std::optional<glb::Primitive> withNormals;
     if (item.tessellated && !primitive.find("NORMAL")) {
@@ -547,7 +579,8 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
       BAKE_RETURN_IF_ERROR(checkFieldAttribute(attribute, where, storesModelUnits(package)));
       item.fieldScale[slot] = normalisingFactor(package, attribute.name);
       const bool isUnorm = attribute.componentType == glb::ComponentType::U16;
-      if (slot > 0 && isUnorm != unorm) return invalidInput("the fields a material reads mix encodings", where);
+      if (slot > 0 && isUnorm != unorm)
+        return invalidInput("the fields a material reads mix encodings", where);
       unorm = isUnorm;
       locations[attribute.name] = kFirstFieldLocation + int(slot);
     }
@@ -577,9 +610,11 @@ void GeodesicRenderer::setUniforms(const Item& item, const FrameContext& frame) 
   const GeoTextureParams& p = item.params;
   const Mat4 viewProjection = multiply(frame.projection, frame.view);
   glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, item.world.data());
-  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uViewProj"), 1, GL_FALSE, viewProjection.data());
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uViewProj"), 1, GL_FALSE,
+                            viewProjection.data());
   const Mat3 normal = normalMatrix(item.world);
-  glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, normal.data());
+  glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE,
+                            normal.data());
   setVec3(program, "uLightDir", frame.light.direction);
   setVec3(program, "uLightColour", frame.light.colour);
   setVec3(program, "uCameraPos", frame.camera.eye);
@@ -592,7 +627,8 @@ void GeodesicRenderer::setUniforms(const Item& item, const FrameContext& frame) 
   setFloat(program, "uSpeed", p.speed);
   glProgramUniform4fv(program, glGetUniformLocation(program, "uThresholds"), 1, p.thresholds.data());
   glProgramUniform4fv(program, glGetUniformLocation(program, "uWidths"), 1, p.widths.data());
-  glProgramUniform2f(program, glGetUniformLocation(program, "uFrontNoise"), p.noiseFrequency, p.noiseAmplitude);
+  glProgramUniform2f(program, glGetUniformLocation(program, "uFrontNoise"), p.noiseFrequency,
+                     p.noiseAmplitude);
   setFloat(program, "uPatternScale", p.patternScale);
   setFloat(program, "uBumpScale", p.bumpScale);
   glProgramUniform3fv(program, glGetUniformLocation(program, "uColours"), 4, p.colours[0].data());
@@ -602,10 +638,12 @@ void GeodesicRenderer::setUniforms(const Item& item, const FrameContext& frame) 
   setVec3(program, "uIsolineColour", p.isolineColour);
   setFloat(program, "uOpacity", p.opacity);
 
-  glProgramUniform4f(program, glGetUniformLocation(program, "uWave"), p.wave.amplitude, p.wave.wavelength, p.wave.reach, 0);
+  glProgramUniform4f(program, glGetUniformLocation(program, "uWave"), p.wave.amplitude, p.wave.wavelength,
+                     p.wave.reach, 0);
   setFloat(program, "uWaveFront0", p.thresholds[0] + p.speed * frame.time);
   setFloat(program, "uWaveFront1", p.thresholds[1] + p.speed * frame.time);
-  glProgramUniform2f(program, glGetUniformLocation(program, "uViewport"), float(frame.width), float(frame.height));
+  glProgramUniform2f(program, glGetUniformLocation(program, "uViewport"), float(frame.width),
+                     float(frame.height));
   setFloat(program, "uPixelsPerEdge", p.wave.pixelsPerEdge);
   setFloat(program, "uMaxLevel", p.wave.maxLevel);
 }

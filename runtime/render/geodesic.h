@@ -22,7 +22,15 @@
 
 namespace bake::play {
 
-enum class GeoPreset { Isolines, SandWater, MossGranite, PaintMetalRust, WaterLava, OpacityFront, WaveDisplacement };
+enum class GeoPreset {
+  Isolines,
+  SandWater,
+  MossGranite,
+  PaintMetalRust,
+  WaterLava,
+  OpacityFront,
+  WaveDisplacement
+};
 
 const char* geoPresetName(GeoPreset preset);  // "sand-water", ...
 std::optional<GeoPreset> geoPresetFromName(const std::string& name);
@@ -39,12 +47,12 @@ struct GeoTextureParams {
   bool combineMin = false;     // merge the fields into one min-distance field (else slots 0 and 1)
   std::array<float, 4> thresholds{0.3f, 0.3f, 0.3f, 0.3f};  // fronts, from the source outward
   std::array<float, 4> widths{0.02f, 0.02f, 0.02f, 0.02f};  // transition width of each front
-  float speed = 0;                   // threshold advance per second
-  float noiseFrequency = 8;          // front noise: cycles per object radius
-  float noiseAmplitude = 0;          // front noise: normalised distance
-  float patternScale = 1;            // multiplies the frequency of the materials' own patterns
-  float bumpScale = 1;               // multiplies the presets' bump heights
-  std::array<Rgb, 4> colours{};      // linear RGB of the materials, from the source outward
+  float speed = 0;                                          // threshold advance per second
+  float noiseFrequency = 8;                                 // front noise: cycles per object radius
+  float noiseAmplitude = 0;                                 // front noise: normalised distance
+  float patternScale = 1;        // multiplies the frequency of the materials' own patterns
+  float bumpScale = 1;           // multiplies the presets' bump heights
+  std::array<Rgb, 4> colours{};  // linear RGB of the materials, from the source outward
   Rgb unreachableColour{1.0f, 0.0f, 1.0f};
   float isolineSpacing = 0.05f, isolineWidth = 1.5f;  // normalised distance; pixels
   Rgb isolineColour{0.02f, 0.02f, 0.02f};
@@ -80,7 +88,8 @@ Status checkGeodesicPackage(const glb::Package& package, const std::string& name
 
 class GeodesicRenderer : public TechniqueRenderer {
  public:
-  Status prepare(const Scene& scene, const std::vector<std::size_t>& instances, gl::ShaderLibrary& shaders) override;
+  Status prepare(const Scene& scene, const std::vector<std::size_t>& instances,
+                 gl::ShaderLibrary& shaders) override;
   void draw(const FrameContext& frame) override;
   std::size_t gpuBytes() const override;
 
@@ -92,7 +101,7 @@ class GeodesicRenderer : public TechniqueRenderer {
     GeoTextureParams params;
     Vec3 objectCentre{0, 0, 0};
     float objectRadius = 1;
-    float worldScale = 1;  // largest axis scale of `world`
+    float worldScale = 1;                         // largest axis scale of `world`
     std::array<float, 4> fieldScale{1, 1, 1, 1};  // stored value -> normalised distance, per slot
     bool tessellated = false;
     bool translucent = false;

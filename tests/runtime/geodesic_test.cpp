@@ -72,10 +72,19 @@ enum class Encoding { Float, Unorm16 };
 glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = Encoding::Float) {
   std::vector<float> positions, normals, f0, f1;
   std::vector<std::uint32_t> indices;
-  addSphere({0, 0, 0}, 1.0f, [](const Vec3& n) { return std::array{polarDistance(n, {0, 0, 1}), polarDistance(n, kSecondSource)}; },
-            positions, normals, f0, f1, indices);
+  addSphere(
+      {0, 0, 0}, 1.0f,
+      [](const Vec3& n) {
+        return std::array{polarDistance(n, {0, 0, 1}), polarDistance(n, kSecondSource)};
+      },
+      positions, normals, f0, f1, indices);
   const float flag = encoding == Encoding::Float ? format::geodesic::kUnreachableFloat : 1.0f;
-  addSphere(kLoneCentre, kLoneRadius, [&](const Vec3&) { return std::array{flag, flag}; }, positions, normals, f0, f1, indices);
+  addSphere(
+      kLoneCentre, kLoneRadius,
+      [&](const Vec3&) {
+        return std::array{flag, flag};
+      },
+      positions, normals, f0, f1, indices);
   glb::Primitive primitive;
   primitive.attributes.push_back(glb::Attribute::fromFloats("POSITION", 3, positions));
   primitive.attributes.push_back(glb::Attribute::fromFloats("NORMAL", 3, normals));
@@ -89,7 +98,8 @@ glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = E
   for (int k = 0; k < 2; ++k) {
     const std::string name = "_GEODESIC_" + std::to_string(k);
     const std::vector<float>& values = k == 0 ? f0 : f1;
-    primitive.attributes.push_back(unorm ? glb::Attribute::fromUnorm16(name, 1, values) : glb::Attribute::fromFloats(name, 1, values));
+    primitive.attributes.push_back(unorm ? glb::Attribute::fromUnorm16(name, 1, values)
+                                         : glb::Attribute::fromFloats(name, 1, values));
   }
   primitive.indices = indices;
   glb::Package package;
@@ -102,9 +112,12 @@ glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = E
   node.mesh = 0;
   package.nodes.push_back(node);
   package.extensions["BAKE_geodesic"] = {
-      {"version", 1}, {"encoding", unorm ? "unorm16" : "float"}, {"unreachableValue", unorm ? 65535.0 : -1.0},
-      {"fields", {{{"attribute", "_GEODESIC_0"}, {"maxDistance", std::numbers::pi}},
-                  {{"attribute", "_GEODESIC_1"}, {"maxDistance", std::numbers::pi}}}}};
+      {"version", 1},
+      {"encoding", unorm ? "unorm16" : "float"},
+      {"unreachableValue", unorm ? 65535.0 : -1.0},
+      {"fields",
+       {{{"attribute", "_GEODESIC_0"}, {"maxDistance", std::numbers::pi}},
+        {{"attribute", "_GEODESIC_1"}, {"maxDistance", std::numbers::pi}}}}};
   return package;
 }
 
@@ -149,7 +162,8 @@ Image renderPackage(const glb::Package& package, const std::string& name, const 
 // silhouette (grazing pixels are left out: there the triangulated sphere differs from the exact one).
 std::optional<Vec3> unitSphereHit(int x, int y) {
   const float t = std::tan(kFov / 2);
-  const Vec3 direction = normalize({((float(x) + 0.5f) / kSize * 2 - 1) * t, (1 - (float(y) + 0.5f) / kSize * 2) * t, -1});
+  const Vec3 direction =
+      normalize({((float(x) + 0.5f) / kSize * 2 - 1) * t, (1 - (float(y) + 0.5f) / kSize * 2) * t, -1});
   const Vec3 origin{0, 0, kEye};
   const float b = dot(origin, direction), c = dot(origin, origin) - 1;
   const float disc = b * b - c;
@@ -160,7 +174,9 @@ std::optional<Vec3> unitSphereHit(int x, int y) {
 }
 
 using Rgb8 = std::array<float, 3>;
-Rgb8 pixel(const Image& image, int x, int y) { return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)}; }
+Rgb8 pixel(const Image& image, int x, int y) {
+  return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)};
+}
 
 // Share of the pixels whose exact distances satisfy `where` that also satisfy `looks`; the count is
 // returned so tests can insist the class is not empty.
@@ -211,7 +227,8 @@ TEST(GeoTextureParams, PresetsHaveNamesAndDefaults) {
   }
   auto water = parseGeoTexture({{"version", 1}, {"texture", "water-lava"}}, {});
   EXPECT_EQ(water->fields, (std::vector<int>{0, 1}));
-  auto set = parseGeoTexture(geoMaterial("sand-water", {{"thresholds", {0.4}}, {"speed", 0.1}, {"colors", {kRed}}}), {});
+  auto set = parseGeoTexture(
+      geoMaterial("sand-water", {{"thresholds", {0.4}}, {"speed", 0.1}, {"colors", {kRed}}}), {});
   ASSERT_TRUE(set.isOk());
   EXPECT_FLOAT_EQ(set->thresholds[3], 0.4f) << "a short list repeats its last value";
   EXPECT_FLOAT_EQ(set->speed, 0.1f);
@@ -228,13 +245,16 @@ TEST(GeoTextureParams, BadParametersAreNamed) {
   EXPECT_FALSE(parseGeoTexture(geoMaterial("isolines", {{"colors", {{2, 0, 0}}}}), where).isOk());
   EXPECT_FALSE(parseGeoTexture(geoMaterial("isolines", {{"fields", {0, 1, 2}}}), where).isOk())
       << "three separate fields";
-  EXPECT_TRUE(parseGeoTexture(geoMaterial("isolines", {{"fields", {0, 1, 2}}, {"combine", "min"}}), where).isOk());
-  EXPECT_FALSE(parseGeoTexture(geoMaterial("wave-displacement", {{"wave", {{"displace", 1}}}}), where).isOk());
+  EXPECT_TRUE(
+      parseGeoTexture(geoMaterial("isolines", {{"fields", {0, 1, 2}}, {"combine", "min"}}), where).isOk());
+  EXPECT_FALSE(
+      parseGeoTexture(geoMaterial("wave-displacement", {{"wave", {{"displace", 1}}}}), where).isOk());
 }
 
 TEST(GeoTextureValidate, ChecksFieldsAndMaterials) {
   EXPECT_TRUE(checkGeodesicPackage(spherePackage(geoMaterial("isolines")), "s.glb").isOk());
-  EXPECT_TRUE(checkGeodesicPackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "s.glb").isOk());
+  EXPECT_TRUE(
+      checkGeodesicPackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "s.glb").isOk());
 
   glb::Package outOfRange = spherePackage(geoMaterial("isolines"));
   glb::Attribute& field = outOfRange.meshes[0].primitives[0].attributes[2];
@@ -243,7 +263,8 @@ TEST(GeoTextureValidate, ChecksFieldsAndMaterials) {
   field = glb::Attribute::fromFloats("_GEODESIC_0", 1, values);
   const Status range = checkGeodesicPackage(outOfRange, "s.glb");
   EXPECT_NE(range.message().find("_GEODESIC_0 vertex 7 holds 1.5"), std::string::npos) << range.describe();
-  EXPECT_EQ(checkPackageStructure(outOfRange, "s.glb").code(), ExitCode::InvalidInput) << "validate runs the check";
+  EXPECT_EQ(checkPackageStructure(outOfRange, "s.glb").code(), ExitCode::InvalidInput)
+      << "validate runs the check";
 
   glb::Package vector = spherePackage(geoMaterial("isolines"));
   vector.meshes[0].primitives[0].attributes[3] =
@@ -251,7 +272,8 @@ TEST(GeoTextureValidate, ChecksFieldsAndMaterials) {
   EXPECT_NE(checkGeodesicPackage(vector, "s.glb").message().find("SCALAR"), std::string::npos);
 
   EXPECT_FALSE(checkGeodesicPackage(spherePackage(geoMaterial("plaid")), "s.glb").isOk());
-  const Status missing = checkGeodesicPackage(spherePackage(geoMaterial("isolines", {{"fields", {3}}})), "s.glb");
+  const Status missing =
+      checkGeodesicPackage(spherePackage(geoMaterial("isolines", {{"fields", {3}}})), "s.glb");
   EXPECT_NE(missing.message().find("no _GEODESIC_3"), std::string::npos) << missing.describe();
 
   glb::Package listed = spherePackage(geoMaterial("isolines"));
@@ -292,13 +314,15 @@ TEST(GeoTextureValidate, ValidateCommandAcceptsEveryPreset) {
 
 TEST(GeoTextureValidate, ValidateCommandOnBareAndBrokenPackages) {
   std::string verdicts;
-  const Status good = validatePackages({writePackage(spherePackage(nullptr), "validate_bare").string(),
-                                        writePackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "validate_u16").string()},
-                                       verdicts);
+  const Status good = validatePackages(
+      {writePackage(spherePackage(nullptr), "validate_bare").string(),
+       writePackage(spherePackage(geoMaterial("isolines"), Encoding::Unorm16), "validate_u16").string()},
+      verdicts);
   EXPECT_TRUE(good.isOk()) << good.describe() << "\n" << verdicts;
   verdicts.clear();
-  const Status bad = validatePackages({writePackage(spherePackage(geoMaterial("isolines", {{"fields", {4}}})), "validate_bad").string()},
-                                      verdicts);
+  const Status bad = validatePackages(
+      {writePackage(spherePackage(geoMaterial("isolines", {{"fields", {4}}})), "validate_bad").string()},
+      verdicts);
   EXPECT_EQ(bad.code(), ExitCode::InvalidInput);
   EXPECT_NE(verdicts.find("FAIL"), std::string::npos);
   EXPECT_NE(verdicts.find("no _GEODESIC_4 attribute"), std::string::npos) << verdicts;
@@ -308,10 +332,13 @@ TEST(GeoTextureValidate, ValidateCommandOnBareAndBrokenPackages) {
 // Presets, rendered
 
 TEST(GeoTextureRender, IsolinesFollowTheField) {
-  const Image image = renderPackage(spherePackage(geoMaterial("isolines", {{"isolines", {{"spacing", 0.1}, {"width", 1.5}}}})),
-                                    "isolines");
+  const Image image = renderPackage(
+      spherePackage(geoMaterial("isolines", {{"isolines", {{"spacing", 0.1}, {"width", 1.5}}}})), "isolines");
   // The colour map: red at the source, towards blue far away.
-  EXPECT_GT(share(image, [](float d, float) { return d < 0.03f; }, reddish).fraction, 0.9);
+  EXPECT_GT(share(
+                image, [](float d, float) { return d < 0.03f; }, reddish)
+                .fraction,
+            0.9);
   // Towards yellow and green further out: the green-to-red ratio grows with the distance.
   const auto greenOverRed = [&](float lo, float hi) {
     double sum = 0;
@@ -345,14 +372,18 @@ TEST(GeoTextureRender, IsolinesFollowTheField) {
   }
   ASSERT_GT(nOn, 30);
   ASSERT_GT(nBetween, 30);
-  EXPECT_LT(onLine / nOn, 0.5 * between / nBetween) << "isolines are dark where d is a multiple of the spacing";
+  EXPECT_LT(onLine / nOn, 0.5 * between / nBetween)
+      << "isolines are dark where d is a multiple of the spacing";
 }
 
 TEST(GeoTextureRender, SandInsideTheFrontWaterBeyond) {
   const Image image = renderPackage(
-      spherePackage(geoMaterial("sand-water", {{"thresholds", {0.25}}, {"colors", {kRed, kBlue}}})), "sand_water");
-  const Share sand = share(image, [](float d, float) { return d < 0.2f; }, reddish);
-  const Share water = share(image, [](float d, float) { return d > 0.3f; }, bluish);
+      spherePackage(geoMaterial("sand-water", {{"thresholds", {0.25}}, {"colors", {kRed, kBlue}}})),
+      "sand_water");
+  const Share sand = share(
+      image, [](float d, float) { return d < 0.2f; }, reddish);
+  const Share water = share(
+      image, [](float d, float) { return d > 0.3f; }, bluish);
   EXPECT_GT(sand.count, 100);
   EXPECT_GT(water.count, 100);
   EXPECT_GT(sand.fraction, 0.95);
@@ -361,24 +392,44 @@ TEST(GeoTextureRender, SandInsideTheFrontWaterBeyond) {
 
 TEST(GeoTextureRender, MossSpreadsOverGranite) {
   const Image image = renderPackage(
-      spherePackage(geoMaterial("moss-granite", {{"thresholds", {0.2}}, {"colors", {kGreen, kBlue}}})), "moss_granite");
+      spherePackage(geoMaterial("moss-granite", {{"thresholds", {0.2}}, {"colors", {kGreen, kBlue}}})),
+      "moss_granite");
   // The default front noise moves the border by up to 0.04.
-  EXPECT_GT(share(image, [](float d, float) { return d < 0.14f; }, greenish).fraction, 0.95);
-  EXPECT_GT(share(image, [](float d, float) { return d > 0.27f; }, bluish).fraction, 0.95);
+  EXPECT_GT(share(
+                image, [](float d, float) { return d < 0.14f; }, greenish)
+                .fraction,
+            0.95);
+  EXPECT_GT(share(
+                image, [](float d, float) { return d > 0.27f; }, bluish)
+                .fraction,
+            0.95);
 }
 
 TEST(GeoTextureRender, PaintMetalRustNestFromTheSource) {
-  const Image image = renderPackage(
-      spherePackage(geoMaterial("paint-metal-rust", {{"thresholds", {0.06, 0.17, 0.29}},
-                                                     {"widths", {0.005, 0.01, 0.01}},
-                                                     {"frontNoise", {{"amplitude", 0.0}}},
-                                                     {"colors", {kRed, kRed, kGreen, kBlue}}})),
-      "paint_metal_rust");
-  EXPECT_GT(share(image, [](float d, float) { return d > 0.08f && d < 0.15f; }, reddish).fraction, 0.95) << "rust";
-  EXPECT_GT(share(image, [](float d, float) { return d > 0.19f && d < 0.27f; }, greenish).fraction, 0.95) << "metal";
-  EXPECT_GT(share(image, [](float d, float) { return d > 0.31f; }, bluish).fraction, 0.95) << "paint";
+  const Image image =
+      renderPackage(spherePackage(geoMaterial("paint-metal-rust", {{"thresholds", {0.06, 0.17, 0.29}},
+                                                                   {"widths", {0.005, 0.01, 0.01}},
+                                                                   {"frontNoise", {{"amplitude", 0.0}}},
+                                                                   {"colors", {kRed, kRed, kGreen, kBlue}}})),
+                    "paint_metal_rust");
+  EXPECT_GT(share(
+                image, [](float d, float) { return d > 0.08f && d < 0.15f; }, reddish)
+                .fraction,
+            0.95)
+      << "rust";
+  EXPECT_GT(share(
+                image, [](float d, float) { return d > 0.19f && d < 0.27f; }, greenish)
+                .fraction,
+            0.95)
+      << "metal";
+  EXPECT_GT(share(
+                image, [](float d, float) { return d > 0.31f; }, bluish)
+                .fraction,
+            0.95)
+      << "paint";
   // Holes: the sphere is cut away around the source, showing its unlit inside, never rust.
-  const Share holes = share(image, [](float d, float) { return d < 0.04f; }, [](const Rgb8& c) { return !reddish(c); });
+  const Share holes = share(
+      image, [](float d, float) { return d < 0.04f; }, [](const Rgb8& c) { return !reddish(c); });
   EXPECT_GT(holes.count, 20);
   EXPECT_GT(holes.fraction, 0.95);
 }
@@ -389,8 +440,13 @@ TEST(GeoTextureRender, WaterAndLavaFollowTheirOwnFields) {
                                                {"frontNoise", {{"amplitude", 0.0}}},
                                                {"colors", {kBlue, {1.0, 0.3, 0.02}, {0.1, 0.1, 0.1}}}})),
       "water_lava");
-  EXPECT_GT(share(image, [](float d0, float) { return d0 < 0.1f; }, bluish).fraction, 0.95) << "water from field 0";
-  const Share lava = share(image, [](float d0, float d1) { return d1 < 0.22f && d0 > 0.15f; }, reddish);
+  EXPECT_GT(share(
+                image, [](float d0, float) { return d0 < 0.1f; }, bluish)
+                .fraction,
+            0.95)
+      << "water from field 0";
+  const Share lava = share(
+      image, [](float d0, float d1) { return d1 < 0.22f && d0 > 0.15f; }, reddish);
   EXPECT_GT(lava.count, 50);
   EXPECT_GT(lava.fraction, 0.9) << "lava from field 1";
   double lavaLight = 0, rockLight = 0;
@@ -410,20 +466,28 @@ TEST(GeoTextureRender, WaterAndLavaFollowTheirOwnFields) {
 
 TEST(GeoTextureRender, OpacityFrontRevealsTheBackground) {
   const auto material = [](double opacity) {
-    return geoMaterial("opacity-front", {{"thresholds", {0.2}}, {"opacity", opacity}, {"colors", {kRed, kGreen}}});
+    return geoMaterial("opacity-front",
+                       {{"thresholds", {0.2}}, {"opacity", opacity}, {"colors", {kRed, kGreen}}});
   };
   const Image clear = renderPackage(spherePackage(material(0.0)), "opacity_clear");
   const Rgb8 background = pixel(clear, 2, 2);
-  EXPECT_GT(share(clear, [](float d, float) { return d < 0.17f; }, reddish).fraction, 0.95);
+  EXPECT_GT(share(
+                clear, [](float d, float) { return d < 0.17f; }, reddish)
+                .fraction,
+            0.95);
   const auto isBackground = [&](const Rgb8& c) {
     return std::fabs(c[0] - background[0]) < 0.01f && std::fabs(c[1] - background[1]) < 0.01f &&
            std::fabs(c[2] - background[2]) < 0.01f;
   };
-  EXPECT_GT(share(clear, [](float d, float) { return d > 0.23f; }, isBackground).fraction, 0.95)
+  EXPECT_GT(share(
+                clear, [](float d, float) { return d > 0.23f; }, isBackground)
+                .fraction,
+            0.95)
       << "fully transparent beyond the front";
   const Image veiled = renderPackage(spherePackage(material(0.5)), "opacity_veiled");
-  EXPECT_GT(share(veiled, [](float d, float) { return d > 0.23f; },
-                  [&](const Rgb8& c) { return c[1] > background[1] + 0.05f && !isBackground(c); })
+  EXPECT_GT(share(
+                veiled, [](float d, float) { return d > 0.23f; },
+                [&](const Rgb8& c) { return c[1] > background[1] + 0.05f && !isBackground(c); })
                 .fraction,
             0.9)
       << "half transparent: the green far material over the background";
@@ -433,8 +497,9 @@ TEST(GeoTextureRender, UnreachableVerticesHaveTheirOwnFlatColour) {
   for (Encoding encoding : {Encoding::Float, Encoding::Unorm16}) {
     SCOPED_TRACE(encoding == Encoding::Float ? "float" : "unorm16");
     for (const std::string preset : {"isolines", "sand-water"}) {
-      const Image image = renderPackage(spherePackage(geoMaterial(preset, {{"unreachableColor", {0.0, 1.0, 1.0}}}), encoding),
-                                        "unreachable_" + preset);
+      const Image image =
+          renderPackage(spherePackage(geoMaterial(preset, {{"unreachableColor", {0.0, 1.0, 1.0}}}), encoding),
+                        "unreachable_" + preset);
       const Rgb8 lone = lonePixel(image);
       EXPECT_NEAR(lone[0], 0.0f, 1e-3f) << preset;
       EXPECT_NEAR(lone[1], 1.0f, 1e-3f) << preset;
@@ -464,7 +529,8 @@ TEST(GeoTextureRender, FieldsInModelUnitsAreNormalised) {
     field = glb::Attribute::fromFloats(field.name, 1, values);
   }
   EXPECT_TRUE(checkGeodesicPackage(units, "units.glb").isOk());
-  auto difference = compareImages(renderPackage(spherePackage(material), "units_ref"), renderPackage(units, "units"), 0.1);
+  auto difference =
+      compareImages(renderPackage(spherePackage(material), "units_ref"), renderPackage(units, "units"), 0.1);
   ASSERT_TRUE(difference.isOk());
   EXPECT_LT(difference->rmse, 0.01) << describe(*difference);
 }
@@ -482,12 +548,21 @@ TEST(GeoTextureRender, AnimatedThresholdAdvancesWithTime) {
 TEST(GeoTextureRender, PresetOptionChoosesAndOverrides) {
   // A bare geobake package (fields, no material) shows isolines: red at the source.
   const Image bare = renderPackage(spherePackage(nullptr), "bare");
-  EXPECT_GT(share(bare, [](float d, float) { return d < 0.03f; }, reddish).fraction, 0.9);
+  EXPECT_GT(share(
+                bare, [](float d, float) { return d < 0.03f; }, reddish)
+                .fraction,
+            0.9);
   // --geotexture replaces the preset a material names and keeps its other parameters.
-  const Image chosen = renderPackage(spherePackage(geoMaterial("isolines", {{"colors", {kGreen, kBlue}}})), "override",
-                                     {"sand-water", 0.0f});
-  EXPECT_GT(share(chosen, [](float d, float) { return d < 0.25f; }, greenish).fraction, 0.95);
-  EXPECT_GT(share(chosen, [](float d, float) { return d > 0.3f; }, bluish).fraction, 0.95);
+  const Image chosen = renderPackage(spherePackage(geoMaterial("isolines", {{"colors", {kGreen, kBlue}}})),
+                                     "override", {"sand-water", 0.0f});
+  EXPECT_GT(share(
+                chosen, [](float d, float) { return d < 0.25f; }, greenish)
+                .fraction,
+            0.95);
+  EXPECT_GT(share(
+                chosen, [](float d, float) { return d > 0.3f; }, bluish)
+                .fraction,
+            0.95);
 
   RenderSettings settings;
   settings.view.scenes = {writePackage(spherePackage(nullptr), "override_bad").string()};
@@ -510,7 +585,9 @@ class GeoTextureWave : public test::GlTest {
   // Draws through SceneRenderer, counting the primitives that reach the rasteriser.
   WaveFrame draw(const nlohmann::json& material, bool withNormals = true) {
     glb::Package package = spherePackage(material);
-    if (!withNormals) std::erase_if(package.meshes[0].primitives[0].attributes, [](const glb::Attribute& a) { return a.name == "NORMAL"; });
+    if (!withNormals)
+      std::erase_if(package.meshes[0].primitives[0].attributes,
+                    [](const glb::Attribute& a) { return a.name == "NORMAL"; });
     const fs::path file = writePackage(package, "wave");
     Diagnostics diagnostics("bakeplay", true);
     auto scene = loadScene({file}, diagnostics, [](const std::string&) { return true; });
@@ -522,8 +599,14 @@ class GeoTextureWave : public test::GlTest {
     Camera camera;
     camera.eye = {0, 0, kEye};
     const Light light;
-    const FrameContext frame{*scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
-                             perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize, 0.0f};
+    const FrameContext frame{*scene,
+                             camera,
+                             light,
+                             lookAt(camera.eye, camera.target, camera.up),
+                             perspective(camera.yfov, 1.0f, camera.znear, camera.zfar),
+                             kSize,
+                             kSize,
+                             0.0f};
     target->bind();
     GLuint query = 0;
     glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
@@ -541,8 +624,10 @@ class GeoTextureWave : public test::GlTest {
     int differing = 0;
     for (int y = 0; y < kSize; ++y) {
       for (int x = 0; x < kSize; ++x) {
-        const bool coveredA = std::fabs(a.at(x, y, 2) - a.at(0, 0, 2)) > 1e-4f || std::fabs(a.at(x, y, 0) - a.at(0, 0, 0)) > 1e-4f;
-        const bool coveredB = std::fabs(b.at(x, y, 2) - b.at(0, 0, 2)) > 1e-4f || std::fabs(b.at(x, y, 0) - b.at(0, 0, 0)) > 1e-4f;
+        const bool coveredA = std::fabs(a.at(x, y, 2) - a.at(0, 0, 2)) > 1e-4f ||
+                              std::fabs(a.at(x, y, 0) - a.at(0, 0, 0)) > 1e-4f;
+        const bool coveredB = std::fabs(b.at(x, y, 2) - b.at(0, 0, 2)) > 1e-4f ||
+                              std::fabs(b.at(x, y, 0) - b.at(0, 0, 0)) > 1e-4f;
         differing += coveredA != coveredB ? 1 : 0;
       }
     }
@@ -552,9 +637,13 @@ class GeoTextureWave : public test::GlTest {
 
 nlohmann::json waveMaterial(double amplitude, bool displace) {
   // The packet d in [0.15, 0.45] covers the silhouette (d = 0.41 from this camera).
-  return geoMaterial("wave-displacement",
-                     {{"thresholds", {0.45}}, {"wave", {{"amplitude", amplitude}, {"wavelength", 0.06}, {"reach", 0.3},
-                                                        {"displace", displace}, {"pixelsPerEdge", 4}}}});
+  return geoMaterial("wave-displacement", {{"thresholds", {0.45}},
+                                           {"wave",
+                                            {{"amplitude", amplitude},
+                                             {"wavelength", 0.06},
+                                             {"reach", 0.3},
+                                             {"displace", displace},
+                                             {"pixelsPerEdge", 4}}}});
 }
 
 TEST_F(GeoTextureWave, TessellationRefinesOnlyWhereTheWaveIs) {
