@@ -42,6 +42,7 @@ class Propagator {
   const FaceSide& side(std::uint32_t face, std::uint32_t edge) const;
 
   void push(double key, std::uint32_t item);
+  Entry popMin();
   void relaxVertex(std::uint32_t v, double distance);
   void closeOverEdges();
   void processVertex(std::uint32_t v, double key);
