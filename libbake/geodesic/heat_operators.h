@@ -22,7 +22,7 @@ struct HeatFace {
   std::array<std::uint32_t, 3> vertices;
   // Gradient of the hat function of each corner, in the face's own planar frame.
   std::array<std::array<double, 2>, 3> hatGradient;
-  double area;
+  double area;  // of the face, times the number of mirrored copies merged into it
 };
 
 struct HeatOperators {
