@@ -22,7 +22,7 @@ struct HeatOptions {
   double timeFactor = 0.0;
   // Mollification epsilon relative to the mean edge length.
   double mollifyFactor = 1e-6;
-  unsigned threads = 0;
+  unsigned threads = 0;  // not used yet: build() and distances() run on the calling thread
   // Sources in components with two or more sources are held at exactly 0 by a Dirichlet condition,
   // which costs one extra back-substitution per source; beyond this many the field is only shifted
   // so that its mean over the sources is 0 (then clamped at 0).

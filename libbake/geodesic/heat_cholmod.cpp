@@ -77,7 +77,8 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
     common->method[0].ordering = CHOLMOD_AMD;
     symbolic = cholmod_analyze(&first, common.get());
   }
-  if (!symbolic) return internalError("sparse Cholesky analysis failed (status " + std::to_string(common->status) + ")");
+  if (!symbolic)
+    return internalError("sparse Cholesky analysis failed (status " + std::to_string(common->status) + ")");
   for (const auto* upper : uppers) {
     cholmod_sparse a = viewUpper(*upper);
     auto impl = std::make_unique<Impl>();
@@ -98,7 +99,8 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   return factors;
 }
 
-void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns) const {
+void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution,
+                           std::size_t columns) const {
   const std::size_t n = size();
   cholmod_common local;
   cholmod_start(&local);

@@ -68,7 +68,8 @@ std::vector<std::uint32_t> facesInCyclicOrder(const Surface& surface, std::uint3
     angle[i] = std::atan2(dot(spokes[i], yAxis), dot(spokes[i], xAxis));
   std::vector<std::size_t> index(order.size());
   std::iota(index.begin(), index.end(), 0);
-  std::stable_sort(index.begin(), index.end(), [&](std::size_t i, std::size_t j) { return angle[i] < angle[j]; });
+  std::stable_sort(index.begin(), index.end(),
+                   [&](std::size_t i, std::size_t j) { return angle[i] < angle[j]; });
   std::vector<std::uint32_t> sorted;
   for (std::size_t i : index) sorted.push_back(order[i]);
   return sorted;

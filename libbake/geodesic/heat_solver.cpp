@@ -9,12 +9,14 @@
 // at the source. A source inside a face holds phi's linear interpolant there at the interpolant of its
 // true distances to the face's corners (straight segments in the face), not at 0: the distance is a
 // cone whose tip lies inside the face, and forcing its interpolant to 0 would pull the corners, and
-// with them the whole field, down by a fraction of an edge. Several sources: shifting by the minimum (as CGAL 5.5 does) lets the solution's
-// error pull distances between sources towards 0; instead every source is held at 0 by a Dirichlet
-// condition, imposed on the pinned factor with Lagrange multipliers: phi = G(b + C lambda) + mu, where
-// G is the pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = r and the
+// with them the whole field, down by a fraction of an edge (r below is that value, 0 at a vertex).
+// Several sources: shifting by the minimum (as CGAL 5.5 does) lets the solution's error pull distances
+// between sources towards 0; instead every source is held at its value by a Dirichlet condition,
+// imposed on the pinned factor with Lagrange multipliers: phi = G(b + C lambda) + mu, where G is the
+// pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = r and the
 // multipliers sum to 0 (so the pinned row's equation holds too). That is one extra back-substitution
-// per source and a small dense system; components without a source are unreachable.
+// per source and a small dense system (HeatOptions::maxPinnedSources bounds it); components without
+// a source are unreachable.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
