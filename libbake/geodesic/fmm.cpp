@@ -4,8 +4,9 @@
 // finalised, every vertex sharing a face with it is updated from that face: if two corners of the face
 // are known, the distance at the third is that of the planar wavefront through both (section 3 of the
 // paper: the front is locally a plane wave, |grad T| = 1); the update is accepted only when the
-// characteristic reaching the vertex crosses the opposite edge inside the triangle (causality),
-// otherwise the vertex falls back to Dijkstra edge updates. A planar update is only consistent at an
+// characteristic reaching the vertex crosses the opposite edge inside the triangle (causality) and
+// both known values can belong to one front (where two sources' fronts meet, a plane wave through
+// both would undercut them), otherwise the vertex falls back to Dijkstra edge updates. A planar update is only consistent at an
 // acute corner, so each obtuse corner is split (section 4 of the paper): neighbouring triangles are
 // unfolded across the opposite edge into the corner's plane until a vertex lands in the corner's acute
 // section (the directions within 90 degrees of both edges); the corner is then updated from the two
@@ -177,6 +178,9 @@ double planarFrontUpdate(Vec2 p, double dp, Vec2 q, double dq) {
   const double len = length(e);
   const double rise = dq - dp;
   if (len <= 0.0 || std::abs(rise) >= len) return kUnreachable;
+  // One front reaches both ends only if dp + dq >= |pq| (no surface path is shorter than the edge);
+  // less means two fronts (two sources) meet inside, where a plane wave would cut the corner.
+  if (dp + dq < (1.0 - 1e-9) * len) return kUnreachable;
   const Vec2 along = (1.0 / len) * e;
   Vec2 normal{-along.y, along.x};
   if (dot(normal, p) > 0.0) normal = -1.0 * normal;  // towards the origin's side
