@@ -1,7 +1,8 @@
 // Exact polyhedral geodesic distances by continuous-Dijkstra window propagation (Mitchell, Mount and
-// Papadimitriou 1987, as made practical by Surazhsky et al. 2005, with the vertex-oriented pruning of
-// Qin et al. 2016). All sources propagate together, so a combined min-field costs about as much as a
-// single source.
+// Papadimitriou 1987, as made practical by Surazhsky et al. 2005, with their endpoint filter: a window
+// that cannot beat a path through an endpoint of its edge is dropped). All sources propagate together,
+// so a combined min-field costs about as much as a single source. Stages: exact_window.cpp (window
+// geometry and unfolding), exact_propagate.cpp (edge lists, trimming, event queue), exact.cpp (entry).
 #pragma once
 
 #include <cstddef>
@@ -22,6 +23,9 @@ struct ExactStats {
   std::size_t windowsCreated = 0;
   std::size_t windowsPropagated = 0;
   std::size_t pseudoSources = 0;  // saddle and boundary vertices that re-emitted
+  // The safety limit on windows (60 per edge + 10^6) was reached: the distances are then upper bounds
+  // (windows plus edge paths) rather than exact. Never seen on real meshes; it keeps bad input finite.
+  bool windowLimitReached = false;
 };
 
 std::vector<double> exactDistances(const Surface& surface, std::span<const SurfacePoint> sources,

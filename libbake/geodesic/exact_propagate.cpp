@@ -318,7 +318,11 @@ void Propagator::insertWindow(Window w) {
   if (!std::isfinite(w.sx) || !std::isfinite(w.sy) || !std::isfinite(w.sigma)) return;
   if (w.b0 <= tolerance) relaxVertex(surface_.edges[w.edge][0], w.distanceAt(0.0));
   if (w.b1 >= length - tolerance) relaxVertex(surface_.edges[w.edge][1], w.distanceAt(length));
-  if (w.b1 - w.b0 <= tolerance || windows_.size() >= windowCap_) return;
+  if (w.b1 - w.b0 <= tolerance) return;
+  if (windows_.size() >= windowCap_) {
+    stats_.windowLimitReached = true;
+    return;
+  }
   if (w.minDistance() > options_.maxDistance || dominatedByEndpoints(w, length)) return;
 
   lost_.clear();

@@ -167,15 +167,19 @@ TEST(GeodesicExact, OpenCylinderSideUnrolls) {
       triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   const Surface s = makeSurface(positions, triangles);
-  const std::uint32_t source = at(3, 1);
-  const auto d = exactDistances(s, std::vector<SurfacePoint>{atVertex(s, source)});
   const double chord = 2.0 * radius * std::sin(std::numbers::pi / segments);
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i < segments; ++i) {
-      const int around = std::abs(i - 3);
-      const double expected = std::hypot(std::min(around, segments - around) * chord, (j - 1) * height);
-      EXPECT_NEAR(d[at(i, j)], expected, 1e-9) << i << "," << j;
-    }
+  for (int row : {1, 0}) {  // inside, then on the boundary rim
+    const std::uint32_t source = at(3, row);
+    ExactStats stats;
+    const auto d = exactDistances(s, std::vector<SurfacePoint>{atVertex(s, source)}, {}, &stats);
+    EXPECT_FALSE(stats.windowLimitReached);
+    for (int j = 0; j <= rows; ++j)
+      for (int i = 0; i < segments; ++i) {
+        const int around = std::abs(i - 3);
+        const double expected = std::hypot(std::min(around, segments - around) * chord, (j - row) * height);
+        EXPECT_NEAR(d[at(i, j)], expected, 1e-9) << i << "," << j;
+      }
+  }
 }
 
 TEST(GeodesicExact, NonManifoldBookPagesUnfoldThroughTheSpine) {
