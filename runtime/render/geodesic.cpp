@@ -491,7 +491,9 @@ Status attachGeoTextures(Scene& scene, const std::string& preset) {
         package.materials[std::size_t(primitive.material)]["extensions"][fmt::kExtension]["texture"] = preset;
       continue;
     }
-    if (!technique.empty()) continue;
+    // A bare primitive gets the default only in a BAKE_geodesic package (else _GEODESIC_k is just an
+    // application attribute); --geotexture asks for it explicitly.
+    if (!technique.empty() || (preset.empty() && !package.extensions.contains(fmt::kExtension))) continue;
     const auto key = std::make_pair(instance.package, primitive.material);
     if (auto found = added.find(key); found != added.end()) {
       primitive.material = found->second;
@@ -509,6 +511,13 @@ Status attachGeoTextures(Scene& scene, const std::string& preset) {
 }
 
 Status checkGeodesicPackage(const glb::Package& package, const std::string& name) {
+  // Packages that neither declare BAKE_geodesic nor use it in a material are not checked here.
+  bool used = package.extensions.contains(fmt::kExtension);
+  for (const nlohmann::json& material : package.materials) {
+    used = used || (material.is_object() && material.contains("extensions") &&
+                    material["extensions"].is_object() && material["extensions"].contains(fmt::kExtension));
+  }
+  if (!used) return {};
   for (std::size_t m = 0; m < package.meshes.size(); ++m) {
     for (std::size_t p = 0; p < package.meshes[m].primitives.size(); ++p) {
       const glb::Primitive& primitive = package.meshes[m].primitives[p];

@@ -279,6 +279,13 @@ TEST(GeoTextureValidate, ChecksFieldsAndMaterials) {
   glb::Package listed = spherePackage(geoMaterial("isolines"));
   listed.extensions["BAKE_geodesic"]["fields"].push_back({{"attribute", "_GEODESIC_5"}});
   EXPECT_NE(checkGeodesicPackage(listed, "s.glb").message().find("_GEODESIC_5"), std::string::npos);
+  // Without BAKE_geodesic anywhere, _GEODESIC_k is an ordinary application attribute.
+  glb::Package plain = outOfRange;
+  plain.extensions.erase("BAKE_geodesic");
+  plain.materials = nlohmann::json::array();
+  plain.meshes[0].primitives[0].material = -1;
+  EXPECT_TRUE(checkGeodesicPackage(plain, "s.glb").isOk());
+
   glb::Package encoding = spherePackage(geoMaterial("isolines"));
   encoding.extensions["BAKE_geodesic"]["encoding"] = "unorm16";
   EXPECT_FALSE(checkGeodesicPackage(encoding, "s.glb").isOk());
