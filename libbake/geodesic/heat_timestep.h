@@ -16,6 +16,6 @@ double estimateGeodesicExtent(const Surface& surface);
 double heatTimeStep(double meanEdgeLength, double extent, double factor);
 
 // Largest number of decay lengths sqrt(t) a field may span, see heatTimeStep().
-inline constexpr double kMaxDecayLengths = 250.0;
+inline constexpr double kMaxDecayLengths = 350.0;
 
 }  // namespace bake::geodesic
