@@ -14,9 +14,9 @@
 // between sources towards 0; instead every source is held at its value by a Dirichlet condition,
 // imposed on the pinned factor with Lagrange multipliers: phi = G(b + C lambda) + mu, where G is the
 // pinned inverse, the columns of C are the sources' barycentric weights, C^T phi = r and the
-// multipliers sum to 0 (so the pinned row's equation holds too). That is one extra back-substitution
-// per source and a small dense system (HeatOptions::maxPinnedSources bounds it); components without
-// a source are unreachable.
+// multipliers sum to 0 (so the pinned row's equation holds too). That costs one extra
+// back-substitution per source, one more for the correction and a small dense system
+// (HeatOptions::maxPinnedSources bounds it). Components without a source are unreachable.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -141,31 +141,39 @@ Eigen::VectorXd multipliers(const Eigen::MatrixXd& s, const Eigen::VectorXd& r) 
   return system.completeOrthogonalDecomposition().solve(right);
 }
 
-// Makes every source of a component with several sources sit at 0 (see the file comment), in place.
+// Holds every source of a component with several sources at its value (see the file comment), in
+// place. The Schur complement C^T G C is gathered a few columns at a time so that the workspace stays
+// a few fields in size; the correction G C lambda is then one more solve.
 void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
                 const std::vector<std::size_t>& members, std::vector<double>& phi) {
+  constexpr std::size_t kBatch = 8;
   const std::size_t n = state.vertexCount, k = members.size();
-  std::vector<double> c(n * k, 0.0), gc(n * k, 0.0);
-  for (std::size_t s = 0; s < k; ++s)
+  // Column s of C: the barycentric weights of source s, without the pinned vertex's entry.
+  const auto addColumn = [&](std::size_t s, double scale, double* column) {
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t v = rows[members[s]].vertices[i];
-      if (!state.pinned[v]) c[s * n + v] += rows[members[s]].weights[i];
+      if (!state.pinned[v]) column[v] += scale * rows[members[s]].weights[i];
     }
-  state.poisson->solve(c, gc, k);
+  };
   Eigen::MatrixXd schur(k, k);
   Eigen::VectorXd right(k);
-  for (std::size_t a = 0; a < k; ++a) {
+  for (std::size_t first = 0; first < k; first += kBatch) {
+    const std::size_t m = std::min(kBatch, k - first);
+    std::vector<double> c(n * m, 0.0), gc(n * m, 0.0);
+    for (std::size_t j = 0; j < m; ++j) addColumn(first + j, 1.0, c.data() + j * n);
+    state.poisson->solve(c, gc, m);
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t j = 0; j < m; ++j) schur(a, first + j) = rowDot(rows[members[a]], gc.data() + j * n);
+  }
+  for (std::size_t a = 0; a < k; ++a)
     right[a] = rows[members[a]].value - rowDot(rows[members[a]], phi.data());
-    for (std::size_t b = 0; b < k; ++b) schur(a, b) = rowDot(rows[members[a]], gc.data() + b * n);
-  }
   const Eigen::VectorXd solution = multipliers(0.5 * (schur + schur.transpose()), right);
+  std::vector<double> forces(n, 0.0), correction(n, 0.0);
+  for (std::size_t s = 0; s < k; ++s) addColumn(s, solution[s], forces.data());
+  state.poisson->solve(forces, correction);
   const std::uint32_t component = rows[members[0]].component;
-  for (std::size_t v = 0; v < n; ++v) {
-    if (state.componentOf[v] != component) continue;
-    double shift = solution[k];
-    for (std::size_t s = 0; s < k; ++s) shift += solution[s] * gc[s * n + v];
-    phi[v] += shift;
-  }
+  for (std::size_t v = 0; v < n; ++v)
+    if (state.componentOf[v] == component) phi[v] += correction[v] + solution[k];
 }
 
 // Shifts a component so that its sources' mean error is 0 (one source: that source is exact).
