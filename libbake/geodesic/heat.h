@@ -23,7 +23,10 @@ struct HeatOptions {
   // Mollification epsilon relative to the mean edge length.
   double mollifyFactor = 1e-6;
   unsigned threads = 0;  // not used yet: build() and distances() run on the calling thread
-  // Sources in components with two or more sources are held at exactly 0 by a Dirichlet condition,
+  // Up to this many sources, the field is the minimum of one field per source (two solves each),
+  // which is more accurate than one field from the heat of all sources together.
+  std::size_t maxSeparateSources = 8;
+  // Otherwise: sources in components with two or more sources are held at exactly 0 by a Dirichlet condition,
   // which costs one extra back-substitution per source; beyond this many the field is only shifted
   // so that its mean over the sources is 0 (then clamped at 0).
   std::size_t maxPinnedSources = 64;

@@ -46,6 +46,7 @@ struct HeatSystem {
   std::optional<CholeskyFactor> heat;
   std::optional<CholeskyFactor> poisson;
   std::size_t maxPinnedSources = 0;
+  std::size_t maxSeparateSources = 0;
 };
 
 struct HeatSolver::State : HeatSystem {
@@ -213,6 +214,7 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   state->componentOf = surface.componentOf;
   state->componentCount = surface.componentCount;
   state->maxPinnedSources = options.maxPinnedSources;
+  state->maxSeparateSources = options.maxSeparateSources;
   state->isolated.assign(surface.vertexCount(), 1);
   for (const auto& t : surface.triangles)
     for (std::uint32_t v : t) state->isolated[v] = 0;
@@ -247,15 +249,21 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   return HeatSolver(std::move(state));
 }
 
-std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources) const {
-  const State& state = *state_;
-  std::vector<double> result(state.vertexCount, kUnreachable);
-  const std::vector<SourceRow> rows = sourceRows(state, sources);
-  if (rows.empty() || !state.heat) return result;
+namespace {
 
-  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows));
-  std::map<std::uint32_t, std::vector<std::size_t>> byComponent;
+using Components = std::map<std::uint32_t, std::vector<std::size_t>>;
+
+Components groupByComponent(const std::vector<SourceRow>& rows) {
+  Components byComponent;
   for (std::size_t r = 0; r < rows.size(); ++r) byComponent[rows[r].component].push_back(r);
+  return byComponent;
+}
+
+// One heat-method field from all the rows together, each source held at its value (or, beyond the
+// pin limit, the mean over the sources). Valid on the components that hold a source.
+std::vector<double> combinedField(const HeatSystem& state, const std::vector<SourceRow>& rows) {
+  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows));
+  const Components byComponent = groupByComponent(rows);
   std::size_t pinnedTotal = 0;
   for (const auto& [component, members] : byComponent)
     if (members.size() > 1) pinnedTotal += members.size();
@@ -265,7 +273,35 @@ std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources)
     else
       shiftToSources(state, rows, members, phi);
   }
+  return phi;
+}
 
+// The minimum of one field per source: each is the single-source heat method, which is more accurate
+// than one field from the summed heat of all sources (where the sources' kernels meet, the normalised
+// gradient turns sharply and the Poisson step smooths the ridge: on the teapot, 2.9 % mean error for
+// two sources against 1.5 % for the minimum of their fields). Two solves per source.
+std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::vector<SourceRow>& rows) {
+  std::vector<double> phi(state.vertexCount, kUnreachable);
+  for (const SourceRow& row : rows) {
+    const std::vector<double> single = combinedField(state, {row});
+    for (std::size_t v = 0; v < state.vertexCount; ++v)
+      if (state.componentOf[v] == row.component) phi[v] = std::min(phi[v], single[v]);
+  }
+  return phi;
+}
+
+}  // namespace
+
+std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources) const {
+  const State& state = *state_;
+  std::vector<double> result(state.vertexCount, kUnreachable);
+  const std::vector<SourceRow> rows = sourceRows(state, sources);
+  if (rows.empty() || !state.heat) return result;
+
+  const std::vector<double> phi = rows.size() > 1 && rows.size() <= state.maxSeparateSources
+                                      ? minimumOfSingleFields(state, rows)
+                                      : combinedField(state, rows);
+  const Components byComponent = groupByComponent(rows);
   std::vector<char> reached(state.componentCount, 0);
   for (const auto& [component, members] : byComponent) reached[component] = 1;
   for (std::size_t v = 0; v < state.vertexCount; ++v)

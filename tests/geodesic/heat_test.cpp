@@ -158,9 +158,22 @@ TEST(HeatSolver, FaceInteriorSourceOnAPlane) {
   expectFiniteNonNegative(d);
 }
 
+TEST(HeatSolver, FewSourcesGiveTheMinimumOfTheirOwnFields) {
+  const Surface s = geodesicSphere(2, 1.0);
+  const HeatSolver solver = buildSolver(s);
+  const std::vector<SurfacePoint> both{vertexPoint(s, 5), SurfacePoint{30, {0.2, 0.3, 0.5}}};
+  const std::vector<double> d = solver.distances(both);
+  const std::vector<double> a = solver.distances(std::span(both).first(1));
+  const std::vector<double> b = solver.distances(std::span(both).last(1));
+  for (std::size_t v = 0; v < d.size(); ++v) EXPECT_EQ(d[v], std::min(a[v], b[v]));
+}
+
+// With maxSeparateSources = 0 the sources share one field and are held at 0 by Dirichlet conditions.
 TEST(HeatSolver, EverySourceSitsAtZeroAndNothingFoldsBetweenThem) {
   const Surface s = planarGrid(64, 1.0);
-  const HeatSolver solver = buildSolver(s);
+  HeatOptions options;
+  options.maxSeparateSources = 0;
+  const HeatSolver solver = buildSolver(s, options);
   const auto at = [](std::uint32_t i, std::uint32_t j) { return j * 65 + i; };
   const std::uint32_t a = at(16, 16), b = at(40, 48), c = at(56, 8);
   const std::vector<SurfacePoint> sources{vertexPoint(s, a), vertexPoint(s, b), vertexPoint(s, c),
@@ -184,6 +197,7 @@ TEST(HeatSolver, EverySourceSitsAtZeroAndNothingFoldsBetweenThem) {
 TEST(HeatSolver, ManySourcesBeyondThePinLimitStillGiveAZeroedField) {
   const Surface s = planarGrid(16, 1.0);
   HeatOptions options;
+  options.maxSeparateSources = 0;
   options.maxPinnedSources = 2;
   const HeatSolver solver = buildSolver(s, options);
   const std::vector<SurfacePoint> sources{vertexPoint(s, 20), vertexPoint(s, 150), vertexPoint(s, 260)};
