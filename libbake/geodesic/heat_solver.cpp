@@ -290,6 +290,40 @@ std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::ve
   return phi;
 }
 
+// Bounds that every surface path obeys, applied to the approximate field: no vertex is nearer to a
+// source of its component than in a straight line (the heat method's smoothing rounds the distance's
+// tip and ridges, so it undershoots there), and the corners of a source's faces are no farther than
+// the straight segment inside the face. Both only move values towards the true distance. Costs
+// O(vertices x sources), so it is skipped beyond kMaxBoundedSources.
+constexpr std::size_t kMaxBoundedSources = 64;
+
+double straightDistance(const Vec3d& a, const Vec3d& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows,
+                     std::vector<double>& result) {
+  if (rows.size() > kMaxBoundedSources) return;
+  std::vector<Vec3d> points;
+  for (const SourceRow& row : rows) {
+    Vec3d p{0.0, 0.0, 0.0};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) p[k] += row.weights[i] * state.positions[row.vertices[i]][k];
+    points.push_back(p);
+  }
+  for (std::size_t v = 0; v < state.vertexCount; ++v) {
+    if (!std::isfinite(result[v])) continue;
+    double lower = kUnreachable;
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      if (rows[r].component == state.componentOf[v])
+        lower = std::min(lower, straightDistance(state.positions[v], points[r]));
+    if (lower != kUnreachable) result[v] = std::max(result[v], lower);
+  }
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::uint32_t v : rows[r].vertices)
+      result[v] = std::min(result[v], straightDistance(state.positions[v], points[r]));
+}
+
 }  // namespace
 
 std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources) const {
@@ -307,6 +341,7 @@ std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources)
   for (std::size_t v = 0; v < state.vertexCount; ++v)
     if (reached[state.componentOf[v]] && !state.isolated[v])
       result[v] = std::isfinite(phi[v]) ? std::max(0.0, phi[v]) : 0.0;
+  applyPathBounds(state, rows, result);
   for (const SourceRow& row : rows)
     if (row.vertex >= 0) result[static_cast<std::size_t>(row.vertex)] = 0.0;
   return result;
