@@ -51,5 +51,10 @@ struct FieldError {
 std::vector<FieldError> verifyFields(const Surface& surface, const std::vector<ResolvedField>& fields,
                                      const std::vector<std::vector<double>>& distances, unsigned samples,
                                      unsigned threads);
+// For fields computed by the exact method itself: independent exact runs (backwards from up to 8
+// sampled vertices, or forwards from each face-point source alone) must give the same distances.
+std::vector<FieldError> verifyExactFields(const Surface& surface, const std::vector<ResolvedField>& fields,
+                                          const std::vector<std::vector<double>>& distances, unsigned samples,
+                                          unsigned threads);
 
 }  // namespace bake::geodesic

@@ -2,6 +2,12 @@
 // sources, at K vertices drawn with a fixed seed from the vertices the exact field reaches. The error
 // is relative to the field's largest exact distance (its geodesic radius), the scale on which the
 // normalised field is used (seed 003, 5.2.2).
+//
+// An exact field cannot be its own reference, so it is checked by independent runs instead: at up to
+// kExactChecks sampled vertices, the distance to each vertex source is recomputed by propagating
+// backwards from the sampled vertex (d(s, v) = d(v, s) through a different set of windows), and the
+// distance to each face-point source by a forward run from that source alone; the field must equal
+// the smallest of them.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -12,6 +18,8 @@
 
 namespace bake::geodesic {
 namespace {
+
+constexpr unsigned kExactChecks = 8;
 
 std::vector<std::uint32_t> sampleVertices(const std::vector<double>& exact, unsigned samples) {
   std::vector<std::uint32_t> reachable;
@@ -45,7 +53,65 @@ FieldError compare(const std::vector<double>& field, const std::vector<double>& 
   return error;
 }
 
+// The exact distance at `v` from the field's sources, by independent runs (see the top of the file).
+double independentExactDistance(const Surface& surface, const ResolvedField& field, std::uint32_t v, double bound,
+                                std::vector<std::vector<double>>& forwardRuns) {
+  double best = kUnreachable;
+  ExactOptions options;
+  options.maxDistance = bound;
+  std::vector<double> backward;
+  for (std::size_t s = 0; s < field.points.size(); ++s) {
+    const std::int64_t sourceVertex = field.points[s].vertex(surface);
+    if (sourceVertex >= 0) {
+      if (backward.empty()) {
+        const SurfacePoint from = vertexPoint(surface, v);
+        backward = exactDistances(surface, std::span<const SurfacePoint>(&from, 1), options);
+      }
+      best = std::min(best, backward[std::size_t(sourceVertex)]);
+    } else {
+      if (forwardRuns[s].empty()) forwardRuns[s] = exactDistances(surface, std::span<const SurfacePoint>(&field.points[s], 1));
+      best = std::min(best, forwardRuns[s][v]);
+    }
+  }
+  return best;
+}
+
+FieldError checkExactField(const Surface& surface, const ResolvedField& field, const std::vector<double>& distance,
+                           unsigned samples) {
+  FieldError error;
+  // A lone face-point source has no independent run: a forward run would repeat the computation.
+  if (field.points.size() == 1 && field.points[0].vertex(surface) < 0) return error;
+  double radius = 0.0;
+  for (double d : distance)
+    if (d != kUnreachable) radius = std::max(radius, d);
+  const std::vector<std::uint32_t> chosen = sampleVertices(distance, std::min(samples, kExactChecks));
+  std::vector<std::vector<double>> forwardRuns(field.points.size());
+  double sum = 0.0;
+  for (std::uint32_t v : chosen) {
+    // Paths longer than the field's value (plus slack for round-off) cannot be the shortest.
+    const double bound = distance[v] * (1.0 + 1e-6) + 1e-12 * (radius + 1.0);
+    const double reference = independentExactDistance(surface, field, v, bound, forwardRuns);
+    const double difference = reference == kUnreachable ? radius : std::abs(distance[v] - reference);
+    const double relative = radius > 0.0 ? difference / radius : difference;
+    sum += relative;
+    error.maxRelative = std::max(error.maxRelative, relative);
+  }
+  error.samples = chosen.size();
+  error.meanRelative = chosen.empty() ? 0.0 : sum / double(chosen.size());
+  return error;
+}
+
 }  // namespace
+
+std::vector<FieldError> verifyExactFields(const Surface& surface, const std::vector<ResolvedField>& fields,
+                                          const std::vector<std::vector<double>>& distances, unsigned samples,
+                                          unsigned threads) {
+  std::vector<FieldError> errors(fields.size());
+  parallelFor(
+      fields.size(), threads, [&](std::size_t f) { errors[f] = checkExactField(surface, fields[f], distances[f], samples); },
+      1);
+  return errors;
+}
 
 std::vector<FieldError> verifyFields(const Surface& surface, const std::vector<ResolvedField>& fields,
                                      const std::vector<std::vector<double>>& distances, unsigned samples,
