@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -20,11 +21,18 @@
 namespace bake::bench {
 namespace {
 
+std::filesystem::path defaultDataDir() {
+  if (const char* fromEnvironment = std::getenv("BAKE_DATA_DIR"); fromEnvironment && *fromEnvironment)
+    return std::filesystem::path(fromEnvironment) / "meshes" / "real";
+  return std::filesystem::path("..") / "shared" / "data" / "meshes" / "real";
+}
+
 struct Settings {
   LadderOptions ladder;
   MethodSettings methods;
   std::filesystem::path out = "build-bench/results";
-  std::filesystem::path dataDir = "/work/shared/data/meshes/real";
+  // ../shared/data beside the project, or $BAKE_DATA_DIR (as for the tests).
+  std::filesystem::path dataDir = defaultDataDir();
   std::vector<std::string> onlyMethods;
   std::size_t cgalExactMaxTriangles = 100'000;
   std::size_t exactMaxTriangles = 2'000'000;

@@ -4,6 +4,8 @@
 // mesh is refined. Data tests run on the shared planar stress grids.
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -197,8 +199,8 @@ TEST(Fmm, OtherComponentsAreUnreachable) {
 }
 
 TEST(DataFmm, StressGridsAreCloseToPlanarDistance) {
-  const std::filesystem::path dir = "/work/shared/data/meshes/stress";
-  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared data set not found at " << dir;
+  BAKE_SKIP_WITHOUT_DATA();
+  const std::filesystem::path dir = test::dataDir() / "meshes" / "stress";
   // Sheared grids have long obtuse triangles (edges up to 0.1 long on a 7 x 1 grid): a looser bound.
   const std::vector<std::pair<const char*, double>> grids{
       {"grid_flat_64.off", 0.01}, {"grid_needles.off", 0.02}, {"grid_obtuse.off", 0.08}};

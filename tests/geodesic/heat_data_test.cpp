@@ -6,6 +6,8 @@
 // original vertices are those of the original mesh.
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include <cmath>
 #include <filesystem>
 #include <utility>
@@ -22,7 +24,6 @@ namespace {
 using testing::FieldError;
 using testing::relativeError;
 
-const std::filesystem::path kMeshes = "/work/shared/data/meshes";
 
 Surface loadSurface(const std::filesystem::path& path) {
   Result<TriangleMesh> mesh = readMesh(path);
@@ -54,12 +55,11 @@ struct Bound {
 };
 
 TEST(DataHeat, StiffMeshesGiveFiniteNonNegativeDistances) {
-  if (!std::filesystem::exists(kMeshes / "stress"))
-    GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  BAKE_SKIP_WITHOUT_DATA();
   for (const char* name : {"grid_needles.off", "grid_obtuse.off", "grid_zero_area.off", "grid_flat_64.off",
                            "all_degen.off", "degtri_nullface_bis.off", "non_manifold_face_graph.off"}) {
     SCOPED_TRACE(name);
-    const Surface s = loadSurface(kMeshes / "stress" / name);
+    const Surface s = loadSurface((test::dataDir() / "meshes") / "stress" / name);
     ASSERT_GT(s.triangleCount(), 0u);
     const HeatSolver solver = buildSolver(s);
     const SurfacePoint inside{0, {0.2, 0.3, 0.5}};
@@ -78,11 +78,10 @@ TEST(DataHeat, StiffMeshesGiveFiniteNonNegativeDistances) {
 }
 
 TEST(DataHeat, StressGridsMatchPlanarDistance) {
-  if (!std::filesystem::exists(kMeshes / "stress"))
-    GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  BAKE_SKIP_WITHOUT_DATA();
   for (const char* name : {"grid_flat_64.off", "grid_needles.off", "grid_obtuse.off", "grid_zero_area.off"}) {
     SCOPED_TRACE(name);
-    const Surface s = loadSurface(kMeshes / "stress" / name);
+    const Surface s = loadSurface((test::dataDir() / "meshes") / "stress" / name);
     ASSERT_GT(s.triangleCount(), 0u);
     const HeatSolver solver = buildSolver(s);
     const std::uint32_t source = s.triangles[s.triangleCount() / 2][0];
@@ -100,7 +99,7 @@ TEST(DataHeat, StressGridsMatchPlanarDistance) {
 }
 
 TEST(DataHeat, RealMeshesMatchExactDistances) {
-  if (!std::filesystem::exists(kMeshes / "real")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
+  BAKE_SKIP_WITHOUT_DATA();
   // The target is 1.5 % mean and 5 % max error (of the field's range). The heat method's largest
   // errors sit where fields meet or on coarse, thin parts, and three meshes exceed 5 % there: fertility
   // (4.5k vertices, thin handles; one source 1.7 % mean, 5.7 % max, as CGAL's intrinsic Delaunay heat
@@ -113,7 +112,7 @@ TEST(DataHeat, RealMeshesMatchExactDistances) {
                                                           {"teapot.obj", {0.015, 0.055}}};
   for (const auto& [name, bound] : meshes) {
     SCOPED_TRACE(name);
-    const Surface s = loadSurface(kMeshes / "real" / name);
+    const Surface s = loadSurface((test::dataDir() / "meshes") / "real" / name);
     ASSERT_GT(s.triangleCount(), 0u);
     const HeatSolver solver = buildSolver(s);
     const std::uint32_t a = firstVertexWithFace(s), b = s.triangles[s.triangleCount() / 2][1];
@@ -150,8 +149,8 @@ TEST(DataHeat, MillionTriangleSphereNeedsNoTuning) {
 }
 
 TEST(DataHeat, MillionTriangleBunnyNeedsNoTuning) {
-  if (!std::filesystem::exists(kMeshes / "real")) GTEST_SKIP() << "shared data set not found at " << kMeshes;
-  const Surface original = loadSurface(kMeshes / "real" / "stanford-bunny.obj");
+  BAKE_SKIP_WITHOUT_DATA();
+  const Surface original = loadSurface((test::dataDir() / "meshes") / "real" / "stanford-bunny.obj");
   ASSERT_GT(original.triangleCount(), 0u);
   std::vector<Vec3d> positions = original.positions;
   testing::Triangles triangles = original.triangles;
