@@ -14,13 +14,6 @@ namespace {
 namespace fmt = format::geodesic;
 using nlohmann::json;
 
-double largestReached(const std::vector<double>& distance) {
-  double largest = 0.0;
-  for (double d : distance)
-    if (d != kUnreachable) largest = std::max(largest, d);
-  return largest;
-}
-
 json describeSource(const SourceSpec& spec, const SurfacePoint& point, double snapDistance) {
   json source;
   switch (spec.kind) {

@@ -1,6 +1,7 @@
 // Solving the fields. Fields are independent, so they run in parallel (one field per task; each
 // solver is sequential and deterministic, so the output does not depend on the thread count). The
 // heat method pays its factorisation once for all fields.
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -16,6 +17,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+double largestReached(const std::vector<double>& distance) {
+  double largest = 0.0;
+  for (double d : distance)
+    if (d != kUnreachable) largest = std::max(largest, d);
+  return largest;
+}
 
 const char* methodName(Method method) {
   switch (method) {

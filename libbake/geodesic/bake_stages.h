@@ -35,6 +35,9 @@ struct SolveStats {
   nlohmann::json details = nlohmann::json::object();
 };
 
+// The largest distance that is not kUnreachable (0 when none is).
+double largestReached(const std::vector<double>& distance);
+
 // One distance vector per field, per surface vertex (kUnreachable where no path reaches).
 Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
                                                      const std::vector<ResolvedField>& fields,

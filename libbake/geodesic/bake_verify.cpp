@@ -21,6 +21,23 @@ namespace {
 
 constexpr unsigned kExactChecks = 8;
 
+// Mean and max of differences relative to the field's radius, over the sampled vertices.
+struct RelativeErrors {
+  double radius = 0.0;
+  double sum = 0.0;
+  FieldError& error;
+
+  void add(double difference) {
+    const double relative = radius > 0.0 ? difference / radius : difference;
+    sum += relative;
+    error.maxRelative = std::max(error.maxRelative, relative);
+  }
+  void finish(std::size_t samples) {
+    error.samples = samples;
+    error.meanRelative = samples == 0 ? 0.0 : sum / double(samples);
+  }
+};
+
 std::vector<std::uint32_t> sampleVertices(const std::vector<double>& exact, unsigned samples) {
   std::vector<std::uint32_t> reachable;
   for (std::uint32_t v = 0; v < exact.size(); ++v)
@@ -35,21 +52,13 @@ std::vector<std::uint32_t> sampleVertices(const std::vector<double>& exact, unsi
 
 FieldError compare(const std::vector<double>& field, const std::vector<double>& exact, unsigned samples) {
   FieldError error;
-  double radius = 0.0;
-  for (double d : exact)
-    if (d != kUnreachable) radius = std::max(radius, d);
+  const double radius = largestReached(exact);
   for (std::size_t v = 0; v < exact.size(); ++v)
     error.unreachableMismatches += (exact[v] == kUnreachable) != (field[v] == kUnreachable) ? 1 : 0;
   const std::vector<std::uint32_t> chosen = sampleVertices(exact, samples);
-  double sum = 0.0;
-  for (std::uint32_t v : chosen) {
-    const double difference = field[v] == kUnreachable ? radius : std::abs(field[v] - exact[v]);
-    const double relative = radius > 0.0 ? difference / radius : difference;
-    sum += relative;
-    error.maxRelative = std::max(error.maxRelative, relative);
-  }
-  error.samples = chosen.size();
-  error.meanRelative = chosen.empty() ? 0.0 : sum / double(chosen.size());
+  RelativeErrors errors{radius, 0.0, error};
+  for (std::uint32_t v : chosen) errors.add(field[v] == kUnreachable ? radius : std::abs(field[v] - exact[v]));
+  errors.finish(chosen.size());
   return error;
 }
 
@@ -81,23 +90,17 @@ FieldError checkExactField(const Surface& surface, const ResolvedField& field, c
   FieldError error;
   // A lone face-point source has no independent run: a forward run would repeat the computation.
   if (field.points.size() == 1 && field.points[0].vertex(surface) < 0) return error;
-  double radius = 0.0;
-  for (double d : distance)
-    if (d != kUnreachable) radius = std::max(radius, d);
+  const double radius = largestReached(distance);
   const std::vector<std::uint32_t> chosen = sampleVertices(distance, std::min(samples, kExactChecks));
   std::vector<std::vector<double>> forwardRuns(field.points.size());
-  double sum = 0.0;
+  RelativeErrors errors{radius, 0.0, error};
   for (std::uint32_t v : chosen) {
     // Paths longer than the field's value (plus slack for round-off) cannot be the shortest.
     const double bound = distance[v] * (1.0 + 1e-6) + 1e-12 * (radius + 1.0);
     const double reference = independentExactDistance(surface, field, v, bound, forwardRuns);
-    const double difference = reference == kUnreachable ? radius : std::abs(distance[v] - reference);
-    const double relative = radius > 0.0 ? difference / radius : difference;
-    sum += relative;
-    error.maxRelative = std::max(error.maxRelative, relative);
+    errors.add(reference == kUnreachable ? radius : std::abs(distance[v] - reference));
   }
-  error.samples = chosen.size();
-  error.meanRelative = chosen.empty() ? 0.0 : sum / double(chosen.size());
+  errors.finish(chosen.size());
   return error;
 }
 
