@@ -50,8 +50,20 @@ std::vector<std::uint8_t> readAll(const fs::path& path) {
                                  reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
+// CTest runs every test in its own process, in parallel: the folder carries the running test's full
+// name so two tests asking for the same name never remove each other's files.
+static std::string runningTestTag() {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  if (!info) return "no-test";
+  std::string tag = std::string(info->test_suite_name()) + "." + info->name();
+  for (char& c : tag) {
+    if (c == '/') c = '_';
+  }
+  return tag;
+}
+
 fs::path freshTempDir(const std::string& name) {
-  const fs::path dir = fs::path(BAKE_TEST_TMP) / name;
+  const fs::path dir = fs::path(BAKE_TEST_TMP) / runningTestTag() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

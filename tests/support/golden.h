@@ -20,7 +20,8 @@ bool updatingGoldens();
 ::testing::AssertionResult matchesGolden(const std::string& name, std::span<const std::uint8_t> bytes);
 ::testing::AssertionResult matchesGolden(const std::string& name, const std::string& text);
 
-// A fresh empty directory for one test (under the build tree).
+// A fresh empty directory for one test (under the build tree, inside a folder named after the
+// running test).
 std::filesystem::path freshTempDir(const std::string& name);
 
 std::vector<std::uint8_t> readAll(const std::filesystem::path& path);
