@@ -84,6 +84,11 @@ struct Package {
   std::vector<int> sceneRoots;  // empty: every node without a parent
   nlohmann::json materials = nlohmann::json::array();  // glTF material objects, kept as JSON
   nlohmann::json cameras = nlohmann::json::array();    // glTF camera objects, kept as JSON
+  // glTF images, textures and samplers, kept as JSON; an embedded image names its blob by
+  // "bufferView" (blob i is bufferView i).
+  nlohmann::json images = nlohmann::json::array();
+  nlohmann::json textures = nlohmann::json::array();
+  nlohmann::json samplers = nlohmann::json::array();
   nlohmann::json extensions = nlohmann::json::object();  // top-level extension objects by name
   std::vector<std::string> extensionsRequired;
   // Written as bufferViews 0..n-1, before any vertex data, so extensions refer to blob i as

@@ -441,6 +441,9 @@ Result<Package> toPackage(const Document& doc) {
   if (doc.root.contains("extensions") && doc.root["extensions"].is_object()) package.extensions = doc.root["extensions"];
   package.materials = arrayMember(doc.root, "materials");
   package.cameras = arrayMember(doc.root, "cameras");
+  package.images = arrayMember(doc.root, "images");
+  package.textures = arrayMember(doc.root, "textures");
+  package.samplers = arrayMember(doc.root, "samplers");
 
   for (std::size_t v = 0; v < arrayMember(doc.root, "bufferViews").size(); ++v) {
     BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, bufferViewBytes(doc, v));

@@ -316,6 +316,9 @@ Result<std::vector<std::uint8_t>> encode(const Package& package, const WriteOpti
   }
   if (!package.materials.empty()) root["materials"] = package.materials;
   if (!package.cameras.empty()) root["cameras"] = package.cameras;
+  if (!package.images.empty()) root["images"] = package.images;
+  if (!package.textures.empty()) root["textures"] = package.textures;
+  if (!package.samplers.empty()) root["samplers"] = package.samplers;
   if (!package.extensions.empty()) root["extensions"] = package.extensions;
   if (!bin.views().empty()) root["bufferViews"] = bin.views();
   if (!bin.data().empty()) root["buffers"] = json::array({{{"byteLength", bin.data().size()}}});

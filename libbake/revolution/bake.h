@@ -1,0 +1,43 @@
+// revolbake: a profile (vector polyline/arcs, SVG path, coverage image or a mesh of revolution) to a
+// BAKE_revolution package (formats/revolution.md): the signed shape map, the displacement map, the
+// measured projection choice, the safety margin, the proxy bands and the iteration budget that the
+// CPU march (identical to the shader) finds for the requested silhouette error.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/cli.h"
+#include "core/diagnostics.h"
+#include "core/status.h"
+#include "revolution/projection.h"
+#include "revolution/shape_map.h"
+
+namespace bake::revolution {
+
+enum class ProfileKind { Auto, Json, Csv, Svg, Image, Mesh };
+
+struct Settings {
+  std::string input;
+  std::string output;
+  ProfileKind kind = ProfileKind::Auto;  // Auto: by extension
+  std::string svgPathId;
+  double imageTexelSize = 0;  // image inputs: object units per pixel (0: 1 / image height)
+  int resolution = 1024;      // texels on the larger side of the shape map
+  int paddingTexels = 4;
+  DistanceEncoding encoding = DistanceEncoding::Unorm16;
+  std::string heightMap;      // optional image for the displacement map
+  double heightScale = 0.01;  // object units for H = 1
+  std::optional<Projection> projection;  // unset: measured choice
+  double repeatU = 0, repeatV = 0;       // 0: from the projection's recommended ratio
+  double targetError = 0.005;            // silhouette mismatch the iteration budget must reach
+  int proxyBands = 16;
+  double overRelaxation = 1.6;
+  std::string baseColorTexture;  // optional PNG embedded as the material's base colour
+  CommonOptions common;  // --report, --depfile, --threads, --quiet
+};
+
+// Bakes, writes the package (atomically), the --report and the --depfile.
+Status run(const Settings& settings, Diagnostics& diagnostics);
+
+}  // namespace bake::revolution
