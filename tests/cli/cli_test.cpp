@@ -215,6 +215,21 @@ class CliCase : public ::testing::TestWithParam<Case> {
           EXPECT_TRUE(answer.is_object() && answer.value("valid", false)) << path << ": " << name << ": " << answer.dump(2);
         }
       }
+      if (expected.contains("materialExtensionSchema")) {
+        // {"BAKE_x": "formats/x.schema.json"}: that extension of every material carrying it.
+        for (const auto& [name, schema] : expected["materialExtensionSchema"].items()) {
+          const json document = glbJson(path);
+          int checked = 0;
+          for (const json& material : document.value("materials", json::array())) {
+            if (!material.contains("extensions") || !material["extensions"].contains(name)) continue;
+            const fs::path extracted = tmp_ / (name + ".material" + std::to_string(checked++) + ".json");
+            std::ofstream(extracted) << material["extensions"][name].dump();
+            const json answer = runNodeChecker("check_schema.mjs", {(sourceDir() / schema.get<std::string>()).string(), extracted.string()});
+            EXPECT_TRUE(answer.is_object() && answer.value("valid", false)) << path << ": " << name << ": " << answer.dump(2);
+          }
+          EXPECT_GT(checked, 0) << path << ": no material carries " << name;
+        }
+      }
       if (expected.value("gltfValid", false)) {
         const json answer = runNodeChecker("validate_gltf.mjs", {path.string()});
         EXPECT_EQ(answer.is_object() ? answer.value("numErrors", -1) : -1, 0) << path << ": " << answer.dump(2);
