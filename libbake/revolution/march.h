@@ -69,6 +69,7 @@ struct MarchErrorSettings {
   int raysPerView = 128 * 128;
   int views = 6;
   std::vector<int> iterationBudgets{10, 15, 20, 25, 35, 50, 64, 96, 128, 192, 256};
+  unsigned threads = 0;  // 0: all hardware threads; results do not depend on it
 };
 std::vector<MarchErrorPoint> measureMarchError(const Profile& profile, const EncodedShapeMap& encoded,
                                                const ShapeGrid& grid, const std::vector<ProxyBand>& bands,
