@@ -36,6 +36,10 @@ struct ShapeField {
   std::vector<float> distance;  // width * height, row-major from hMin
   std::vector<float> gradR, gradH;
   std::vector<float> coverage;
+  // How the field was stored, when it comes from decodeShapeMap (scale 0: never encoded): the safety
+  // margin filters as the GPU does, i.e. the encoded values, and adds that encoding's step.
+  DistanceEncoding encoding = DistanceEncoding::Float;
+  double distanceScale = 0;
   float at(int i, int j) const { return distance[std::size_t(j) * grid.width + i]; }
 };
 

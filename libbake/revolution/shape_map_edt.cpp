@@ -1,0 +1,308 @@
+// Shape maps from images (shape_map.h).
+// Binary images: the exact Euclidean distance transform of Felzenszwalb & Huttenlocher ("Distance
+// transforms of sampled functions", Theory of Computing 2012, section 2): the squared distance is
+// separable, min over columns of (min over rows), and each 1D pass is the lower envelope of the
+// parabolas (q - v)^2 + f(v), built left to right in linear time. For a 0/inf input the column pass
+// reduces to the distance to the nearest feature in the column (two sweeps over the rows, all
+// columns at once); the row pass runs the envelope, rows in parallel. Both phases are transformed and
+// the surface put half a texel between inside and outside centres.
+// Anti-aliased images: after Gustavson & Strand ("Anti-aliased Euclidean distance transform",
+// Pattern Recognition Letters 2011): an edge texel's coverage a and the local edge direction give
+// the offset of the edge from its centre (the area cut from a unit square by a line), hence a
+// surface point; surface points are then propagated between neighbours in raster sweeps (as in
+// 8SSEDT), each texel keeping the nearest one. The edge direction is first the coverage gradient
+// (Sobel weights with sqrt 2) and is then refined from the gradient of the resulting distance.
+// The axis: the solid's mirror image across r = 0 is never nearer than the solid itself, so
+// mirroring matters only for the coverage gradient in column 0 (its left neighbour is itself).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/parallel.h"
+#include "revolution/shape_map.h"
+
+namespace bake::revolution {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// Lower envelope of parabolas over one line: d[q] = min_v (q - v)^2 + f[v]. `v`, `z` are scratch of
+// size n and n + 1.
+void envelope1d(const float* f, int n, float* d, int* v, double* z) {
+  int k = -1;
+  for (int q = 0; q < n; ++q) {
+    if (f[q] == kInf) continue;
+    const double fq = double(f[q]) + double(q) * q;
+    while (k >= 0) {
+      const int p = v[k];
+      const double s = (fq - (double(f[p]) + double(p) * p)) / (2.0 * (q - p));
+      if (s <= z[k]) {
+        --k;
+        continue;
+      }
+      break;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = k == 0 ? -std::numeric_limits<double>::infinity()
+                  : (fq - (double(f[v[k - 1]]) + double(v[k - 1]) * v[k - 1])) / (2.0 * (q - v[k - 1]));
+    z[k + 1] = std::numeric_limits<double>::infinity();
+  }
+  if (k < 0) {
+    std::fill(d, d + n, kInf);
+    return;
+  }
+  int j = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[j + 1] < q) ++j;
+    const double dq = double(q - v[j]);
+    d[q] = float(dq * dq + f[v[j]]);
+  }
+}
+
+// Column pass for a 0/inf image: squared distance to the nearest feature in the same column.
+void columnPass(std::vector<float>& f, int width, int height) {
+  // Sweep up, then down; rows are contiguous so all columns advance together.
+  std::vector<float> run(width, kInf);
+  for (int j = 0; j < height; ++j) {
+    float* row = f.data() + std::size_t(j) * width;
+    for (int i = 0; i < width; ++i) {
+      run[i] = row[i] == 0 ? 0.0f : run[i] + 1.0f;
+      row[i] = run[i];
+    }
+  }
+  std::fill(run.begin(), run.end(), kInf);
+  for (int j = height - 1; j >= 0; --j) {
+    float* row = f.data() + std::size_t(j) * width;
+    for (int i = 0; i < width; ++i) {
+      run[i] = row[i] == 0 ? 0.0f : std::min(row[i], run[i] + 1.0f);
+      row[i] = run[i] == kInf ? kInf : run[i] * run[i];
+    }
+  }
+}
+
+void rowPass(std::vector<float>& f, int width, int height) {
+  const std::size_t rowsPerBlock = std::max<std::size_t>(1, 16384 / std::max(1, width));
+  parallelForBlocks(std::size_t(height), rowsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
+    std::vector<float> line(width);
+    std::vector<int> v(width);
+    std::vector<double> z(width + 1);
+    for (std::size_t j = begin; j < end; ++j) {
+      float* row = f.data() + j * width;
+      std::copy(row, row + width, line.begin());
+      envelope1d(line.data(), width, row, v.data(), z.data());
+    }
+  });
+}
+
+bool insideAt(const CoverageImage& image, std::size_t k) { return image.coverage[k] >= 0.5f; }
+
+ShapeField emptyField(const CoverageImage& image) {
+  ShapeField field;
+  field.grid = {image.width, image.height, image.texelSize, image.hMin};
+  const std::size_t count = std::size_t(image.width) * image.height;
+  field.distance.assign(count, 0.0f);
+  field.gradR.assign(count, 0.0f);
+  field.gradH.assign(count, 0.0f);
+  field.coverage = image.coverage;
+  field.coverage.resize(count, 0.0f);
+  return field;
+}
+
+// Unit gradient of the stored distance by central differences (one-sided at the far edges,
+// mirrored at the axis).
+void gradientFromDistance(ShapeField& field) {
+  const int w = field.grid.width, h = field.grid.height;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int il = i == 0 ? 0 : i - 1, ir = std::min(w - 1, i + 1);
+      const int jd = std::max(0, j - 1), ju = std::min(h - 1, j + 1);
+      double gr = ir > il ? (field.at(ir, j) - field.at(il, j)) / (ir - il) : 0.0;
+      if (i == 0) gr = (field.at(1 < w ? 1 : 0, j) - field.at(0, j)) * 0.5;  // mirror: d(-r) = d(r)
+      const double gh = ju > jd ? (field.at(i, ju) - field.at(i, jd)) / (ju - jd) : 0.0;
+      const double len = std::hypot(gr, gh);
+      const std::size_t k = std::size_t(j) * w + i;
+      field.gradR[k] = len > 0 ? float(gr / len) : 1.0f;
+      field.gradH[k] = len > 0 ? float(gh / len) : 0.0f;
+    }
+}
+
+}  // namespace
+
+void squaredEdt2d(std::vector<float>& f, int width, int height) {
+  if (width <= 0 || height <= 0) return;
+  columnPass(f, width, height);
+  rowPass(f, width, height);
+}
+
+bool isBinary(const CoverageImage& image) {
+  for (float a : image.coverage)
+    if (a != 0.0f && a != 1.0f) return false;
+  return true;
+}
+
+ShapeField distanceFromBinary(const CoverageImage& image) {
+  ShapeField field = emptyField(image);
+  const std::size_t count = field.distance.size();
+  std::vector<float> toInside(count), toOutside(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const bool inside = insideAt(image, k);
+    toInside[k] = inside ? 0.0f : kInf;
+    toOutside[k] = inside ? kInf : 0.0f;
+  }
+  squaredEdt2d(toInside, image.width, image.height);
+  squaredEdt2d(toOutside, image.width, image.height);
+  // No texel of the other phase at all: the distance is unbounded; store a large finite value.
+  const float far = float(2.0 * (image.width + image.height));
+  for (std::size_t k = 0; k < count; ++k) {
+    const bool inside = insideAt(image, k);
+    const float squared = inside ? toOutside[k] : toInside[k];
+    const float texels = squared == kInf ? far : std::sqrt(squared) - 0.5f;
+    field.distance[k] = float((inside ? -texels : texels) * image.texelSize);
+  }
+  gradientFromDistance(field);
+  return field;
+}
+
+namespace {
+
+struct Vec {
+  double x = 0, y = 0;
+};
+
+// Offset (in texels, along the unit normal n pointing into the solid) from a texel centre to a
+// straight edge that covers the fraction a of the texel. With |nx| >= |ny| the covered area is a
+// quadratic of the offset while the line cuts a corner (a < ny / (2 nx)) and linear while it crosses
+// two opposite sides; inverting gives the offset. Positive: the centre is outside.
+double edgeOffset(double a, Vec n) {
+  double gx = std::abs(n.x), gy = std::abs(n.y);
+  if (gx < gy) std::swap(gx, gy);
+  if (gy < 1e-9) return 0.5 - a;
+  const double corner = 0.5 * gy / gx;
+  if (a < corner) return 0.5 * (gx + gy) - std::sqrt(2.0 * gx * gy * a);
+  if (a < 1.0 - corner) return (0.5 - a) * gx;
+  return -0.5 * (gx + gy) + std::sqrt(2.0 * gx * gy * (1.0 - a));
+}
+
+struct Propagation {
+  int width = 0, height = 0;
+  std::vector<Vec> surface;    // nearest surface point known, texel units
+  std::vector<double> dist2;   // squared distance to it
+};
+
+void offer(Propagation& p, int i, int j, int ni, int nj) {
+  if (ni < 0 || nj < 0 || ni >= p.width || nj >= p.height) return;
+  const std::size_t from = std::size_t(nj) * p.width + ni;
+  if (p.dist2[from] == std::numeric_limits<double>::infinity()) return;
+  const std::size_t to = std::size_t(j) * p.width + i;
+  const Vec s = p.surface[from];
+  const double dx = i + 0.5 - s.x, dy = j + 0.5 - s.y;
+  const double d2 = dx * dx + dy * dy;
+  if (d2 < p.dist2[to]) {
+    p.dist2[to] = d2;
+    p.surface[to] = s;
+  }
+}
+
+// Raster sweeps: bottom-up with the row below and left/right, then top-down with the row above.
+void propagate(Propagation& p) {
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int j = 0; j < p.height; ++j) {
+      for (int i = 0; i < p.width; ++i) {
+        offer(p, i, j, i - 1, j - 1);
+        offer(p, i, j, i, j - 1);
+        offer(p, i, j, i + 1, j - 1);
+        offer(p, i, j, i - 1, j);
+      }
+      for (int i = p.width - 1; i >= 0; --i) offer(p, i, j, i + 1, j);
+    }
+    for (int j = p.height - 1; j >= 0; --j) {
+      for (int i = p.width - 1; i >= 0; --i) {
+        offer(p, i, j, i + 1, j + 1);
+        offer(p, i, j, i, j + 1);
+        offer(p, i, j, i - 1, j + 1);
+        offer(p, i, j, i + 1, j);
+      }
+      for (int i = 0; i < p.width; ++i) offer(p, i, j, i - 1, j);
+    }
+  }
+}
+
+}  // namespace
+
+ShapeField distanceFromCoverage(const CoverageImage& image) {
+  ShapeField field = emptyField(image);
+  const int w = image.width, h = image.height;
+  if (w == 0 || h == 0) return field;
+  auto a = [&](int i, int j) {
+    if (i < 0) i = -i - 1;  // mirrored at the axis
+    i = std::min(i, w - 1);
+    j = std::clamp(j, 0, h - 1);
+    return double(std::clamp(image.coverage[std::size_t(j) * w + i], 0.0f, 1.0f));
+  };
+  // Edge texels: fractional coverage, or a full/empty texel with a 4-neighbour of the other phase.
+  std::vector<std::size_t> edges;
+  std::vector<Vec> normal(std::size_t(w) * h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const double c = a(i, j);
+      bool edge = c > 0 && c < 1;
+      for (auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+        if (!edge && (j + dj >= 0 && j + dj < h && i + di < w)) edge = (a(i + di, j + dj) >= 0.5) != (c >= 0.5);
+      if (!edge) continue;
+      const double s2 = std::sqrt(2.0);
+      const double gx = (a(i + 1, j - 1) + s2 * a(i + 1, j) + a(i + 1, j + 1)) -
+                        (a(i - 1, j - 1) + s2 * a(i - 1, j) + a(i - 1, j + 1));
+      const double gy = (a(i - 1, j + 1) + s2 * a(i, j + 1) + a(i + 1, j + 1)) -
+                        (a(i - 1, j - 1) + s2 * a(i, j - 1) + a(i + 1, j - 1));
+      const double len = std::hypot(gx, gy);
+      const std::size_t k = std::size_t(j) * w + i;
+      normal[k] = len > 0 ? Vec{gx / len, gy / len} : Vec{0, 0};
+      edges.push_back(k);
+    }
+  Propagation p;
+  p.width = w;
+  p.height = h;
+  const int refinements = 2;
+  for (int round = 0; round <= refinements; ++round) {
+    p.surface.assign(std::size_t(w) * h, Vec{});
+    p.dist2.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
+    for (std::size_t k : edges) {
+      const int i = int(k % w), j = int(k / w);
+      const Vec n = normal[k];
+      const double offset = edgeOffset(a(i, j), n);
+      p.surface[k] = {i + 0.5 + offset * n.x, j + 0.5 + offset * n.y};
+      p.dist2[k] = offset * offset;
+    }
+    propagate(p);
+    const double far = 2.0 * (w + h);  // no edge at all: unbounded, stored large and finite
+    for (std::size_t k = 0; k < p.dist2.size(); ++k) {
+      const bool inside = image.coverage[k] >= 0.5f;
+      const double d = std::isfinite(p.dist2[k]) ? std::sqrt(p.dist2[k]) : far;
+      field.distance[k] = float((inside ? -d : d) * image.texelSize);
+    }
+    if (round == refinements) break;
+    // Refine the edge normals: the direction from each edge texel's neighbours' surface points is
+    // smoother than the coverage gradient; use the gradient of the distance just computed.
+    gradientFromDistance(field);
+    for (std::size_t k : edges) normal[k] = {-double(field.gradR[k]), -double(field.gradH[k])};
+  }
+  // Gradient: from the nearest surface point, pointing out of the solid.
+  for (std::size_t k = 0; k < p.dist2.size(); ++k) {
+    const int i = int(k % w), j = int(k / w);
+    const double dx = i + 0.5 - p.surface[k].x, dy = j + 0.5 - p.surface[k].y;
+    const double len = std::hypot(dx, dy);
+    const bool inside = image.coverage[k] >= 0.5f;
+    if (len > 1e-9 && std::isfinite(len)) {
+      field.gradR[k] = float((inside ? -dx : dx) / len);
+      field.gradH[k] = float((inside ? -dy : dy) / len);
+    } else {
+      const std::size_t kk = k;
+      field.gradR[kk] = float(-normal[kk].x);
+      field.gradH[kk] = float(-normal[kk].y);
+    }
+  }
+  return field;
+}
+
+}  // namespace bake::revolution
