@@ -6,8 +6,11 @@
 // radius is the outer edge of the farthest such texel among the band's rows, widened by the margin
 // plus a quarter texel for the hit epsilon
 // (and by the rows within that reach above and below) because the march stops at distance
-// `margin` from the solid, not at the solid itself.
+// `margin` from the solid, not at the solid itself. The band boundaries are chosen by dynamic
+// programming over the rows for the least total band volume (O(bands x rows^2) additions), so bands
+// are thin where the radius changes fast and tall where it does not.
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -64,21 +67,48 @@ std::vector<ProxyBand> buildProxyBands(const ShapeField& field, int bandCount, d
   std::vector<ProxyBand> bands;
   if (g.width <= 0 || g.height <= 0 || field.distance.size() != std::size_t(g.width) * g.height) return bands;
   bandCount = std::clamp(bandCount, 1, std::min(g.height, format::revolution::kMaxProxyBands));
-  std::vector<double> extent(g.height);
-  for (int j = 0; j < g.height; ++j) extent[j] = rowExtent(field, j);
-  // The march stops up to margin + hit epsilon (a small fraction of a texel) from the solid.
+  // The march stops up to margin + hit epsilon (a small fraction of a texel) from the solid, so a row
+  // must also cover the solid of the rows within that reach.
   const double reach = std::max(margin, 0.0) + kHitSlackTexels * g.texelSize;
   const int reachRows = int(std::ceil(reach / g.texelSize));
+  std::vector<double> extent(g.height), covered(g.height, 0);
+  for (int j = 0; j < g.height; ++j) extent[j] = rowExtent(field, j);
+  for (int j = 0; j < g.height; ++j)
+    for (int k = std::max(0, j - reachRows); k < std::min(g.height, j + reachRows + 1); ++k)
+      covered[j] = std::max(covered[j], extent[k]);
+  auto radiusOf = [&](double widest) { return widest > 0 ? widest + reach : 0.0; };  // 0: no solid
+
+  // Band boundaries by dynamic programming over the rows: the least total volume sum(R^2 rows),
+  // the empty space a ray can cross inside the bands.
+  const int n = g.height;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> cost(std::size_t(n + 1), inf), next(std::size_t(n + 1));
+  std::vector<std::vector<int>> split(bandCount + 1, std::vector<int>(n + 1, 0));
+  cost[0] = 0;
+  for (int b = 1; b <= bandCount; ++b) {
+    std::fill(next.begin(), next.end(), inf);
+    for (int j = b; j <= n; ++j) {
+      double widest = 0;
+      for (int i = j - 1; i >= b - 1; --i) {  // band = rows [i, j)
+        widest = std::max(widest, covered[i]);
+        const double radius = radiusOf(widest);
+        const double total = cost[i] + radius * radius * (j - i);
+        if (total < next[j]) next[j] = total, split[b][j] = i;
+      }
+    }
+    cost.swap(next);
+  }
+  std::vector<int> edges{n};
+  for (int b = bandCount, j = n; b >= 1; --b) edges.push_back(j = split[b][j]);
+  std::reverse(edges.begin(), edges.end());
   for (int b = 0; b < bandCount; ++b) {
-    // Bands on row boundaries, as equal as the rows allow.
-    const int j0 = int(std::int64_t(g.height) * b / bandCount);
-    const int j1 = int(std::int64_t(g.height) * (b + 1) / bandCount);
-    double r = 0;
-    for (int j = std::max(0, j0 - reachRows); j < std::min(g.height, j1 + reachRows); ++j) r = std::max(r, extent[j]);
+    const int j0 = edges[b], j1 = edges[b + 1];
+    double widest = 0;
+    for (int j = j0; j < j1; ++j) widest = std::max(widest, covered[j]);
     ProxyBand band;
     band.hMin = g.hMin + j0 * g.texelSize;
     band.hMax = g.hMin + j1 * g.texelSize;
-    band.rMax = r > 0 ? r + reach : 0;  // 0: the band holds no solid
+    band.rMax = radiusOf(widest);
     bands.push_back(band);
   }
   return bands;
