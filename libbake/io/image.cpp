@@ -6,11 +6,14 @@
 // Two OIIO defaults would break exact round trips of data images (normal maps, masks) and are turned
 // off: PNG alpha is kept unassociated (OIIO would premultiply on read and divide on write), and EXR
 // compression is pinned so the bytes do not depend on OIIO's default. Nothing time-dependent is
-// written (no DateTime, no Software), so equal images give equal files.
+// written (no DateTime, no Software), so equal images give equal files. Images embedded in packages are
+// read from memory through OIIO's IOMemReader proxy where the format's reader takes one, else through a
+// private temporary file, with the same conversions.
 #include "io/image.h"
 
 #include "core/path.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -227,20 +230,14 @@ Status readPixels(OIIO::ImageInput& in, Image& image, const fs::path& path) {
   return {};
 }
 
-}  // namespace
-
-Result<Image> readImage(const fs::path& path) {
-  BAKE_RETURN_IF_ERROR(checkReadable(path));
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);  // keep PNG colour as stored, not premultiplied
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string(), &config);
-  if (!in) return invalidInput("cannot read the image: " + globalOiioError(), {path.string(), ""});
-
+// Reads the opened image; `name` is the file (or the embedded image) errors name.
+Result<Image> readOpened(std::unique_ptr<OIIO::ImageInput> in, const fs::path& name) {
+  if (!in) return invalidInput("cannot read the image: " + globalOiioError(), {name.string(), ""});
   const OIIO::ImageSpec& spec = in->spec();
-  if (spec.deep) return unsupported("deep images are not supported", {path.string(), ""});
-  if (spec.depth > 1) return unsupported("volume images are not supported", {path.string(), ""});
+  if (spec.deep) return unsupported("deep images are not supported", {name.string(), ""});
+  if (spec.depth > 1) return unsupported("volume images are not supported", {name.string(), ""});
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-    return invalidInput("the image has no pixels", {path.string(), ""});
+    return invalidInput("the image has no pixels", {name.string(), ""});
   }
 
   Image image;
@@ -253,11 +250,69 @@ Result<Image> readImage(const fs::path& path) {
   } catch (const std::bad_alloc&) {
     return unsupported("the image is too large to hold in memory (" + std::to_string(spec.width) + "x" +
                            std::to_string(spec.height) + ")",
-                       {path.string(), ""});
+                       {name.string(), ""});
   }
-  BAKE_RETURN_IF_ERROR(readPixels(*in, image, path));
+  BAKE_RETURN_IF_ERROR(readPixels(*in, image, name));
   in->close();
   return image;
+}
+
+OIIO::ImageSpec readConfig() {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // keep PNG colour as stored, not premultiplied
+  return config;
+}
+
+}  // namespace
+
+Result<Image> readImage(const fs::path& path) {
+  BAKE_RETURN_IF_ERROR(checkReadable(path));
+  const OIIO::ImageSpec config = readConfig();
+  return readOpened(OIIO::ImageInput::open(path.string(), &config), path);
+}
+
+namespace {
+
+// For readers without proxy support (OIIO 2.4's PNG reader): the bytes go through a private
+// temporary file, removed again whatever happens.
+Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::string& name,
+                              const std::string& extension) {
+  std::string pattern = (fs::temp_directory_path() / ("bake-image.XXXXXX" + extension)).string();
+  const int fd = ::mkstemps(pattern.data(), int(extension.size()));
+  if (fd < 0) return ioError(std::string("cannot create a temporary file: ") + std::strerror(errno), {name, ""});
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n <= 0) break;
+    written += std::size_t(n);
+  }
+  ::close(fd);
+  Result<Image> image = written == bytes.size()
+                            ? readImage(pattern)
+                            : Result<Image>(ioError("cannot write a temporary file", {name, ""}));
+  ::unlink(pattern.c_str());
+  if (!image.isOk()) return Status(image.status().code(), image.status().message(), {name, ""});
+  return image;
+}
+
+}  // namespace
+
+Result<Image> readImageFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                  const std::string& extension) {
+  if (bytes.empty()) return invalidInput("the image holds no bytes", {name, ""});
+  // OIIO picks its reader by the name's extension, then reads through the proxy, not the file system.
+  OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+  const std::string pseudoName = "memory" + extension;
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create(pseudoName);
+  if (!in || !in->supports("ioproxy") || !in->set_ioproxy(&reader)) {
+    (void)OIIO::geterror();  // a failed create leaves a message behind
+    return readThroughFile(bytes, name, extension);
+  }
+  OIIO::ImageSpec spec;
+  if (!in->open(pseudoName, spec, readConfig())) {
+    return invalidInput("cannot read the image: " + oiioErrorOf(*in), {name, ""});
+  }
+  return readOpened(std::move(in), name);
 }
 
 Status writeImage(const fs::path& path, const Image& image, PixelType type) {

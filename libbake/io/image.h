@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct Image {
 };
 
 Result<Image> readImage(const std::filesystem::path& path);
+// An encoded image held in memory (e.g. a PNG embedded in a glTF package); `extension` (".png")
+// chooses the decoder, `name` is what errors name.
+Result<Image> readImageFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
+                                  const std::string& extension);
 // The file format follows the extension (.png, .exr, ...). PNG accepts U8/U16, EXR Half/Float.
 Status writeImage(const std::filesystem::path& path, const Image& image, PixelType type);
 

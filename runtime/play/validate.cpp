@@ -10,6 +10,7 @@
 #include "io/image.h"
 #include "render/geodesic.h"
 #include "render/renderer.h"
+#include "render/revolution.h"
 #include "render/target.h"
 #include "scene/scene.h"
 
@@ -193,6 +194,7 @@ Status checkPackageStructure(const glb::Package& package, const std::string& nam
     BAKE_RETURN_IF_ERROR(checkVendorExtensions(package.materials[i], {name, "material " + std::to_string(i)}));
   }
   BAKE_RETURN_IF_ERROR(checkGeodesicPackage(package, name));
+  BAKE_RETURN_IF_ERROR(checkRevolutionPackage(package, name));
   return {};
 }
 

@@ -3,6 +3,7 @@
 #include <GL/glcorearb.h>
 
 #include "render/geodesic.h"
+#include "render/revolution.h"
 #include "render/standard.h"
 
 namespace bake::play {
@@ -13,6 +14,7 @@ const RendererRegistry& RendererRegistry::builtIn() {
     r.add("", [] { return std::make_unique<StandardRenderer>(); });
     // Technique renderers register here: r.add("BAKE_<technique>", ...).
     r.add("BAKE_geodesic", [] { return std::make_unique<GeodesicRenderer>(); });
+    r.add("BAKE_revolution", [] { return std::make_unique<RevolutionRenderer>(); });
     return r;
   }();
   return registry;

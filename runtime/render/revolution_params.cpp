@@ -1,0 +1,307 @@
+// Reading and checking a BAKE_revolution material (formats/revolution.md, constants in
+// bake_formats/revolution.h). The runtime trusts nothing it uploads: every bufferView must exist and
+// hold exactly width * height texels of its encoding, numbers must be finite and in range, proxy
+// bands well-formed and no more than the shader's array holds. Each error names the material and the
+// field at fault, so `bakeplay validate` says what is wrong, not just that something is.
+#include <bake_formats/revolution.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/revolution.h"
+
+namespace bake::play {
+namespace {
+
+namespace fmt = format::revolution;
+
+// Field access with errors that name the field by its path in the extension ("shapeMap.width").
+class Fields {
+ public:
+  Fields(const nlohmann::json& body, std::string path, const Location& where)
+      : body_(body), path_(std::move(path)), where_(where) {}
+
+  Status error(const std::string& field, const std::string& message) const {
+    return invalidInput(std::string(fmt::kExtension) + " " + name(field) + " " + message, where_);
+  }
+  bool has(const char* key) const { return body_.is_object() && body_.contains(key); }
+  const nlohmann::json& at(const char* key) const { return body_[key]; }
+
+  Result<double> number(const char* key, double lo, double hi) const {
+    if (!has(key)) return error(key, "is missing");
+    const nlohmann::json& v = body_[key];
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      return error(key, "must be a finite number, not " + v.dump());
+    const double x = v.get<double>();
+    if (x < lo || x > hi) return error(key, "is " + v.dump() + "; it must be in [" + text(lo) + ", " + text(hi) + "]");
+    return x;
+  }
+  Result<double> positive(const char* key, double hi = 1e30) const {
+    BAKE_ASSIGN_OR_RETURN(const double x, number(key, 0, hi));
+    if (!(x > 0)) return error(key, "must be positive");
+    return x;
+  }
+  Result<int> integer(const char* key, long long lo, long long hi) const {
+    if (!has(key)) return error(key, "is missing");
+    const nlohmann::json& v = body_[key];
+    if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+      return error(key, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + v.dump());
+    return int(v.get<long long>());
+  }
+  Result<std::string> string(const char* key) const {
+    if (!has(key)) return error(key, "is missing");
+    if (!body_[key].is_string()) return error(key, "must be a string, not " + body_[key].dump());
+    return body_[key].get<std::string>();
+  }
+  Result<Fields> object(const char* key) const {
+    if (!has(key)) return error(key, "is missing");
+    if (!body_[key].is_object()) return error(key, "must be an object");
+    return Fields(body_[key], name(key), where_);
+  }
+  std::string name(const std::string& field) const { return path_.empty() ? field : path_ + "." + field; }
+
+ private:
+  static std::string text(double v) {
+    char out[32];
+    std::snprintf(out, sizeof out, "%g", v);
+    return out;
+  }
+  const nlohmann::json& body_;
+  std::string path_;
+  Location where_;
+};
+
+// A bufferView that must hold `texels` texels of `texelBytes` bytes each.
+Status checkBufferView(const Fields& in, const char* key, int index, const glb::Package& package,
+                       std::size_t texels, std::size_t texelBytes, const std::string& layout) {
+  if (index < 0 || std::size_t(index) >= package.blobs.size()) {
+    return in.error(key, "is " + std::to_string(index) + " but the package has " +
+                             std::to_string(package.blobs.size()) + " bufferViews");
+  }
+  const std::size_t expected = texels * texelBytes;
+  const std::size_t actual = package.blobs[std::size_t(index)].bytes.size();
+  if (actual != expected) {
+    return in.error(key, "(bufferView " + std::to_string(index) + ") holds " + std::to_string(actual) +
+                             " bytes; " + layout + " needs " + std::to_string(expected));
+  }
+  return {};
+}
+
+std::size_t texelBytesOf(ShapeEncoding encoding) {
+  return encoding == ShapeEncoding::Float ? 16 : encoding == ShapeEncoding::Unorm16 ? 8 : 4;
+}
+
+Status readShapeMap(const Fields& root, const glb::Package& package, RevolutionParams::ShapeMap& map) {
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("shapeMap"));
+  BAKE_ASSIGN_OR_RETURN(map.width, in.integer("width", 1, 16384));
+  BAKE_ASSIGN_OR_RETURN(map.height, in.integer("height", 1, 16384));
+  BAKE_ASSIGN_OR_RETURN(const double texel, in.positive("texelSize"));
+  map.texelSize = float(texel);
+  BAKE_ASSIGN_OR_RETURN(const double hMin, in.number("hMin", -1e30, 1e30));
+  map.hMin = float(hMin);
+  BAKE_ASSIGN_OR_RETURN(const std::string encoding, in.string("encoding"));
+  if (encoding == fmt::kEncodingFloat) {
+    map.encoding = ShapeEncoding::Float;
+  } else if (encoding == fmt::kEncodingUnorm16) {
+    map.encoding = ShapeEncoding::Unorm16;
+  } else if (encoding == fmt::kEncodingSqrt8) {
+    map.encoding = ShapeEncoding::Sqrt8;
+  } else {
+    return in.error("encoding", "is \"" + encoding + "\"; known: float, unorm16, sqrt8");
+  }
+  if (map.encoding != ShapeEncoding::Float) {
+    BAKE_ASSIGN_OR_RETURN(const double scale, in.positive("distanceScale"));
+    map.distanceScale = float(scale);
+  }
+  BAKE_ASSIGN_OR_RETURN(map.bufferView, in.integer("bufferView", 0, 1 << 30));
+  return checkBufferView(in, "bufferView", map.bufferView, package,
+                         std::size_t(map.width) * std::size_t(map.height), texelBytesOf(map.encoding),
+                         std::to_string(map.width) + "x" + std::to_string(map.height) + " RGBA " + encoding);
+}
+
+Status readMarch(const Fields& root, RevolutionParams& params) {
+  BAKE_ASSIGN_OR_RETURN(const double margin, root.number("safetyMargin", 0, 1e30));
+  params.safetyMargin = float(margin);
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("march"));
+  BAKE_ASSIGN_OR_RETURN(params.iterations, in.integer("iterations", 1, 4096));
+  params.overRelaxation = fmt::kDefaultOverRelaxation;
+  if (in.has("overRelaxation")) {
+    // omega < 2 keeps the undo test of over-relaxed sphere tracing meaningful (Keinert et al. 2014).
+    BAKE_ASSIGN_OR_RETURN(const double omega, in.number("overRelaxation", 1, 1.999));
+    params.overRelaxation = float(omega);
+  }
+  params.hitEpsilon = fmt::kHitEpsilonTexels * params.shapeMap.texelSize;
+  if (in.has("hitEpsilon")) {
+    BAKE_ASSIGN_OR_RETURN(const double epsilon, in.number("hitEpsilon", 0, 1e30));
+    params.hitEpsilon = float(epsilon);
+  }
+  return {};
+}
+
+Status readBands(const Fields& root, RevolutionParams& params) {
+  if (!root.has("proxyBands")) return {};
+  const nlohmann::json& list = root.at("proxyBands");
+  if (!list.is_array()) return root.error("proxyBands", "must be a list of [hMin, hMax, rMax]");
+  if (list.size() > std::size_t(fmt::kMaxProxyBands)) {
+    return root.error("proxyBands", "holds " + std::to_string(list.size()) + " bands; at most " +
+                                        std::to_string(fmt::kMaxProxyBands) + " are allowed");
+  }
+  for (std::size_t b = 0; b < list.size(); ++b) {
+    const std::string field = "proxyBands[" + std::to_string(b) + "]";
+    const nlohmann::json& band = list[b];
+    if (!band.is_array() || band.size() != 3) return root.error(field, "must be [hMin, hMax, rMax]");
+    std::array<float, 3> values{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!band[k].is_number() || !std::isfinite(band[k].get<double>()))
+        return root.error(field, "must hold three finite numbers, not " + band.dump());
+      values[k] = band[k].get<float>();
+    }
+    if (!(values[0] < values[1])) return root.error(field, "has hMin >= hMax: " + band.dump());
+    if (!(values[2] > 0)) return root.error(field, "has rMax <= 0: " + band.dump());
+    params.proxyBands.push_back(values);
+  }
+  return {};
+}
+
+Status readDisplacement(const Fields& root, const glb::Package& package, RevolutionParams& params) {
+  if (!root.has("displacementMap")) return {};
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("displacementMap"));
+  RevolutionParams::Displacement d;
+  BAKE_ASSIGN_OR_RETURN(d.width, in.integer("width", 1, 16384));
+  BAKE_ASSIGN_OR_RETURN(d.height, in.integer("height", 1, 16384));
+  BAKE_ASSIGN_OR_RETURN(const double scale, in.number("derivativeScale", 0, 1e30));
+  d.derivativeScale = float(scale);
+  if (in.has("heightScale")) {
+    BAKE_ASSIGN_OR_RETURN(const double height, in.number("heightScale", 0, 1e30));
+    d.heightScale = float(height);
+  }
+  BAKE_ASSIGN_OR_RETURN(d.bufferView, in.integer("bufferView", 0, 1 << 30));
+  BAKE_RETURN_IF_ERROR(checkBufferView(in, "bufferView", d.bufferView, package,
+                                       std::size_t(d.width) * std::size_t(d.height), 4,
+                                       std::to_string(d.width) + "x" + std::to_string(d.height) + " RG unorm16"));
+  params.displacement = d;
+  return {};
+}
+
+Status readProjection(const Fields& root, const glb::Package& package, RevolutionParams& params) {
+  const RevolutionParams::ShapeMap& map = params.shapeMap;
+  params.sphereCentreH = 0.5f * (map.hMin + map.hMax());
+  if (root.has("projection")) {
+    BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("projection"));
+    BAKE_ASSIGN_OR_RETURN(const std::string type, in.string("type"));
+    if (type == fmt::kProjectionCylindrical) {
+      params.projection = RevolutionProjection::Cylindrical;
+    } else if (type == fmt::kProjectionSpherical) {
+      params.projection = RevolutionProjection::Spherical;
+    } else if (type == fmt::kProjectionArcLength) {
+      params.projection = RevolutionProjection::ArcLength;
+    } else {
+      return in.error("type", "is \"" + type + "\"; known: cylindrical, spherical, arc-length");
+    }
+    if (in.has("repeat")) {
+      const nlohmann::json& repeat = in.at("repeat");
+      if (!repeat.is_array() || repeat.size() != 2 || !repeat[0].is_number() || !repeat[1].is_number() ||
+          !std::isfinite(repeat[0].get<double>()) || !std::isfinite(repeat[1].get<double>()) ||
+          !(repeat[0].get<double>() > 0) || !(repeat[1].get<double>() > 0)) {
+        return in.error("repeat", "must be [u, v], two positive numbers, not " + repeat.dump());
+      }
+      params.repeat = {repeat[0].get<float>(), repeat[1].get<float>()};
+    }
+    if (in.has("sphereCentreH")) {
+      BAKE_ASSIGN_OR_RETURN(const double centre, in.number("sphereCentreH", -1e30, 1e30));
+      params.sphereCentreH = float(centre);
+    }
+  }
+  if (root.has("arcLengthMap")) {
+    BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("arcLengthMap"));
+    BAKE_ASSIGN_OR_RETURN(const int view, in.integer("bufferView", 0, 1 << 30));
+    BAKE_RETURN_IF_ERROR(checkBufferView(in, "bufferView", view, package,
+                                         std::size_t(map.width) * std::size_t(map.height), 2,
+                                         "one R unorm16 per shape-map texel"));
+    params.arcLengthBufferView = view;
+  }
+  if (params.projection == RevolutionProjection::ArcLength && !params.arcLengthBufferView) {
+    return root.error("arcLengthMap", "is missing; the arc-length projection reads it");
+  }
+  return {};
+}
+
+}  // namespace
+
+const char* shapeEncodingName(ShapeEncoding encoding) {
+  switch (encoding) {
+    case ShapeEncoding::Float: return fmt::kEncodingFloat;
+    case ShapeEncoding::Unorm16: return fmt::kEncodingUnorm16;
+    case ShapeEncoding::Sqrt8: return fmt::kEncodingSqrt8;
+  }
+  return "";
+}
+
+const char* revolutionProjectionName(RevolutionProjection projection) {
+  switch (projection) {
+    case RevolutionProjection::Cylindrical: return fmt::kProjectionCylindrical;
+    case RevolutionProjection::Spherical: return fmt::kProjectionSpherical;
+    case RevolutionProjection::ArcLength: return fmt::kProjectionArcLength;
+  }
+  return "";
+}
+
+Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const glb::Package& package,
+                                         const Location& where) {
+  const Fields root(extension, "", where);
+  if (!extension.is_object()) return invalidInput(std::string(fmt::kExtension) + " must be an object", where);
+  BAKE_ASSIGN_OR_RETURN(const int version, root.integer("version", 1, 1 << 30));
+  if (version != fmt::kVersion) {
+    return unsupported(std::string(fmt::kExtension) + " version " + std::to_string(version) +
+                           " is not known to this runtime (it reads version " + std::to_string(fmt::kVersion) + ")",
+                       where);
+  }
+  RevolutionParams params;
+  BAKE_RETURN_IF_ERROR(readShapeMap(root, package, params.shapeMap));
+  BAKE_RETURN_IF_ERROR(readMarch(root, params));
+  BAKE_RETURN_IF_ERROR(readBands(root, params));
+  BAKE_RETURN_IF_ERROR(readDisplacement(root, package, params));
+  BAKE_RETURN_IF_ERROR(readProjection(root, package, params));
+  return params;
+}
+
+namespace {
+
+// The embedded image behind a material's baseColorTexture: textures[i].source -> images[j], which
+// must name a bufferView (external URIs are not part of a package).
+Status checkBaseColourTexture(const nlohmann::json& material, const glb::Package& package, const Location& where) {
+  const nlohmann::json pbr = material.value("pbrMetallicRoughness", nlohmann::json::object());
+  if (!pbr.is_object() || !pbr.contains("baseColorTexture")) return {};
+  const nlohmann::json& info = pbr["baseColorTexture"];
+  const int texture = info.is_object() && info.value("index", nlohmann::json()).is_number_integer()
+                          ? info["index"].get<int>()
+                          : -1;
+  if (texture < 0 || std::size_t(texture) >= package.textures.size())
+    return invalidInput("pbrMetallicRoughness.baseColorTexture names no texture of the package", where);
+  const nlohmann::json& t = package.textures[std::size_t(texture)];
+  const int image = t.value("source", nlohmann::json()).is_number_integer() ? t["source"].get<int>() : -1;
+  if (image < 0 || std::size_t(image) >= package.images.size())
+    return invalidInput("texture " + std::to_string(texture) + " has no image source", where);
+  const nlohmann::json& i = package.images[std::size_t(image)];
+  const int view = i.value("bufferView", nlohmann::json()).is_number_integer() ? i["bufferView"].get<int>() : -1;
+  if (view < 0 || std::size_t(view) >= package.blobs.size())
+    return invalidInput("image " + std::to_string(image) + " (base colour) is not embedded in a bufferView", where);
+  return {};
+}
+
+}  // namespace
+
+Status checkRevolutionPackage(const glb::Package& package, const std::string& name) {
+  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+    const nlohmann::json& material = package.materials[m];
+    if (!material.is_object() || !material.contains("extensions") || !material["extensions"].is_object() ||
+        !material["extensions"].contains(fmt::kExtension))
+      continue;
+    const Location where{name, "material " + std::to_string(m)};
+    BAKE_RETURN_IF_ERROR(parseRevolution(material["extensions"][fmt::kExtension], package, where).status());
+    BAKE_RETURN_IF_ERROR(checkBaseColourTexture(material, package, where));
+  }
+  return {};
+}
+
+}  // namespace bake::play
