@@ -6,9 +6,13 @@
 // t advances by omega * d; when the sphere at the new point does not overlap the previous one
 // (|d| + dPrevious < step) the step may have jumped over the surface, so the march falls back to the
 // previous point, steps plainly by dPrevious from there, and keeps omega = 1 for the rest of the ray.
-// A negative sample after an over-relaxed step counts as such a failure too: the step went past the
-// surface, and accepting it would put the hit inside the solid. Plain steps never overshoot, since the
-// margin makes every sample a lower bound of the true distance.
+// A negative sample after an over-relaxed step counts as such a failure too, even when the spheres
+// overlap: the step went past the surface, and the hit test (d < epsilon) would accept a point inside
+// the solid (measured: up to 2 texels deep on a sphere). Plain steps never overshoot, since the margin
+// makes every sample a lower bound of the true distance. The failure test comes before the hit test,
+// and every sample (the undone one too) is an iteration.
+// The march covers the shape box, narrowed to the hull of the proxy bands (first entry to last exit),
+// as shaders/revolution/shape_march.glsl does.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -49,8 +53,13 @@ double hitEpsilonOf(const MarchSettings& settings, const ShapeGrid& grid) {
 MarchResult marchRay(const Ray& ray, const EncodedShapeMap& encoded, const ShapeGrid& grid,
                      const std::vector<ProxyBand>& bands, const MarchSettings& settings) {
   MarchResult result;
-  const auto span = settings.useProxy ? enterBands(ray, bands) : enterShapeBox(ray, grid);
-  if (!span) return result;
+  auto span = enterShapeBox(ray, grid);
+  if (span && settings.useProxy) {
+    const auto hull = enterBands(ray, bands);
+    if (hull) span = std::array<double, 2>{std::max((*span)[0], (*hull)[0]), std::min((*span)[1], (*hull)[1])};
+    else span.reset();
+  }
+  if (!span || (*span)[0] > (*span)[1]) return result;
   const double epsilon = hitEpsilonOf(settings, grid);
   double omega = std::max(settings.overRelaxation, 1.0);
   double t = (*span)[0];
