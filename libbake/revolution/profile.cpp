@@ -221,12 +221,12 @@ Status validateProfile(Profile& profile, std::vector<std::string>& warnings) {
     }
   for (Contour& contour : profile.contours)
     for (Segment& s : contour.segments) s.onAxis = s.bulge == 0 && s.a.r == 0 && s.b.r == 0;
+  BAKE_RETURN_IF_ERROR(checkCrossings(profile, tol));
   for (std::size_t c = 0; c < profile.contours.size(); ++c) {
     const double area = contourArea(profile.contours[c]);
     if (std::abs(area) <= tol * scale)
       return invalidInput("contour encloses no area", {profile.source, "contour " + std::to_string(c)});
   }
-  BAKE_RETURN_IF_ERROR(checkCrossings(profile, tol));
   orientByNesting(profile);
   return Status::ok();
 }

@@ -8,10 +8,12 @@
 // the surface put half a texel between inside and outside centres.
 // Anti-aliased images: after Gustavson & Strand ("Anti-aliased Euclidean distance transform",
 // Pattern Recognition Letters 2011): an edge texel's coverage a and the local edge direction give
-// the offset of the edge from its centre (the area cut from a unit square by a line), hence a
-// surface point; surface points are then propagated between neighbours in raster sweeps (as in
-// 8SSEDT), each texel keeping the nearest one. The edge direction is first the coverage gradient
-// (Sobel weights with sqrt 2) and is then refined from the gradient of the resulting distance.
+// the offset of the edge from its centre (the area cut from a unit square by a line), hence the
+// piece of edge line inside that texel. The nearest edge piece is then propagated between
+// neighbours in raster sweeps (as in 8SSEDT), each texel measuring its exact distance to the pieces
+// offered; pieces, unlike single edge points, keep texels a few texels out accurate. The edge
+// direction is first the coverage gradient (Sobel weights with sqrt 2), then twice refined from the
+// gradient of the resulting distance.
 // The axis: the solid's mirror image across r = 0 is never nearer than the solid itself, so
 // mirroring matters only for the coverage gradient in column 0 (its left neighbour is itself).
 #include <algorithm>
@@ -184,23 +186,55 @@ double edgeOffset(double a, Vec n) {
   return -0.5 * (gx + gy) + std::sqrt(2.0 * gx * gy * (1.0 - a));
 }
 
+// The edge inside one edge texel: the line through `point` across `normal`, clipped to the texel.
+struct EdgePiece {
+  Vec a, b;
+};
+
+EdgePiece clipToTexel(int i, int j, Vec point, Vec normal) {
+  const Vec t{-normal.y, normal.x};
+  double lo = -1e30, hi = 1e30;
+  auto clip = [&](double p, double d, double min, double max) {
+    if (std::abs(d) < 1e-12) {
+      if (p < min || p > max) lo = 1, hi = 0;
+      return;
+    }
+    double u0 = (min - p) / d, u1 = (max - p) / d;
+    if (u0 > u1) std::swap(u0, u1);
+    lo = std::max(lo, u0);
+    hi = std::min(hi, u1);
+  };
+  clip(point.x, t.x, i, i + 1.0);
+  clip(point.y, t.y, j, j + 1.0);
+  if (lo > hi) return {point, point};  // the line misses the texel (round-off): keep the point
+  return {{point.x + lo * t.x, point.y + lo * t.y}, {point.x + hi * t.x, point.y + hi * t.y}};
+}
+
+Vec nearestOnPiece(const EdgePiece& e, double x, double y) {
+  const double dx = e.b.x - e.a.x, dy = e.b.y - e.a.y, len2 = dx * dx + dy * dy;
+  const double u = len2 > 0 ? std::clamp(((x - e.a.x) * dx + (y - e.a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  return {e.a.x + u * dx, e.a.y + u * dy};
+}
+
 struct Propagation {
   int width = 0, height = 0;
-  std::vector<Vec> surface;    // nearest surface point known, texel units
-  std::vector<double> dist2;   // squared distance to it
+  std::vector<EdgePiece> pieces;  // per edge
+  std::vector<int> nearest;       // per texel: index of the nearest edge piece known, -1 none
+  std::vector<double> dist2;      // squared distance to it
 };
 
 void offer(Propagation& p, int i, int j, int ni, int nj) {
   if (ni < 0 || nj < 0 || ni >= p.width || nj >= p.height) return;
-  const std::size_t from = std::size_t(nj) * p.width + ni;
-  if (p.dist2[from] == std::numeric_limits<double>::infinity()) return;
+  const int edge = p.nearest[std::size_t(nj) * p.width + ni];
+  if (edge < 0) return;
   const std::size_t to = std::size_t(j) * p.width + i;
-  const Vec s = p.surface[from];
-  const double dx = i + 0.5 - s.x, dy = j + 0.5 - s.y;
+  if (p.nearest[to] == edge) return;
+  const Vec q = nearestOnPiece(p.pieces[edge], i + 0.5, j + 0.5);
+  const double dx = i + 0.5 - q.x, dy = j + 0.5 - q.y;
   const double d2 = dx * dx + dy * dy;
   if (d2 < p.dist2[to]) {
     p.dist2[to] = d2;
-    p.surface[to] = s;
+    p.nearest[to] = edge;
   }
 }
 
@@ -240,15 +274,17 @@ ShapeField distanceFromCoverage(const CoverageImage& image) {
     j = std::clamp(j, 0, h - 1);
     return double(std::clamp(image.coverage[std::size_t(j) * w + i], 0.0f, 1.0f));
   };
-  // Edge texels: fractional coverage, or a full/empty texel with a 4-neighbour of the other phase.
+  // Edge texels: fractional coverage, or a hard edge between a full and an empty texel.
   std::vector<std::size_t> edges;
   std::vector<Vec> normal(std::size_t(w) * h);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const double c = a(i, j);
       bool edge = c > 0 && c < 1;
+      // A full or empty texel is an edge only against a texel of exactly the other value (a hard
+      // edge on the texel border); beside a fractional texel the edge lies in that one instead.
       for (auto [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
-        if (!edge && (j + dj >= 0 && j + dj < h && i + di < w)) edge = (a(i + di, j + dj) >= 0.5) != (c >= 0.5);
+        if (!edge && (j + dj >= 0 && j + dj < h && i + di < w)) edge = a(i + di, j + dj) == 1.0 - c;
       if (!edge) continue;
       const double s2 = std::sqrt(2.0);
       const double gx = (a(i + 1, j - 1) + s2 * a(i + 1, j) + a(i + 1, j + 1)) -
@@ -263,43 +299,50 @@ ShapeField distanceFromCoverage(const CoverageImage& image) {
   Propagation p;
   p.width = w;
   p.height = h;
+  p.pieces.resize(edges.size());
   const int refinements = 2;
+  const double far = 2.0 * (w + h);  // no edge at all: unbounded, stored large and finite
   for (int round = 0; round <= refinements; ++round) {
-    p.surface.assign(std::size_t(w) * h, Vec{});
+    p.nearest.assign(std::size_t(w) * h, -1);
     p.dist2.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
-    for (std::size_t k : edges) {
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const std::size_t k = edges[e];
       const int i = int(k % w), j = int(k / w);
       const Vec n = normal[k];
       const double offset = edgeOffset(a(i, j), n);
-      p.surface[k] = {i + 0.5 + offset * n.x, j + 0.5 + offset * n.y};
-      p.dist2[k] = offset * offset;
+      const Vec foot{i + 0.5 + offset * n.x, j + 0.5 + offset * n.y};
+      p.pieces[e] = n.x == 0 && n.y == 0 ? EdgePiece{foot, foot} : clipToTexel(i, j, foot, n);
+      const Vec q = nearestOnPiece(p.pieces[e], i + 0.5, j + 0.5);
+      p.nearest[k] = int(e);
+      p.dist2[k] = (i + 0.5 - q.x) * (i + 0.5 - q.x) + (j + 0.5 - q.y) * (j + 0.5 - q.y);
     }
     propagate(p);
-    const double far = 2.0 * (w + h);  // no edge at all: unbounded, stored large and finite
     for (std::size_t k = 0; k < p.dist2.size(); ++k) {
       const bool inside = image.coverage[k] >= 0.5f;
       const double d = std::isfinite(p.dist2[k]) ? std::sqrt(p.dist2[k]) : far;
       field.distance[k] = float((inside ? -d : d) * image.texelSize);
     }
     if (round == refinements) break;
-    // Refine the edge normals: the direction from each edge texel's neighbours' surface points is
-    // smoother than the coverage gradient; use the gradient of the distance just computed.
+    // Refine the edge normals: the gradient of the distance just computed is smoother than the
+    // coverage gradient (it sees the neighbouring edge pieces, not a 3 x 3 box of coverage).
     gradientFromDistance(field);
-    for (std::size_t k : edges) normal[k] = {-double(field.gradR[k]), -double(field.gradH[k])};
+    for (std::size_t k : edges)
+      if (field.gradR[k] != 0 || field.gradH[k] != 0) normal[k] = {-double(field.gradR[k]), -double(field.gradH[k])};
   }
-  // Gradient: from the nearest surface point, pointing out of the solid.
+  // Gradient: from the nearest point of the nearest edge piece, pointing out of the solid.
   for (std::size_t k = 0; k < p.dist2.size(); ++k) {
     const int i = int(k % w), j = int(k / w);
-    const double dx = i + 0.5 - p.surface[k].x, dy = j + 0.5 - p.surface[k].y;
-    const double len = std::hypot(dx, dy);
     const bool inside = image.coverage[k] >= 0.5f;
-    if (len > 1e-9 && std::isfinite(len)) {
+    if (p.nearest[k] < 0) continue;
+    const Vec q = nearestOnPiece(p.pieces[p.nearest[k]], i + 0.5, j + 0.5);
+    const double dx = i + 0.5 - q.x, dy = j + 0.5 - q.y;
+    const double len = std::hypot(dx, dy);
+    if (len > 1e-9) {
       field.gradR[k] = float((inside ? -dx : dx) / len);
       field.gradH[k] = float((inside ? -dy : dy) / len);
     } else {
-      const std::size_t kk = k;
-      field.gradR[kk] = float(-normal[kk].x);
-      field.gradH[kk] = float(-normal[kk].y);
+      field.gradR[k] = float(-normal[k].x);
+      field.gradH[k] = float(-normal[k].y);
     }
   }
   return field;

@@ -198,27 +198,40 @@ SafetyMargin measureSafetyMargin(const ShapeField& decoded, const Profile* exact
     margin.bilinearOverestimate = ceiling;
     return margin;
   }
-  // Measured: 4 x 4 sub-samples in every texel within 3 texels of the surface.
+  // Measured: n x n sub-samples in every texel within 3 texels of the surface, first n = 4, then
+  // n = 16 in the texels whose coarse maximum comes within half of the largest (the worst points
+  // sit at convex corners and between lattice points; the finer pass finds them).
   const GpuSampler sample(decoded);
-  const int sub = 4;
   const double band = 3 * texel;
-  const double worst = parallelReduce(
-      std::size_t(grid.height), 1, 0, 0.0,
-      [&](std::size_t begin, std::size_t end) {
-        double local = 0;
-        for (std::size_t j = begin; j < end; ++j)
-          for (int i = 0; i < grid.width; ++i) {
-            if (!(std::abs(decoded.at(i, int(j))) <= band)) continue;
-            for (int b = 0; b < sub; ++b)
-              for (int a = 0; a < sub; ++a) {
-                const double r = (i + (a + 0.5) / sub) * texel, h = grid.hMin + (j + (b + 0.5) / sub) * texel;
-                const double exact = signedDistance(*exactProfile, {r, h}).distance;
-                local = std::max(local, sample(r, h) - exact);
-              }
-          }
-        return local;
-      },
-      [](double x, double y) { return std::max(x, y); });
+  auto texelWorst = [&](int i, int j, int sub) {
+    double local = -std::numeric_limits<double>::infinity();
+    for (int b = 0; b < sub; ++b)
+      for (int a = 0; a < sub; ++a) {
+        const double r = (i + (a + 0.5) / sub) * texel, h = grid.hMin + (j + (b + 0.5) / sub) * texel;
+        local = std::max(local, sample(r, h) - signedDistance(*exactProfile, {r, h}).distance);
+      }
+    return local;
+  };
+  const std::size_t count = std::size_t(grid.width) * grid.height;
+  std::vector<double> coarse(count, -std::numeric_limits<double>::infinity());
+  parallelFor(std::size_t(grid.height), 0, [&](std::size_t j) {
+    for (int i = 0; i < grid.width; ++i)
+      if (std::abs(decoded.at(i, int(j))) <= band) coarse[j * grid.width + i] = texelWorst(i, int(j), 4);
+  }, 1);
+  double worst = 0;
+  for (double v : coarse) worst = std::max(worst, v);
+  const double threshold = 0.5 * worst;
+  std::vector<double> fine(coarse);
+  parallelFor(count, 0, [&](std::size_t k) {
+    if (coarse[k] > threshold && coarse[k] > 0) fine[k] = std::max(coarse[k], texelWorst(int(k % grid.width), int(k / grid.width), 16));
+  }, 16);
+  for (double v : fine) worst = std::max(worst, v);
+  // The profile's corners themselves (where the exact distance has its kinks).
+  for (const Contour& contour : exactProfile->contours)
+    for (const Segment& s : contour.segments) {
+      if (s.a.r > grid.width * texel || s.a.h < grid.hMin || s.a.h > grid.hMin + grid.height * texel) continue;
+      worst = std::max(worst, sample(s.a.r, s.a.h) - signedDistance(*exactProfile, s.a).distance);
+    }
   // A field exact at the centres stays under the ceiling; one that is not (from an image) keeps
   // what was measured, which is then the honest figure.
   margin.bilinearOverestimate = worst;

@@ -1,0 +1,166 @@
+// Distance from images (shape_map_edt.cpp): the Felzenszwalb-Huttenlocher EDT against brute force on
+// random images, the signed binary field's half-texel convention, and the anti-aliased EDT on discs
+// and a vase rendered with exact area coverage against their analytic / exact distances.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "revolution/profile_shapes.h"
+#include "revolution/shape_map.h"
+
+namespace bake::revolution {
+namespace {
+
+using namespace bake::revolution::test;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+std::vector<float> bruteForceSquared(const std::vector<float>& f, int w, int h) {
+  std::vector<float> out(f.size(), kInf);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          if (f[std::size_t(y) * w + x] == 0)
+            out[std::size_t(j) * w + i] = std::min(out[std::size_t(j) * w + i], float((x - i) * (x - i) + (y - j) * (y - j)));
+  return out;
+}
+
+TEST(SquaredEdt, MatchesBruteForceOnRandomImages) {
+  std::mt19937 rng(42);
+  for (auto [w, h, density] : {std::tuple{17, 23, 0.1}, {40, 9, 0.02}, {1, 30, 0.1}, {33, 1, 0.2}, {31, 31, 0.001}, {25, 25, 0.6}}) {
+    std::bernoulli_distribution feature(density);
+    std::vector<float> f(std::size_t(w) * h);
+    for (float& v : f) v = feature(rng) ? 0.0f : kInf;
+    const std::vector<float> expected = bruteForceSquared(f, w, h);
+    squaredEdt2d(f, w, h);
+    for (std::size_t k = 0; k < f.size(); ++k) ASSERT_EQ(f[k], expected[k]) << w << "x" << h << " texel " << k;
+  }
+}
+
+TEST(SquaredEdt, NoFeatureStaysInfinite) {
+  std::vector<float> f(12, kInf);
+  squaredEdt2d(f, 4, 3);
+  for (float v : f) EXPECT_EQ(v, kInf);
+}
+
+TEST(DistanceFromBinary, SurfaceHalfATexelBetweenThePhases) {
+  std::mt19937 rng(9);
+  std::bernoulli_distribution solid(0.4);
+  CoverageImage image;
+  image.width = 29;
+  image.height = 21;
+  image.texelSize = 0.25;
+  image.hMin = -1;
+  for (int k = 0; k < image.width * image.height; ++k) image.coverage.push_back(solid(rng) ? 1.0f : 0.0f);
+  ASSERT_TRUE(isBinary(image));
+  const ShapeField field = distanceFromBinary(image);
+  std::vector<float> toInside(image.coverage.size()), toOutside(image.coverage.size());
+  for (std::size_t k = 0; k < image.coverage.size(); ++k) {
+    toInside[k] = image.coverage[k] == 1 ? 0.0f : kInf;
+    toOutside[k] = image.coverage[k] == 1 ? kInf : 0.0f;
+  }
+  const auto in = bruteForceSquared(toInside, image.width, image.height);
+  const auto out = bruteForceSquared(toOutside, image.width, image.height);
+  for (std::size_t k = 0; k < image.coverage.size(); ++k) {
+    const bool inside = image.coverage[k] == 1;
+    const double expected = inside ? -(std::sqrt(out[k]) - 0.5) * 0.25 : (std::sqrt(in[k]) - 0.5) * 0.25;
+    ASSERT_NEAR(field.distance[k], expected, 1e-6);
+    EXPECT_NEAR(std::hypot(field.gradR[k], field.gradH[k]), 1.0, 1e-5);
+  }
+}
+
+// Coverage of a validated profile by exact area (tested in distance_test) on a unit-texel grid.
+CoverageImage render(const Profile& profile, int w, int h, double hMin) {
+  ShapeGrid grid;
+  grid.width = w;
+  grid.height = h;
+  grid.texelSize = 1.0;
+  grid.hMin = hMin;
+  const ShapeField exact = distanceFromProfile(profile, grid);
+  CoverageImage image;
+  image.width = w;
+  image.height = h;
+  image.texelSize = 1.0;
+  image.hMin = hMin;
+  image.coverage = exact.coverage;
+  return image;
+}
+
+struct ErrorStats {
+  double mean = 0, worst = 0;
+  int count = 0;
+};
+
+ErrorStats nearSurfaceError(const ShapeField& field, const Profile& profile, double band) {
+  ErrorStats stats;
+  for (int j = 0; j < field.grid.height; ++j)
+    for (int i = 0; i < field.grid.width; ++i) {
+      const double exact = signedDistance(profile, {field.grid.centreR(i), field.grid.centreH(j)}).distance;
+      if (std::abs(exact) > band) continue;
+      const double error = std::abs(field.at(i, j) - exact);
+      stats.mean += error;
+      stats.worst = std::max(stats.worst, error);
+      ++stats.count;
+    }
+  stats.mean /= std::max(1, stats.count);
+  return stats;
+}
+
+Profile validated(std::vector<Contour> contours) {
+  Profile profile = makeProfile(std::move(contours));
+  std::vector<std::string> warnings;
+  EXPECT_TRUE(validateProfile(profile, warnings).isOk());
+  return profile;
+}
+
+TEST(DistanceFromCoverage, AntiAliasedDiscWithinThreeHundredthsOfATexel) {
+  for (double radius : {6.3, 17.8, 31.4}) {
+    const Profile profile = validated({circleContour(radius + 3.37, radius + 2.71, radius, 4)});
+    const CoverageImage image = render(profile, int(2 * radius + 8), int(2 * radius + 8), 0.0);
+    ASSERT_FALSE(isBinary(image));
+    const ShapeField field = distanceFromCoverage(image);
+    const ErrorStats stats = nearSurfaceError(field, profile, 2.0);
+    RecordProperty("disc_" + std::to_string(int(radius)) + "_mean_error_texels", std::to_string(stats.mean));
+    EXPECT_LE(stats.mean, 0.03) << "radius " << radius << " worst " << stats.worst;
+    EXPECT_LT(stats.worst, 0.5) << "radius " << radius;
+  }
+}
+
+TEST(DistanceFromCoverage, AntiAliasedSphereAndVaseNearTheAxis) {
+  // Shapes that touch the axis: column 0 has the axis on its left edge.
+  const Profile sphere = validated({halfDiscContour(20.3)});
+  const ShapeField sphereField = distanceFromCoverage(render(sphere, 28, 50, -25.0));
+  const ErrorStats s = nearSurfaceError(sphereField, sphere, 2.0);
+  EXPECT_LE(s.mean, 0.03) << "worst " << s.worst;
+  RecordProperty("sphere_mean_error_texels", std::to_string(s.mean));
+
+  Profile vase = makeProfile({vaseContour()});
+  for (Contour& c : vase.contours)
+    for (Segment& seg : c.segments) {
+      seg.a = {seg.a.r * 40, seg.a.h * 40};
+      seg.b = {seg.b.r * 40, seg.b.h * 40};
+    }
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(vase, warnings).isOk());
+  const ShapeField vaseField = distanceFromCoverage(render(vase, 44, 90, -5.0));
+  const ErrorStats v = nearSurfaceError(vaseField, vase, 2.0);
+  EXPECT_LE(v.mean, 0.03) << "worst " << v.worst;
+  RecordProperty("vase_mean_error_texels", std::to_string(v.mean));
+}
+
+TEST(DistanceFromCoverage, FarTexelsKeepTheirSign) {
+  const Profile profile = validated({circleContour(20, 20, 10, 4)});
+  const ShapeField field = distanceFromCoverage(render(profile, 40, 40, 0.0));
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 40; ++i) {
+      const double exact = std::hypot(i + 0.5 - 20, j + 0.5 - 20) - 10;
+      if (std::abs(exact) > 1) EXPECT_EQ(field.at(i, j) < 0, exact < 0);
+      EXPECT_NEAR(field.at(i, j), exact, 0.5);
+    }
+}
+
+}  // namespace
+}  // namespace bake::revolution

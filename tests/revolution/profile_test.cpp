@@ -1,0 +1,207 @@
+// Profile validation and readers (profile.cpp, profile_read.cpp, profile_read_svg.cpp): errors name
+// the file and the element at fault; repairs are reported as warnings; readers give the pieces the
+// files describe (SVG arcs as bulges, curves within 1e-4, y flipped).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numbers>
+
+#include "revolution/profile_shapes.h"
+#include "revolution/shape_map.h"
+#include "support/golden.h"
+
+namespace bake::revolution {
+namespace {
+
+using namespace bake::revolution::test;
+
+std::string writeFile(const std::string& name, const std::string& text) {
+  const auto path = bake::test::freshTempDir("profile") / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+double totalArea(const Profile& profile) {
+  // Area of the solid by its coverage on a fine grid: independent of the contour bookkeeping.
+  const ShapeGrid grid = gridForBounds(profileBounds(profile), 128, 2);
+  const ShapeField field = distanceFromProfile(profile, grid);
+  double area = 0;
+  for (float c : field.coverage) area += c;
+  return area * grid.texelSize * grid.texelSize;
+}
+
+TEST(ValidateProfile, NotFiniteNamesContourAndPoint) {
+  Profile profile = makeProfile({rectangleContour(1, 0, 2, 1), rectangleContour(3, 0, 4, 1)});
+  profile.contours[1].segments[2].b.h = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::string> warnings;
+  const Status status = validateProfile(profile, warnings);
+  ASSERT_FALSE(status.isOk());
+  EXPECT_EQ(status.where().file, "test.json");
+  EXPECT_EQ(status.where().element, "contour 1, point 2");
+}
+
+TEST(ValidateProfile, NegativeRadiusIsAnError) {
+  Profile profile = makeProfile({rectangleContour(-0.5, 0, 2, 1)});
+  std::vector<std::string> warnings;
+  const Status status = validateProfile(profile, warnings);
+  ASSERT_FALSE(status.isOk());
+  EXPECT_NE(status.message().find("negative radius"), std::string::npos);
+  EXPECT_EQ(status.where().element, "contour 0, point 0");
+}
+
+TEST(ValidateProfile, SelfIntersectionNamesBothSegmentsAndThePoint) {
+  // A bow tie: piece 0 (1,0)-(3,2) crosses piece 2 (3,0)-(1,2) at (2, 1).
+  Profile profile = makeProfile({makeContour({{1, 0}, {3, 2}, {3, 0}, {1, 2}}, {}, true)});
+  std::vector<std::string> warnings;
+  const Status status = validateProfile(profile, warnings);
+  ASSERT_FALSE(status.isOk());
+  EXPECT_EQ(status.where().element, "contour 0 segment 0 and contour 0 segment 2");
+  EXPECT_NE(status.message().find("(2, 1)"), std::string::npos) << status.message();
+}
+
+TEST(ValidateProfile, ArcCrossingALineIsFound) {
+  // A closed contour whose arc swings through a later straight piece.
+  Profile profile = makeProfile({makeContour({{1, 0}, {3, 0}, {3, 1}, {1, 1}}, {0.0, 0.0, 0.0, 0.0}, true),
+                                 makeContour({{2, -1}, {2, 2}, {2.5, 2}}, {-1.0, 0.0}, true)});
+  std::vector<std::string> warnings;
+  EXPECT_FALSE(validateProfile(profile, warnings).isOk());
+}
+
+TEST(ValidateProfile, ZeroLengthSegmentsAreDroppedWithAWarning) {
+  Profile profile = makeProfile({makeContour({{1, 0}, {2, 0}, {2, 0}, {2, 1}, {1, 1}}, {}, true)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(profile, warnings).isOk());
+  EXPECT_EQ(profile.contours[0].segments.size(), 4u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("contour 0, point 1: zero-length segment dropped"), std::string::npos) << warnings[0];
+}
+
+TEST(ValidateProfile, OpenContoursCloseAlongTheAxis) {
+  Profile profile = makeProfile({makeContour({{1.0, 0.0}, {1.0, 2.0}}, {}, false)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(profile, warnings).isOk());
+  const Contour& contour = profile.contours[0];
+  EXPECT_TRUE(contour.closed);
+  ASSERT_EQ(contour.segments.size(), 4u);
+  int onAxis = 0;
+  for (const Segment& s : contour.segments) onAxis += s.onAxis ? 1 : 0;
+  EXPECT_EQ(onAxis, 1);
+  EXPECT_EQ(warnings.size(), 2u);  // both ends got a horizontal run
+  EXPECT_NEAR(totalArea(profile), 2.0, 1e-6);
+}
+
+TEST(ValidateProfile, HolesAreOrientedOppositeToTheirOuterContour) {
+  // Both given counter-clockwise; the hole must come out clockwise (negative area).
+  Profile profile = makeProfile({rectangleContour(1, 0, 5, 4), rectangleContour(2, 1, 3, 2)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(profile, warnings).isOk());
+  EXPECT_NEAR(totalArea(profile), 16.0 - 1.0, 1e-6);
+  EXPECT_GT(signedDistance(profile, {2.5, 1.5}).distance, 0);
+  EXPECT_LT(signedDistance(profile, {1.5, 0.5}).distance, 0);
+}
+
+TEST(ValidateProfile, BoundsIncludeArcExtremes) {
+  Profile profile = makeProfile({halfDiscContour(2.0)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(profile, warnings).isOk());
+  const Bounds2 bounds = profileBounds(profile);
+  EXPECT_NEAR(bounds.rMax, 2.0, 1e-12);
+  EXPECT_NEAR(bounds.hMin, -2.0, 1e-12);
+  EXPECT_NEAR(bounds.hMax, 2.0, 1e-12);
+}
+
+TEST(ReadProfile, JsonContoursWithBulges) {
+  const std::string path = writeFile("p.json", R"({"contours": [
+      {"closed": false, "points": [[0, -1], [0, 1]], "bulges": [1]}]})");
+  auto profile = readProfileJson(path);
+  ASSERT_TRUE(profile.isOk()) << profile.status().describe();
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(*profile, warnings).isOk());
+  EXPECT_NEAR(signedDistance(*profile, {0.3, 0.4}).distance, -0.5, 1e-12);  // unit sphere
+}
+
+TEST(ReadProfile, JsonBareListAndErrorsNameThePoint) {
+  auto bare = readProfileJson(writeFile("bare.json", "[[1, 0], [1, 2]]"));
+  ASSERT_TRUE(bare.isOk()) << bare.status().describe();
+  EXPECT_EQ(bare->contours.size(), 1u);
+  auto bad = readProfileJson(writeFile("bad.json", R"({"contours": [{"points": [[1, 0], [1, 2]]},
+      {"points": [[1, 0], [2], [1, 2]]}]})"));
+  ASSERT_FALSE(bad.isOk());
+  EXPECT_EQ(bad.status().where().element, "contour 1, point 1");
+}
+
+TEST(ReadProfile, CsvContoursSplitByBlankLines) {
+  const std::string path = writeFile("p.csv",
+                                     "# a ring and a rod\n"
+                                     "3,0\n4,0\n4,1\n3,1\n3,0\n"
+                                     "\n"
+                                     "0,2\n1,2,0\n1,3\n0,3\n");
+  auto profile = readProfileCsv(path);
+  ASSERT_TRUE(profile.isOk()) << profile.status().describe();
+  ASSERT_EQ(profile->contours.size(), 2u);
+  EXPECT_TRUE(profile->contours[0].closed);
+  EXPECT_EQ(profile->contours[0].segments.size(), 4u);
+  EXPECT_FALSE(profile->contours[1].closed);
+  auto bad = readProfileCsv(writeFile("bad.csv", "1,0\n1,x\n"));
+  ASSERT_FALSE(bad.isOk());
+  EXPECT_EQ(bad.status().where().element, "contour 0, point 1 (line 2)");
+  auto nan = readProfileCsv(writeFile("nan.csv", "1,0\nnan,1\n"));
+  EXPECT_FALSE(nan.isOk());
+}
+
+TEST(ReadProfile, SvgArcsBecomeBulgesWithYFlipped) {
+  // A half circle of radius 1 about the origin, right of the axis, drawn in SVG's y-down frame
+  // with a relative arc; then a second path that the id selects.
+  const std::string path = writeFile("p.svg", R"(<?xml version="1.0"?>
+<svg xmlns="http://www.w3.org/2000/svg"><pathology/>
+  <path d="M0,-1 A1 1 0 0 1 0,1 Z" id='sphere'/>
+  <path id="rod" d="m 1 0 v -2 h 0.5 V 0 z"/>
+</svg>)");
+  auto sphere = readProfileSvg(path);
+  ASSERT_TRUE(sphere.isOk()) << sphere.status().describe();
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(*sphere, warnings).isOk());
+  for (double angle = 0.1; angle < 6; angle += 0.7) {
+    const Point2 p{0.5 * std::abs(std::cos(angle)) + 0.2, 1.3 * std::sin(angle)};
+    EXPECT_NEAR(signedDistance(*sphere, p).distance, std::hypot(p.r, p.h) - 1.0, 1e-9);
+  }
+  auto rod = readProfileSvg(path, "rod");
+  ASSERT_TRUE(rod.isOk()) << rod.status().describe();
+  ASSERT_TRUE(validateProfile(*rod, warnings).isOk());
+  const Bounds2 bounds = profileBounds(*rod);
+  EXPECT_NEAR(bounds.hMin, 0.0, 1e-12);  // y = 0 .. -2 is h = 0 .. 2
+  EXPECT_NEAR(bounds.hMax, 2.0, 1e-12);
+  EXPECT_NEAR(totalArea(*rod), 1.0, 1e-6);
+}
+
+TEST(ReadProfile, SvgCurvesAreFlattenedWithinTheTolerance) {
+  // A quarter of a unit circle as the standard cubic approximation, closed through the origin.
+  const double k = 0.5522847498;
+  const std::string d = "M 0 0 L 1 0 C 1 " + std::to_string(-k) + " " + std::to_string(k) + " -1 0 -1 Z";
+  auto profile = readProfileSvg(writeFile("q.svg", "<svg><path d=\"" + d + "\"/></svg>"));
+  ASSERT_TRUE(profile.isOk()) << profile.status().describe();
+  // Every vertex of the flattened curve lies on the cubic, so within its 3e-4 of the circle,
+  // and every chord midpoint within 1e-4 + 3e-4 of it.
+  int curvePieces = 0;
+  for (const Segment& s : profile->contours[0].segments) {
+    const double ra = std::hypot(s.a.r, s.a.h);
+    if (s.a.r > 0 && s.a.h > 0 && ra > 0.5) {
+      ++curvePieces;
+      EXPECT_NEAR(ra, 1.0, 3e-4);
+      const double mid = std::hypot(0.5 * (s.a.r + s.b.r), 0.5 * (s.a.h + s.b.h));
+      EXPECT_NEAR(mid, 1.0, 4e-4);
+    }
+  }
+  EXPECT_GT(curvePieces, 8);
+}
+
+TEST(ReadProfile, SvgEllipticalArcsAreRefused) {
+  auto profile = readProfileSvg(writeFile("e.svg", "<svg><path d='M0 0 A 2 1 0 0 1 0 2'/></svg>"));
+  ASSERT_FALSE(profile.isOk());
+  EXPECT_NE(profile.status().message().find("elliptical arcs are not supported"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bake::revolution
