@@ -26,6 +26,7 @@ namespace {
 // Ray parameters inside the shape box: x, z in [-R, R], y in the grid's h range.
 std::optional<std::array<double, 2>> enterShapeBox(const Ray& ray, const ShapeGrid& grid) {
   const double radius = grid.width * grid.texelSize;
+  if (!(radius > 0) || grid.height <= 0) return std::nullopt;
   const double lo[3] = {-radius, grid.hMin, -radius};
   const double hi[3] = {radius, grid.hMin + grid.height * grid.texelSize, radius};
   double tIn = 0, tOut = std::numeric_limits<double>::infinity();
@@ -53,6 +54,8 @@ double hitEpsilonOf(const MarchSettings& settings, const ShapeGrid& grid) {
 MarchResult marchRay(const Ray& ray, const EncodedShapeMap& encoded, const ShapeGrid& grid,
                      const std::vector<ProxyBand>& bands, const MarchSettings& settings) {
   MarchResult result;
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(ray.origin[c]) || !std::isfinite(ray.direction[c])) return result;
   auto span = enterShapeBox(ray, grid);
   if (span && settings.useProxy) {
     const auto hull = enterBands(ray, bands);

@@ -20,6 +20,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kParameterSlack = 1e-12;  // pieces meet exactly; keep their shared rim
+// Below this bulge an arc's sagitta is under 5e-10 of its chord: it is its chord (and its centre,
+// 1 / (4 bulge) chords away, would cost the distance all its digits).
+constexpr double kStraightBulge = 1e-9;
 
 struct RayPlane {
   // r(t)^2 = a t^2 + 2 b t + c; h(t) = h0 + hd t.
@@ -33,7 +36,9 @@ RayPlane toRayPlane(const Ray& ray) {
   return {dx * dx + dz * dz, ox * dx + oz * dz, ox * ox + oz * oz, ray.origin[1], ray.direction[1]};
 }
 
-bool isAxisPiece(const Segment& s) { return s.onAxis || (s.bulge == 0 && s.a.r == 0 && s.b.r == 0); }
+bool isAxisPiece(const Segment& s) {
+  return s.onAxis || (std::abs(s.bulge) < kStraightBulge && s.a.r == 0 && s.b.r == 0);
+}
 
 void keepIfAhead(double t, double& best) {
   if (t > 0 && t < best) best = t;
@@ -171,12 +176,15 @@ void intersectArc(const RayPlane& ray, const Segment& s, double& best) {
 }  // namespace
 
 std::optional<double> intersectExact(const Ray& ray, const Profile& profile) {
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(ray.origin[c]) || !std::isfinite(ray.direction[c])) return std::nullopt;
   const RayPlane plane = toRayPlane(ray);
   double best = std::numeric_limits<double>::infinity();
   for (const Contour& contour : profile.contours)
     for (const Segment& s : contour.segments) {
       if (isAxisPiece(s)) continue;
-      if (s.bulge == 0 || (s.a.r == s.b.r && s.a.h == s.b.h)) intersectStraight(plane, s, best);
+      if (std::abs(s.bulge) < kStraightBulge || (s.a.r == s.b.r && s.a.h == s.b.h)) intersectStraight(plane, s, best);
+      else if (!std::isfinite(s.bulge)) continue;  // validation rejects these; skip rather than guess
       else intersectArc(plane, s, best);
     }
   if (!std::isfinite(best)) return std::nullopt;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "revolution/march.h"
 
@@ -58,11 +59,13 @@ double decodeB(const EncodedShapeMap& map, double b) {
 }  // namespace
 
 double sampleDistance(const EncodedShapeMap& encoded, const ShapeGrid& grid, double r, double h) {
+  if (grid.width <= 0 || grid.height <= 0 || !(grid.texelSize > 0)) return std::numeric_limits<double>::infinity();
   const double x = std::abs(r) / grid.texelSize - 0.5;
   const double y = (h - grid.hMin) / grid.texelSize - 0.5;
-  // Far outside, the clamp makes every tap the edge texel; keep the floor in int range.
-  const double xc = std::clamp(x, -2.0, double(grid.width) + 1);
-  const double yc = std::clamp(y, -2.0, double(grid.height) + 1);
+  // Far outside, the clamp makes every tap the edge texel; keep the floor in int range (NaN: the
+  // first texel, so a broken ray still reads a finite value).
+  const double xc = std::isnan(x) ? 0.0 : std::clamp(x, -2.0, double(grid.width) + 1);
+  const double yc = std::isnan(y) ? 0.0 : std::clamp(y, -2.0, double(grid.height) + 1);
   const double x0 = std::floor(xc), y0 = std::floor(yc);
   const double fx = xc - x0, fy = yc - y0;
   const int i0 = mirrorClamp(int(x0), grid.width), i1 = mirrorClamp(int(x0) + 1, grid.width);

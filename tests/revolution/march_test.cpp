@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -450,6 +451,107 @@ TEST(March, IterationsForTargetPicksTheSmallestBudgetOrTheLargest) {
   EXPECT_EQ(iterationsForTarget(curve, 0.005), 20);
   EXPECT_EQ(iterationsForTarget(curve, 0.0001), 40);
   EXPECT_EQ(iterationsForTarget(curve, 0.5), 10);
+}
+
+// --- stiff cases: axis rays, grazing rays, extreme scales, degenerate input ------------------------
+
+Profile scaledSphere(double radius) {
+  Profile p;
+  Contour c;
+  c.segments.push_back({{0, -radius}, {0, radius}, 1.0, false});
+  p.contours.push_back(c);
+  return p;
+}
+
+TEST(MarchStiff, RaysAlongAndParallelToTheAxis) {
+  // Down the axis: r(t) = 0 throughout.
+  const Ray down{{0, 5, 0}, {0, -1, 0}};
+  ASSERT_TRUE(intersectExact(down, sphereProfile()).has_value());
+  EXPECT_NEAR(*intersectExact(down, sphereProfile()), 4.0, 1e-12);
+  const Profile can = polygonProfile({{0, 0}, {1, 0}, {1, 2}, {0, 2}});
+  EXPECT_NEAR(*intersectExact(down, can), 3.0, 1e-12);
+  // Parallel to the axis inside the can's radius hits the cap; on the wall's radius it grazes.
+  EXPECT_NEAR(*intersectExact(Ray{{0.7, -3, 0}, {0, 1, 0}}, can), 3.0, 1e-12);
+  EXPECT_FALSE(intersectExact(Ray{{1.5, -3, 0}, {0, 1, 0}}, can).has_value());
+  const Profile cone = polygonProfile({{0, 0}, {1, 0}, {0, 1.5}});
+  EXPECT_NEAR(*intersectExact(Ray{{0, 0.5, 0.5}, {0, 1, 0}}, cone), 0.25, 1e-12);  // r = 0.5 at h = 0.75
+  // The march down the axis (column 0 mirrored) stops within margin + epsilon above the pole.
+  const SphereMap s = sphereMap(64);
+  MarchSettings settings;
+  settings.maxIterations = 128;
+  settings.safetyMargin = s.margin;
+  const MarchResult m = marchRay(down, s.encoded, s.grid, s.bands, settings);
+  ASSERT_TRUE(m.hit);
+  EXPECT_LE(m.t, 4.0);
+  EXPECT_GE(m.t, 4.0 - s.margin - 0.05 * s.grid.texelSize - 1e-9);
+}
+
+TEST(MarchStiff, GrazingRaysFinishWithAFiniteAnswer) {
+  const Profile sphere = sphereProfile();
+  for (double offset : {-1e-12, 0.0, 1e-12, 1e-9, 1e-6}) {
+    const Ray ray{{-5, 0.3, std::sqrt(1 - 0.09) + offset}, {1, 0, 0}};
+    const auto t = intersectExact(ray, sphere);
+    if (t) {
+      EXPECT_TRUE(std::isfinite(*t));
+      EXPECT_NEAR(*t, 5.0, 2e-3) << "offset " << offset;  // the tangent point, to sqrt(offset)
+    }
+    if (offset >= 1e-9) EXPECT_FALSE(t.has_value()) << "offset " << offset;
+  }
+  // Grazing the torus's outer equator and the inside of its hole.
+  Profile torus;
+  Contour c;
+  c.segments.push_back({{2, -0.5}, {2, 0.5}, 1.0, false});
+  c.segments.push_back({{2, 0.5}, {2, -0.5}, 1.0, false});
+  torus.contours.push_back(c);
+  for (double z : {2.5, 1.5, 2.5 + 1e-10, 1.5 - 1e-10}) {
+    const auto t = intersectExact(Ray{{-6, 0, z}, {1, 0, 0}}, torus);
+    if (t) EXPECT_TRUE(std::isfinite(*t));
+  }
+}
+
+TEST(MarchStiff, HugeAndTinyProfilesKeepRelativeAccuracy) {
+  for (double radius : {1e-6, 1e-3, 1e3, 1e6}) {
+    const Profile sphere = scaledSphere(radius);
+    const Ray ray{{-3 * radius, 0.2 * radius, 0.1 * radius}, {1, 0, 0}};
+    const double expected = 3 * radius - std::sqrt(1 - 0.05) * radius;
+    const auto t = intersectExact(ray, sphere);
+    ASSERT_TRUE(t.has_value()) << "radius " << radius;
+    EXPECT_NEAR(*t, expected, 1e-10 * radius) << "radius " << radius;
+    const Profile can = polygonProfile({{0, 0}, {radius, 0}, {radius, radius}, {0, radius}});
+    const auto tc = intersectExact(Ray{{-3 * radius, 0.5 * radius, 0}, {1, 0, 0}}, can);
+    ASSERT_TRUE(tc.has_value());
+    EXPECT_NEAR(*tc, 2 * radius, 1e-12 * radius);
+  }
+}
+
+TEST(MarchStiff, NearlyStraightArcsActLikeTheirChord) {
+  Profile arc, chord;
+  Contour a, b;
+  a.segments.push_back({{1, 0}, {1, 2}, 1e-13, false});
+  b.segments.push_back({{1, 0}, {1, 2}, 0.0, false});
+  arc.contours.push_back(a), chord.contours.push_back(b);
+  const Ray ray{{-4, 0.7, 0.2}, {1, 0, 0}};
+  ASSERT_TRUE(intersectExact(ray, chord).has_value());
+  EXPECT_NEAR(*intersectExact(ray, arc), *intersectExact(ray, chord), 1e-12);
+}
+
+TEST(MarchStiff, BrokenRaysAndEmptyInputsGiveMissesNotNaN) {
+  const SphereMap s = sphereMap(32);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Ray broken{{nan, 0, 0}, {1, 0, 0}};
+  EXPECT_FALSE(intersectExact(broken, sphereProfile()).has_value());
+  MarchSettings settings;
+  settings.safetyMargin = s.margin;
+  EXPECT_FALSE(marchRay(broken, s.encoded, s.grid, s.bands, settings).hit);
+  EXPECT_TRUE(std::isfinite(sampleDistance(s.encoded, s.grid, nan, nan)));
+  // An empty grid: no bands, nothing to sample, every ray misses.
+  const ShapeGrid empty{};
+  EXPECT_TRUE(buildProxyBands(ShapeField{}, 16, 0.0).empty());
+  EXPECT_FALSE(marchRay(Ray{{-5, 0, 0}, {1, 0, 0}}, EncodedShapeMap{}, empty, {}, settings).hit);
+  EXPECT_TRUE(measureMarchError(Profile{}, EncodedShapeMap{}, empty, {}, settings, MarchErrorSettings{}).empty());
+  // Band counts beyond the format's limit are clamped.
+  EXPECT_EQ(buildProxyBands(s.field, 1000, s.margin).size(), 64u);
+  EXPECT_EQ(buildProxyBands(s.field, 0, s.margin).size(), 1u);
 }
 
 // --- the bake's own field on a vase with arcs -------------------------------------------------------
