@@ -571,6 +571,16 @@ TEST(MarchVase, SilhouetteMismatchFallsAndTheProxyNeverHurts) {
   base.safetyMargin = margin.total();
   base.hitEpsilon = 0.05 * grid.texelSize;
   const std::vector<ProxyBand> bands = buildProxyBands(field, 16, base.safetyMargin);
+  // Bands never cut the solid: every surface point, widened by the margin, is inside one.
+  for (const Contour& contour : vase.contours)
+    for (const Segment& piece : contour.segments)
+      for (int k = 0; k <= 400; ++k) {
+        const Point2 p = test::densePoint(piece, k / 400.0);
+        bool inside = false;
+        for (const ProxyBand& band : bands)
+          inside |= p.h >= band.hMin && p.h <= band.hMax && p.r + base.safetyMargin <= band.rMax;
+        EXPECT_TRUE(inside) << "surface point (" << p.r << ", " << p.h << ")";
+      }
   MarchErrorSettings sweep;
   std::vector<std::vector<MarchErrorPoint>> curves;
   for (bool proxy : {true, false}) {
