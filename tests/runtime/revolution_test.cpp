@@ -353,6 +353,13 @@ Mismatch silhouetteMismatch(const Image& image, const Circle& circle, const View
   return m;
 }
 
+// Keeps the measured figure in the test's XML record (--gtest_output=xml).
+void record(const Mismatch& m) {
+  ::testing::Test::RecordProperty("silhouetteMismatch", std::to_string(m.fraction()));
+  ::testing::Test::RecordProperty("differingPixels", m.differing);
+  ::testing::Test::RecordProperty("referencePixels", m.reference);
+}
+
 const View kFront{{0.0f, 1.3f, 2.6f}, {0.0f, 0.5f, 0.0f}};
 
 // ---------------------------------------------------------------------------------------------
@@ -370,6 +377,7 @@ TEST_P(RevolutionSilhouette, SphereMatchesTheAnalyticRayCast) {
   o.encoding = GetParam();
   const Image image = render({revolutionPackage(kSphere, o)}, "sphere", kFront);
   const Mismatch m = silhouetteMismatch(image, kSphere, kFront);
+  record(m);
   EXPECT_GT(m.reference, 2000);
   EXPECT_LT(m.fraction(), allowedMismatch(o.encoding)) << m.describe();
 }
@@ -379,6 +387,7 @@ TEST_P(RevolutionSilhouette, TorusMatchesTheAnalyticRayCast) {
   o.encoding = GetParam();
   const Image image = render({revolutionPackage(kTorus, o)}, "torus", kFront);
   const Mismatch m = silhouetteMismatch(image, kTorus, kFront);
+  record(m);
   EXPECT_GT(m.reference, 1000);
   EXPECT_LT(m.fraction(), allowedMismatch(o.encoding)) << m.describe();
 }
@@ -394,15 +403,46 @@ TEST(RevolutionRender, ProxyBandsKeepTheSilhouette) {
   without.iterations = 128;
   const Image image = render({revolutionPackage(kTorus, without)}, "torus_nobands", kFront);
   const Mismatch m = silhouetteMismatch(image, kTorus, kFront);
+  record(m);
+  EXPECT_LT(m.fraction(), 0.01) << m.describe();
+}
+
+// The march runs in object space: a node that moves, scales and mirrors the torus (which the mirror
+// maps onto itself) shows the transformed exact torus. Mirroring also flips the box's winding.
+TEST(RevolutionRender, NodeTransformsMoveScaleAndMirror) {
+  glb::Package package = revolutionPackage(kTorus);
+  const Vec3 offset{0.2f, -0.1f, 0.0f};
+  const float scale = 1.3f;
+  package.nodes[0].translation = {offset[0], offset[1], offset[2]};
+  package.nodes[0].scale = {-scale, scale, scale};
+  const Image image = render({package}, "torus_moved", kFront);
+  Mismatch m;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      Ray ray = pixelRay(kFront, x, y);
+      ray.origin = (ray.origin - offset) * (1.0f / scale);
+      ray.origin[0] = -ray.origin[0];
+      ray.direction[0] = -ray.direction[0];
+      const bool expected = exactHit(kTorus, ray).has_value();
+      const bool drawn = covered(image, x, y);
+      m.reference += expected ? 1 : 0;
+      m.differing += expected != drawn ? 1 : 0;
+      m.extra += drawn && !expected ? 1 : 0;
+    }
+  }
+  record(m);
+  EXPECT_GT(m.reference, 2000);
   EXPECT_LT(m.fraction(), 0.01) << m.describe();
 }
 
 // A camera inside the shape box (in the torus' hole) starts its rays on the near plane.
 TEST(RevolutionRender, CameraInsideTheShapeBox) {
-  const View inside{{0.0f, 0.55f, 0.0f}, {1.0f, 0.45f, 0.3f}};
+  const View inside{{0.0f, 0.55f, 0.0f}, {1.0f, 0.75f, 0.3f}};
   const Image image = render({revolutionPackage(kTorus)}, "torus_inside", inside);
   const Mismatch m = silhouetteMismatch(image, kTorus, inside);
+  record(m);
   EXPECT_GT(m.reference, 2000);
+  EXPECT_LT(m.reference, kSize * kSize - 2000) << "the view shows the torus and the background above it";
   EXPECT_LT(m.fraction(), 0.01) << m.describe();
 }
 
@@ -455,6 +495,8 @@ TEST(RevolutionRender, DepthCutsAStandardMeshWhereTheSphereDoes) {
       wrong += looksBlue != sphereVisible ? 1 : 0;
     }
   }
+  RecordProperty("wrongSurfacePixels", wrong);
+  RecordProperty("comparedPixels", sphereFront + planeFront);
   EXPECT_GT(sphereFront, 300) << "the upper half stands in front of the plane";
   EXPECT_GT(planeFront, 300) << "the plane hides the lower half";
   EXPECT_LE(wrong, (sphereFront + planeFront) / 200) << wrong << " pixels show the wrong surface";
