@@ -48,10 +48,12 @@ TEST(Projection, WallPicksCylindricalWithSquareTexelRatio) {
   EXPECT_NEAR(cyl.repeatRatio, std::numbers::pi, 1e-9);
 }
 
-TEST(Projection, ConePicksCylindrical) {
-  const ProjectionChoice c = chooseProjection(profileOf(polyline({{1, 0}, {0.5, 1.5}})));
-  EXPECT_EQ(c.chosen, Projection::Cylindrical);
-  EXPECT_EQ(scoreOf(c, Projection::Cylindrical).degenerateArea, 0);
+TEST(Projection, ConesPickCylindrical) {
+  for (double topRadius : {0.0, 0.5}) {  // with its apex on the axis, and a frustum
+    const ProjectionChoice c = chooseProjection(profileOf(polyline({{1, 0}, {topRadius, 1.5}})));
+    EXPECT_EQ(c.chosen, Projection::Cylindrical) << "top radius " << topRadius;
+    EXPECT_EQ(scoreOf(c, Projection::Cylindrical).degenerateArea, 0);
+  }
 }
 
 TEST(Projection, CanWithCapsIsNotCylindrical) {
@@ -79,6 +81,12 @@ TEST(Projection, PlateIsNotCylindrical) {
       chooseProjection(profileOf(polyline({{0, 0}, {2, 0}, {2, 0.05}, {1.9, 0.05}, {1.9, 0.02}, {0, 0.02}})));
   EXPECT_NE(c.chosen, Projection::Cylindrical);
   EXPECT_GT(scoreOf(c, Projection::Cylindrical).degenerateArea, 0.9);
+}
+
+TEST(Projection, ScoreCombinesTheThreeMeasuresAsDocumented) {
+  const ProjectionChoice c = chooseProjection(profileOf(polyline({{0, 0}, {1, 0}, {1, 2}, {0, 2}})));
+  for (const ProjectionScore& s : c.scores)
+    EXPECT_NEAR(s.score, 10 * s.degenerateArea + std::log(s.meanAngleDistortion) + std::log(s.meanAreaDistortion), 1e-12);
 }
 
 TEST(Projection, ScoresAreFiniteForAnEmptyProfile) {
