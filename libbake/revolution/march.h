@@ -35,7 +35,7 @@ struct MarchSettings {
   int maxIterations = 35;
   double safetyMargin = 0;      // object units, from measureSafetyMargin
   double overRelaxation = 1.6;  // 1: plain sphere tracing
-  double hitEpsilon = 0;        // object units
+  double hitEpsilon = 0;        // object units (0: kHitEpsilonTexels texels)
   bool useProxy = true;
 };
 
@@ -60,10 +60,10 @@ std::optional<double> intersectExact(const Ray& ray, const Profile& profile);
 // Error against run time: rays through a view grid from several directions around the object.
 struct MarchErrorPoint {
   int iterations = 0;
-  double silhouetteMismatch = 0;  // fraction of rays whose hit/miss differs from the reference
+  double silhouetteMismatch = 0;  // rays whose hit/miss differs / rays that hit in the reference or the march
   double meanHitError = 0;        // object units: |march hit point - reference hit| over agreed hits
   double maxHitError = 0;
-  double meanFetches = 0;
+  double meanFetches = 0;         // per ray that enters the shape box (a fragment the shader runs)
 };
 struct MarchErrorSettings {
   int raysPerView = 128 * 128;
