@@ -287,7 +287,7 @@ Status RevolutionRenderer::prepare(const Scene& scene, const std::vector<std::si
                            blob.data(), GL_REPEAT, GL_REPEAT);
       });
     }
-    if (p.arcLengthBufferView) {
+    if (p.projection == RevolutionProjection::ArcLength) {  // parseRevolution made sure the map is there
       const auto& blob = package.blobs[std::size_t(*p.arcLengthBufferView)].bytes;
       item.arcLengthTexture = texture(instance.package, *p.arcLengthBufferView, 2, [&] {
         bytes_ += blob.size();

@@ -22,6 +22,7 @@
 #include "play/render.h"
 #include "play/validate.h"
 #include "render/revolution.h"
+#include "runtime/gl_test.h"
 #include "support/golden.h"
 
 namespace bake::play {
@@ -569,6 +570,39 @@ TEST_P(RevolutionGolden, MatchesTheGoldenImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Projections, RevolutionGolden, ::testing::Values("cylindrical", "spherical"));
+
+// Only the maps a material reads reach the GPU: an arc-length map under a cylindrical projection
+// stays behind, a displacement map is uploaded, and two instances of one package share their maps.
+class RevolutionUpload : public test::GlTest {
+ protected:
+  std::size_t gpuBytes(const glb::Package& package, const std::string& name) {
+    Diagnostics diagnostics("bakeplay", true);
+    auto scene = loadScene({writePackage(package, name)}, diagnostics, [](const std::string&) { return true; });
+    EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+    gl::ShaderLibrary shaders;
+    auto renderer = SceneRenderer::create(*scene, RendererRegistry::builtIn(), shaders);
+    EXPECT_TRUE(renderer.isOk()) << renderer.status().describe();
+    EXPECT_EQ(renderer->techniques(), std::vector<std::string>{format::revolution::kExtension});
+    return renderer->gpuBytes();
+  }
+};
+
+TEST_F(RevolutionUpload, OnlyTheMapsTheMaterialReads) {
+  constexpr std::size_t kBoxBytes = 8 * 3 * 4 + 36 * 4;  // positions and indices of the drawn box
+  Options o;
+  o.arcLengthMap = true;  // present but not read: the projection is cylindrical
+  const glb::Package unread = revolutionPackage(kSphere, o);
+  EXPECT_EQ(gpuBytes(unread, "unread"), unread.blobs[0].bytes.size() + kBoxBytes);
+  o.arcLengthMap = false;
+  o.displacement = true;
+  const glb::Package bumped = revolutionPackage(kSphere, o);
+  EXPECT_EQ(gpuBytes(bumped, "bumped"), bumped.blobs[0].bytes.size() + bumped.blobs[1].bytes.size() + kBoxBytes);
+  glb::Package twice = revolutionPackage(kSphere);
+  glb::Node second = twice.nodes[0];
+  second.translation = {1.5, 0, 0};
+  twice.nodes.push_back(second);
+  EXPECT_EQ(gpuBytes(twice, "twice"), twice.blobs[0].bytes.size() + 2 * kBoxBytes);
+}
 
 // ---------------------------------------------------------------------------------------------
 // (d) Validation names the fault
