@@ -18,6 +18,7 @@
 // mirroring matters only for the coverage gradient in column 0 (its left neighbour is itself).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "core/parallel.h"
@@ -28,27 +29,21 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-// Lower envelope of parabolas over one line: d[q] = min_v (q - v)^2 + f[v]. `v`, `z` are scratch of
-// size n and n + 1.
-void envelope1d(const float* f, int n, float* d, int* v, double* z) {
+// Lower envelope of parabolas over one line: d[q] = min_v (q - v)^2 + f[v], for f holding integer
+// squared distances (or inf). `v` and `g` (the parabolas' f[v] + v^2) are scratch of size n; d may
+// alias f. Integer arithmetic without division: parabola k on the stack is hidden by the new one at
+// q when their meeting point s(k, q) is not right of s(k - 1, k), i.e. when
+// (g_q - g_k)(v_k - v_{k-1}) <= (g_k - g_{k-1})(q - v_k); the fill then moves to the next parabola
+// where it becomes the lower one.
+void envelope1d(const float* f, int n, float* d, int* v, std::int64_t* g) {
   int k = -1;
   for (int q = 0; q < n; ++q) {
     if (f[q] == kInf) continue;
-    const double fq = double(f[q]) + double(q) * q;
-    while (k >= 0) {
-      const int p = v[k];
-      const double s = (fq - (double(f[p]) + double(p) * p)) / (2.0 * (q - p));
-      if (s <= z[k]) {
-        --k;
-        continue;
-      }
-      break;
-    }
+    const std::int64_t gq = std::int64_t(f[q]) + std::int64_t(q) * q;
+    while (k >= 1 && (gq - g[k]) * (v[k] - v[k - 1]) <= (g[k] - g[k - 1]) * (q - v[k])) --k;
     ++k;
     v[k] = q;
-    z[k] = k == 0 ? -std::numeric_limits<double>::infinity()
-                  : (fq - (double(f[v[k - 1]]) + double(v[k - 1]) * v[k - 1])) / (2.0 * (q - v[k - 1]));
-    z[k + 1] = std::numeric_limits<double>::infinity();
+    g[k] = gq;
   }
   if (k < 0) {
     std::fill(d, d + n, kInf);
@@ -56,43 +51,45 @@ void envelope1d(const float* f, int n, float* d, int* v, double* z) {
   }
   int j = 0;
   for (int q = 0; q < n; ++q) {
-    while (z[j + 1] < q) ++j;
-    const double dq = double(q - v[j]);
-    d[q] = float(dq * dq + f[v[j]]);
+    // Value of parabola j at q is g_j - 2 q v_j + q^2; compare without the common q^2.
+    while (j < k && g[j + 1] - 2 * std::int64_t(q) * v[j + 1] <= g[j] - 2 * std::int64_t(q) * v[j]) ++j;
+    d[q] = float(g[j] - 2 * std::int64_t(q) * v[j] + std::int64_t(q) * q);
   }
 }
 
 // Column pass for a 0/inf image: squared distance to the nearest feature in the same column.
+// Blocks of columns sweep up, then down; within a block the rows are contiguous, so all its
+// columns advance together.
 void columnPass(std::vector<float>& f, int width, int height) {
-  // Sweep up, then down; rows are contiguous so all columns advance together.
-  std::vector<float> run(width, kInf);
-  for (int j = 0; j < height; ++j) {
-    float* row = f.data() + std::size_t(j) * width;
-    for (int i = 0; i < width; ++i) {
-      run[i] = row[i] == 0 ? 0.0f : run[i] + 1.0f;
-      row[i] = run[i];
+  parallelForBlocks(std::size_t(width), 128, 0, [&](std::size_t begin, std::size_t end) {
+    const std::size_t n = end - begin;
+    std::vector<float> run(n, kInf);
+    for (int j = 0; j < height; ++j) {
+      float* row = f.data() + std::size_t(j) * width + begin;
+      for (std::size_t i = 0; i < n; ++i) {
+        run[i] = row[i] == 0 ? 0.0f : run[i] + 1.0f;
+        row[i] = run[i];
+      }
     }
-  }
-  std::fill(run.begin(), run.end(), kInf);
-  for (int j = height - 1; j >= 0; --j) {
-    float* row = f.data() + std::size_t(j) * width;
-    for (int i = 0; i < width; ++i) {
-      run[i] = row[i] == 0 ? 0.0f : std::min(row[i], run[i] + 1.0f);
-      row[i] = run[i] == kInf ? kInf : run[i] * run[i];
+    std::fill(run.begin(), run.end(), kInf);
+    for (int j = height - 1; j >= 0; --j) {
+      float* row = f.data() + std::size_t(j) * width + begin;
+      for (std::size_t i = 0; i < n; ++i) {
+        run[i] = std::min(row[i], run[i] + 1.0f);  // row[i] is 0 at features
+        row[i] = run[i] * run[i];                   // inf stays inf
+      }
     }
-  }
+  });
 }
 
 void rowPass(std::vector<float>& f, int width, int height) {
   const std::size_t rowsPerBlock = std::max<std::size_t>(1, 16384 / std::max(1, width));
   parallelForBlocks(std::size_t(height), rowsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
-    std::vector<float> line(width);
     std::vector<int> v(width);
-    std::vector<double> z(width + 1);
+    std::vector<std::int64_t> g(width);
     for (std::size_t j = begin; j < end; ++j) {
       float* row = f.data() + j * width;
-      std::copy(row, row + width, line.begin());
-      envelope1d(line.data(), width, row, v.data(), z.data());
+      envelope1d(row, width, row, v.data(), g.data());  // in place: the fill reads only v and g
     }
   });
 }
