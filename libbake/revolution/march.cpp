@@ -10,7 +10,9 @@
 // overlap: the step went past the surface, and the hit test (d < epsilon) would accept a point inside
 // the solid (measured: up to 2 texels deep on a sphere). Plain steps never overshoot, since the margin
 // makes every sample a lower bound of the true distance. The failure test comes before the hit test,
-// and every sample (the undone one too) is an iteration.
+// and every sample (the undone one too) is an iteration. An over-relaxed step that leaves the march
+// interval is undone the same way (without a sample): the exit, unlike a far plane, hugs the solid,
+// and a relaxed step can jump over a thin part of it (a ring's tube) into the open.
 // The march covers the shape box, narrowed to the hull of the proxy bands (first entry to last exit),
 // as shaders/revolution/shape_march.glsl does.
 #include <algorithm>
@@ -69,7 +71,15 @@ MarchResult marchRay(const Ray& ray, const EncodedShapeMap& encoded, const Shape
   const double tExit = (*span)[1];
   double tPrevious = t, dPrevious = 0, step = 0;
   for (int iteration = 0; iteration < settings.maxIterations; ++iteration) {
-    if (t > tExit) break;  // past the exit: miss
+    if (t > tExit) {
+      // An over-relaxed step past the exit may have jumped over the solid (the exit hugs it, unlike
+      // a far plane): take the plain step from the previous point instead. Past the exit: miss.
+      if (!(omega > 1 && step > dPrevious)) break;
+      omega = 1;
+      step = dPrevious;
+      t = tPrevious + step;
+      if (t > tExit) break;
+    }
     const double x = ray.origin[0] + t * ray.direction[0];
     const double y = ray.origin[1] + t * ray.direction[1];
     const double z = ray.origin[2] + t * ray.direction[2];
