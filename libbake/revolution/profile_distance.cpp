@@ -18,16 +18,15 @@ DistanceSample signedDistance(const Profile& profile, Point2 p) {
   const Point2 q{std::abs(p.r), p.h};
   double best = std::numeric_limits<double>::infinity();
   const Segment* nearest = nullptr;
-  Point2 foot;
+  Point2 away;
   for (const Contour& contour : profile.contours)
     for (const Segment& s : contour.segments) {
       if (s.onAxis) continue;
-      const Point2 c = closestPoint(s, q);
-      const double d2 = (q.r - c.r) * (q.r - c.r) + (q.h - c.h) * (q.h - c.h);
-      if (d2 < best) {
-        best = d2;
+      const PieceDistance d = distanceToPiece(s, q);
+      if (d.distance < best) {
+        best = d.distance;
         nearest = &s;
-        foot = c;
+        away = d.away;
       }
     }
   DistanceSample sample;
@@ -36,13 +35,14 @@ DistanceSample signedDistance(const Profile& profile, Point2 p) {
     return sample;
   }
   const bool inside = insideProfile(profile, q);
-  const double dist = std::sqrt(best);
+  const double dist = best;
   const double sign = inside ? -1.0 : 1.0;
   sample.distance = sign * dist;
   if (dist > 0) {
-    sample.gradR = sign * (q.r - foot.r) / dist;
-    sample.gradH = sign * (q.h - foot.h) / dist;
+    sample.gradR = sign * away.r;
+    sample.gradH = sign * away.h;
   } else {
+    const Point2 foot = closestPoint(*nearest, q);
     // On the surface: the piece's normal, pointed out of the solid (tested just beside it). The
     // parameter of the foot does not matter for a line; for an arc use the direction to the centre.
     Point2 normal;

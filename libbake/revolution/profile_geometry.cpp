@@ -71,6 +71,29 @@ Point2 closestPoint(const Segment& s, Point2 p) {
   return dot(da, da) <= dot(db, db) ? s.a : s.b;
 }
 
+PieceDistance distanceToPiece(const Segment& s, Point2 p) {
+  PieceDistance result;
+  auto fromPoint = [&](Point2 q) {
+    const Point2 v = sub(p, q);
+    result.distance = length(v);
+    if (result.distance > 0) result.away = scale(v, 1.0 / result.distance);
+    return result;
+  };
+  if (!isArc(s)) return fromPoint(closestPoint(s, p));
+  const ArcGeometry arc = arcGeometry(s);
+  const Point2 v = sub(p, arc.centre);
+  const double len = length(v);
+  if (!(len > 0) || !angleOnArc(arc, angleOf(v))) {
+    const Point2 da = sub(p, s.a), db = sub(p, s.b);
+    return fromPoint(dot(da, da) <= dot(db, db) ? s.a : s.b);
+  }
+  const Point2 pa = sub(p, s.a);
+  const double powerOfPoint = dot(pa, pa) + 2.0 * dot(pa, sub(s.a, arc.centre));  // |p - c|^2 - R^2
+  result.distance = std::abs(powerOfPoint) / (len + arc.radius);
+  result.away = scale(v, (powerOfPoint >= 0 ? 1.0 : -1.0) / len);
+  return result;
+}
+
 Point2 pointAt(const Segment& s, double t) {
   if (t <= 0) return s.a;
   if (t >= 1) return s.b;
@@ -124,13 +147,19 @@ void parityCrossings(const Segment& s, double y, std::vector<double>& out) {
   if (!isArc(s)) return;
   // The lens (disc on the arc's side of the chord) cuts the line in one interval; its two ends
   // toggle the parity of every point inside it.
+  // Roots in coordinates about the chord midpoint m, where |c - m|^2 - R^2 = -(chord / 2)^2 exactly:
+  // no cancellation for nearly straight arcs (huge R), the smaller root from the product of roots.
   const ArcGeometry arc = arcGeometry(s);
-  const double dy = y - arc.centre.h;
-  const double w2 = arc.radius * arc.radius - dy * dy;
-  if (w2 <= 0) return;
-  const double w = std::sqrt(w2);
-  double lo = arc.centre.r - w, hi = arc.centre.r + w;
   const Point2 d = sub(s.b, s.a);
+  const Point2 m = scale(add(s.a, s.b), 0.5);
+  const Point2 c = sub(arc.centre, m);
+  const double yl = y - m.h;
+  const double k = -0.25 * dot(d, d) + yl * yl - 2.0 * yl * c.h;  // x^2 - 2 c.r x + k = 0
+  const double disc = c.r * c.r - k;
+  if (disc <= 0) return;
+  const double big = c.r + std::copysign(std::sqrt(disc), c.r);
+  const double small = big != 0 ? k / big : 0.0;
+  double lo = m.r + std::min(big, small), hi = m.r + std::max(big, small);
   const double arcSide = s.bulge > 0 ? -1.0 : 1.0;  // sign of cross(d, q - a) on the arc's side
   // cross(d, (x - a.r, y - a.h)) = d.r (y - a.h) - d.h (x - a.r): linear in x.
   if (d.h == 0) {

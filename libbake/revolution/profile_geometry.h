@@ -27,6 +27,15 @@ bool angleOnArc(const ArcGeometry& arc, double angle, double slack = 0);
 
 // Nearest point of the piece to p.
 Point2 closestPoint(const Segment& s, Point2 p);
+// Distance from p to the piece and the unit direction from its nearest point towards p (meaningless
+// at distance 0). For arcs it avoids the cancellation of |p - c| - R when the radius is huge
+// (nearly straight arcs): |p - c|^2 - R^2 = |p - a|^2 + 2 (p - a).(a - c), as |a - c| = R.
+struct PieceDistance {
+  double distance = 0;
+  Point2 away{1, 0};
+};
+PieceDistance distanceToPiece(const Segment& s, Point2 p);
+
 // Point at parameter t in [0, 1] (by sweep for arcs), and the unit tangent there.
 Point2 pointAt(const Segment& s, double t);
 Point2 tangentAt(const Segment& s, double t);

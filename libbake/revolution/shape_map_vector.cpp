@@ -25,10 +25,7 @@ struct Piece {
   const Segment* segment;
 };
 
-double distanceTo(const Segment& s, Point2 p) {
-  const Point2 c = closestPoint(s, p);
-  return std::hypot(p.r - c.r, p.h - c.h);
-}
+double distanceTo(const Segment& s, Point2 p) { return distanceToPiece(s, p).distance; }
 
 // Integral of clamp(v, 0, 1) from 0 to s.
 double rampIntegral(double s) {
@@ -132,22 +129,21 @@ void tileDistances(const std::vector<Piece>& pieces, const Profile& profile, con
         while (right < row.size() && row[right] <= p.r) ++right;
         const bool inside = ((row.size() - right) & 1) != 0;
         double best = std::numeric_limits<double>::infinity();
-        Point2 foot;
+        Point2 away;
         for (const Segment* s : candidates) {
-          const Point2 c = closestPoint(*s, p);
-          const double d2 = (p.r - c.r) * (p.r - c.r) + (p.h - c.h) * (p.h - c.h);
-          if (d2 < best) {
-            best = d2;
-            foot = c;
+          const PieceDistance d = distanceToPiece(*s, p);
+          if (d.distance < best) {
+            best = d.distance;
+            away = d.away;
           }
         }
         const std::size_t at = std::size_t(j) * grid.width + i;
-        const double dist = std::sqrt(best);
+        const double dist = best;
         if (dist > 0) {
           const double sign = inside ? -1.0 : 1.0;
           field.distance[at] = float(sign * dist);
-          field.gradR[at] = float(sign * (p.r - foot.r) / dist);
-          field.gradH[at] = float(sign * (p.h - foot.h) / dist);
+          field.gradR[at] = float(sign * away.r);
+          field.gradH[at] = float(sign * away.h);
         } else {
           const DistanceSample sample = signedDistance(profile, p);  // on the surface: the normal
           field.distance[at] = 0.0f;

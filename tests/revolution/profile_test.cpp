@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "revolution/profile_geometry.h"
 #include "revolution/profile_shapes.h"
 #include "revolution/shape_map.h"
 #include "support/golden.h"
@@ -201,6 +202,86 @@ TEST(ReadProfile, SvgEllipticalArcsAreRefused) {
   auto profile = readProfileSvg(writeFile("e.svg", "<svg><path d='M0 0 A 2 1 0 0 1 0 2'/></svg>"));
   ASSERT_FALSE(profile.isOk());
   EXPECT_NE(profile.status().message().find("elliptical arcs are not supported"), std::string::npos);
+}
+
+
+// Stiff cases: extreme scales, nearly straight and nearly full arcs, points on the surface, at an
+// arc's centre and very far away must give finite, correct answers.
+Profile scaledVase(double factor) {
+  Profile profile = makeProfile({vaseContour()});
+  for (Contour& c : profile.contours)
+    for (Segment& s : c.segments) {
+      s.a = {s.a.r * factor, s.a.h * factor};
+      s.b = {s.b.r * factor, s.b.h * factor};
+    }
+  std::vector<std::string> warnings;
+  EXPECT_TRUE(validateProfile(profile, warnings).isOk());
+  return profile;
+}
+
+TEST(ProfileStiff, DistanceScalesWithTinyAndHugeProfiles) {
+  const Profile unit = scaledVase(1.0);
+  for (double factor : {1e-7, 1e7}) {
+    const Profile scaled = scaledVase(factor);
+    for (double r = 0.05; r < 1.2; r += 0.17)
+      for (double h = -0.3; h < 2.3; h += 0.23) {
+        const double expected = signedDistance(unit, {r, h}).distance * factor;
+        const double got = signedDistance(scaled, {r * factor, h * factor}).distance;
+        ASSERT_NEAR(got, expected, 1e-9 * factor) << factor << " at " << r << ", " << h;
+      }
+  }
+}
+
+TEST(ProfileStiff, NearlyStraightAndNearlyFullArcs) {
+  // A bulge of 1e-12 is a line to within round-off; a 359-degree arc is nearly a full circle.
+  Profile flat = makeProfile({makeContour({{1, 0}, {2, 0}, {2, 1}, {1, 1}}, {0.0, 1e-12, 0.0, 0.0}, true)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(flat, warnings).isOk());
+  EXPECT_NEAR(signedDistance(flat, {2.5, 0.5}).distance, 0.5, 1e-9);
+  EXPECT_NEAR(signedDistance(flat, {1.9, 0.5}).distance, -0.1, 1e-9);
+  const double sweep = 359.0 * std::numbers::pi / 180.0;
+  const Point2 a{3 + std::cos(-0.5 * sweep), 2 + std::sin(-0.5 * sweep)};
+  const Point2 b{3 + std::cos(0.5 * sweep), 2 + std::sin(0.5 * sweep)};
+  Profile full = makeProfile({makeContour({a, b}, {std::tan(sweep / 4)}, true)});
+  ASSERT_TRUE(validateProfile(full, warnings).isOk());
+  // The closing chord (at r = 3 + cos(179.5 deg)) is surface too.
+  const double chordR = 3 + std::cos(0.5 * sweep);
+  EXPECT_NEAR(signedDistance(full, {3.0, 2.0}).distance, -(3.0 - chordR), 1e-9);  // the arc's centre
+  EXPECT_NEAR(signedDistance(full, {4.5, 2.0}).distance, 0.5, 1e-9);
+  EXPECT_NEAR(signedDistance(full, {3.0, 2.5}).distance, -0.5, 1e-9);
+  EXPECT_NEAR(signedDistance(full, {3.0, 3.2}).distance, 0.2, 1e-9);
+}
+
+TEST(ProfileStiff, OnTheSurfaceAndFarAwayStayFinite) {
+  const Profile profile = scaledVase(1.0);
+  for (const Contour& c : profile.contours)
+    for (const Segment& s : c.segments) {
+      if (s.onAxis) continue;
+      const DistanceSample onSurface = signedDistance(profile, pointAt(s, 0.37));
+      EXPECT_NEAR(onSurface.distance, 0.0, 1e-12);
+      EXPECT_NEAR(std::hypot(onSurface.gradR, onSurface.gradH), 1.0, 1e-9);
+    }
+  const DistanceSample far = signedDistance(profile, {1e12, -3e12});
+  EXPECT_TRUE(std::isfinite(far.distance));
+  EXPECT_NEAR(far.distance / std::hypot(1e12, 3e12), 1.0, 1e-6);
+}
+
+TEST(ProfileStiff, RoundOffBelowTheAxisSnapsAndOverlapsAreRefused) {
+  Profile snapped = makeProfile({makeContour({{-1e-15, 0}, {1, 0}, {1, 1}, {-1e-15, 1}}, {}, true)});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(snapped, warnings).isOk());
+  int onAxis = 0;
+  for (const Segment& s : snapped.contours[0].segments) onAxis += s.onAxis ? 1 : 0;
+  EXPECT_EQ(onAxis, 1);
+  // Two contours sharing an edge overlap.
+  Profile overlap = makeProfile({rectangleContour(1, 0, 2, 1), rectangleContour(2, 0.5, 3, 1.5)});
+  const Status status = validateProfile(overlap, warnings);
+  ASSERT_FALSE(status.isOk());
+  EXPECT_TRUE(status.message().find("overlaps") != std::string::npos ||
+              status.message().find("crosses") != std::string::npos) << status.message();
+  // An arc that bulges across the axis.
+  Profile across = makeProfile({makeContour({{0.2, 0}, {0.2, 1}}, {-1.0}, false)});
+  EXPECT_FALSE(validateProfile(across, warnings).isOk());
 }
 
 }  // namespace
