@@ -453,6 +453,42 @@ TEST(March, IterationsForTargetPicksTheSmallestBudgetOrTheLargest) {
   EXPECT_EQ(iterationsForTarget(curve, 0.5), 10);
 }
 
+TEST(March, RelaxedStepsNeverJumpOverAThinRing) {
+  // A ring: tube of radius 0.1 about r = 0.6, h = 0.25; the march interval hugs it, so an
+  // over-relaxed step from the hole can leave the interval across the tube.
+  ShapeGrid g{192, 80, 0.75 / 192, 0.1};
+  const ShapeField field = fieldFrom(g, [](double r, double h) { return std::hypot(r - 0.6, h - 0.25) - 0.1; });
+  const EncodedShapeMap encoded = encode(field, DistanceEncoding::Float);
+  Profile ring;
+  Contour c;
+  c.segments.push_back({{0.7, 0.25}, {0.5, 0.25}, 1.0, false});
+  c.segments.push_back({{0.5, 0.25}, {0.7, 0.25}, 1.0, false});
+  ring.contours.push_back(c);
+  MarchSettings settings;
+  settings.maxIterations = 256;
+  settings.safetyMargin = 0.75 * g.texelSize;  // above the bilinear overestimate of this field
+  const std::vector<ProxyBand> bands = buildProxyBands(field, 16, settings.safetyMargin);
+  std::mt19937_64 rng(23);
+  int deepHits = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Ray ray = randomRay(rng, {0, 0.25, 0}, 0.7, 3.0);
+    const auto t = intersectExact(ray, ring);
+    if (!t) continue;
+    // Rays that cross the tube more than a texel deep must be hits.
+    double deepest = 0;
+    for (double s = *t; s < *t + 0.3; s += 1e-3) {
+      const Vec3d p = at(ray, s);
+      deepest = std::min(deepest, std::hypot(std::hypot(p[0], p[2]) - 0.6, p[1] - 0.25) - 0.1);
+    }
+    if (deepest > -g.texelSize) continue;
+    ++deepHits;
+    const MarchResult m = marchRay(ray, encoded, g, bands, settings);
+    EXPECT_TRUE(m.hit) << "ray " << k << " fetches " << m.fetches;
+    if (m.hit) EXPECT_LE(m.t, *t + 1e-9);
+  }
+  EXPECT_GT(deepHits, 300);
+}
+
 // --- stiff cases: axis rays, grazing rays, extreme scales, degenerate input ------------------------
 
 Profile scaledSphere(double radius) {
