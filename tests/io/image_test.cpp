@@ -169,6 +169,28 @@ TEST(ImageIo, RejectsTypesAFormatCannotStore) {
   EXPECT_EQ(entriesIn(dir), 0u);
 }
 
+// Images embedded in packages are decoded from their bytes, exactly as from a file; errors name the
+// given name.
+TEST(ImageIo, ReadsFromMemoryLikeFromAFile) {
+  const fs::path dir = test::freshTempDir("image_memory");
+  const fs::path file = dir / "rgba16.png";
+  ASSERT_TRUE(writeImage(file, makeImage(13, 7, 4, sixteenBit), PixelType::U16).isOk());
+  const Result<Image> fromFile = readImage(file);
+  ASSERT_TRUE(fromFile.isOk());
+  const std::vector<std::uint8_t> bytes = test::readAll(file);
+  const Result<Image> fromMemory = readImageFromMemory(bytes, "package.glb image 0", ".png");
+  ASSERT_TRUE(fromMemory.isOk()) << fromMemory.status().describe();
+  expectSamePixels(*fromFile, *fromMemory);
+  EXPECT_EQ(fromMemory->sourceType, PixelType::U16);
+
+  const std::string text = "this is not a PNG file at all, just text that goes on for a while";
+  const Result<Image> corrupt =
+      readImageFromMemory({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, "bad image", ".png");
+  EXPECT_EQ(corrupt.status().code(), ExitCode::InvalidInput) << corrupt.status().describe();
+  EXPECT_EQ(corrupt.status().where().file, "bad image");
+  EXPECT_FALSE(readImageFromMemory({}, "empty image", ".png").isOk());
+}
+
 TEST(ImageIo, UnreadableFilesGiveErrorsWithThePath) {
   const fs::path dir = test::freshTempDir("image_read_errors");
   const Result<Image> missing = readImage(dir / "absent.png");
