@@ -54,7 +54,7 @@ double median(std::vector<double> values) {
 void ours(const cv::Mat& image, std::vector<float>& out) {
   const int w = image.cols, h = image.rows;
   out.resize(std::size_t(w) * h);
-  bake::parallelForBlocks(std::size_t(h), 16, 0, [&](std::size_t begin, std::size_t end) {
+  bake::parallelForBlocks(std::size_t(h), std::max<std::size_t>(1, (std::size_t(1) << 20) / w), 0, [&](std::size_t begin, std::size_t end) {
     for (std::size_t y = begin; y < end; ++y) {
       const unsigned char* row = image.ptr<unsigned char>(int(y));
       float* dst = out.data() + y * w;
@@ -62,7 +62,7 @@ void ours(const cv::Mat& image, std::vector<float>& out) {
     }
   });
   bake::revolution::squaredEdt2d(out, w, h);
-  bake::parallelForBlocks(out.size(), 1 << 16, 0, [&](std::size_t begin, std::size_t end) {
+  bake::parallelForBlocks(out.size(), std::size_t(1) << 20, 0, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) out[k] = std::sqrt(out[k]);
   });
 }

@@ -28,6 +28,7 @@ namespace bake::revolution {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr std::size_t kBlockTexels = std::size_t(1) << 20;
 
 // Lower envelope of parabolas over one line: d[q] = min_v (q - v)^2 + f[v], for f holding integer
 // squared distances (or inf). `v` and `g` (the parabolas' f[v] + v^2) are scratch of size n; d may
@@ -61,7 +62,10 @@ void envelope1d(const float* f, int n, float* d, int* v, std::int64_t* g) {
 // Blocks of columns sweep up, then down; within a block the rows are contiguous, so all its
 // columns advance together.
 void columnPass(std::vector<float>& f, int width, int height) {
-  parallelForBlocks(std::size_t(width), 128, 0, [&](std::size_t begin, std::size_t end) {
+  // Blocks of about a million texels: small images run on the calling thread, as starting workers
+  // would cost more than the work (block sizes depend on the image only, so results never vary).
+  const std::size_t columnsPerBlock = std::max<std::size_t>(128, kBlockTexels / std::max(1, height));
+  parallelForBlocks(std::size_t(width), columnsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
     const std::size_t n = end - begin;
     std::vector<float> run(n, kInf);
     for (int j = 0; j < height; ++j) {
@@ -83,7 +87,7 @@ void columnPass(std::vector<float>& f, int width, int height) {
 }
 
 void rowPass(std::vector<float>& f, int width, int height) {
-  const std::size_t rowsPerBlock = std::max<std::size_t>(1, 16384 / std::max(1, width));
+  const std::size_t rowsPerBlock = std::max<std::size_t>(1, kBlockTexels / std::max(1, width));
   parallelForBlocks(std::size_t(height), rowsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
     std::vector<int> v(width);
     std::vector<std::int64_t> g(width);
