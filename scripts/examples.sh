@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds the tools, describes the example packages in
-# pipelines/example with bakeinfo, validates them and renders each (and the bundled example scene)
-# headless with bakeplay into out/examples/. (As the bakers land, this bakes the example scenes first.)
+# The main job: installs what is missing, builds the tools, bakes the example scenes of pipelines/
+# into out/examples/, describes the packages with bakeinfo, validates them and renders each (and the
+# bundled example scene) headless with bakeplay into out/examples/.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
@@ -18,6 +18,38 @@ done
 for package in *.glb; do
   "$bin/bakeplay/bakeplay" render -q "$package" -o "$out/${package%.glb}.png"
 done
+
+# GeoTextures (pipelines/geodesic): a generated genus-3 pretzel, three exact geodesic fields, one
+# picture per material preset.
+geo="$here/pipelines/geodesic"
+"$bin/bakeshape/bakeshape" pretzel -o "$out/pretzel.glb"
+"$bin/geobake/geobake" "$out/pretzel.glb" --sources "$geo/sources.json" --verify 64 \
+  --report "$out/pretzel-fields.report.json" -o "$out/pretzel-fields.glb"
+"$bin/bakeplay/bakeplay" validate -q "$out/pretzel-fields.glb"
+for preset in isolines sand-water moss-granite paint-metal-rust water-lava opacity-front wave-displacement; do
+  "$bin/bakeplay/bakeplay" render -q "$out/pretzel-fields.glb" --geotexture "$preset" \
+    -o "$out/geodesic-$preset.png"
+done
+
+# Revolution mapping (pipelines/revolution): textures made by bakeshape, then a vase, a ring and a
+# plate baked from their profiles, each rendered alone and the three together.
+rev="$here/pipelines/revolution"
+for pattern in glaze bands hammered knurl; do
+  "$bin/bakeshape/bakeshape" "$pattern" --resolution 512 -o "$out/$pattern.png" -q
+done
+"$bin/revolbake/revolbake" "$rev/vase.json" -o "$out/vase.glb" --base-color "$out/glaze.png" \
+  --height-map "$out/hammered.png" --height-scale 0.004 --report "$out/vase.report.json"
+"$bin/revolbake/revolbake" "$rev/ring.json" -o "$out/ring.glb" --base-color "$out/bands.png" \
+  --height-map "$out/knurl.png" --height-scale 0.003 --position 1.3,0,0 --report "$out/ring.report.json"
+"$bin/revolbake/revolbake" "$rev/plate.json" -o "$out/plate.glb" --base-color "$out/bands.png" \
+  --position -1.6,0,0 --report "$out/plate.report.json"
+"$bin/bakeplay/bakeplay" validate -q "$out/vase.glb" "$out/ring.glb" "$out/plate.glb"
+for object in vase ring plate; do
+  "$bin/bakeplay/bakeplay" render -q "$out/$object.glb" -o "$out/revolution-$object.png"
+done
+"$bin/bakeplay/bakeplay" render -q "$out/vase.glb" "$out/ring.glb" "$out/plate.glb" --size 1024x512 \
+  -o "$out/revolution-scene.png"
+
 "$bin/bakeplay/bakeplay" render -q -o "$out/bundled-example.png" --frames 30 --report "$out/bundled-example.report.json"
 echo "rendered: $(cd "$out" && ls *.png | tr '\n' ' ')(in out/examples/)"
 echo "open a window on a package: $bin/bakeplay/bakeplay view pipelines/example/wavy-grid.glb"

@@ -7,7 +7,9 @@
 #include "core/path.h"
 #include "core/session.h"
 #include "io/glb.h"
+#include "io/image.h"
 #include "mesh/mesh_stats.h"
+#include "mesh/patterns.h"
 
 namespace bake {
 namespace {
@@ -53,12 +55,28 @@ Result<std::vector<std::uint8_t>> encodeGlb(const TriangleMesh& mesh, const std:
   return glb::encode(package);
 }
 
+// A pattern image (mesh/patterns.h) instead of a mesh: written through OpenImageIO, atomically.
+Status runPattern(const ShapeToolSettings& settings, Diagnostics& diagnostics) {
+  BakeSession session("bakeshape", settings.common, diagnostics);
+  session.report().setOptions({{"pattern", settings.shape.name}, {"resolution", settings.shape.resolution}});
+  auto bake = [&]() -> Status {
+    StageTimer timer(&session.report(), "pattern");
+    BAKE_ASSIGN_OR_RETURN(const Image image, makePattern(settings.shape.name, settings.shape.resolution));
+    BAKE_RETURN_IF_ERROR(writeImage(settings.output, image, PixelType::U8));
+    session.recordWrittenOutput(settings.output);
+    session.report().setStatistic("pixels", image.width * image.height);
+    return {};
+  };
+  return session.finish(bake());
+}
+
 }  // namespace
 
 Status runShapeTool(const ShapeToolSettings& settings, Diagnostics& diagnostics) {
   const std::string extension = lowercaseExtension(settings.output);
+  if (extension == ".png") return runPattern(settings, diagnostics);
   if (extension != ".glb" && extension != ".obj")
-    return usageError("-o " + settings.output + ": the output must end in .glb or .obj");
+    return usageError("-o " + settings.output + ": the output must end in .glb, .obj (shapes) or .png (patterns)");
   BakeSession session("bakeshape", settings.common, diagnostics);
   session.report().setOptions({{"shape", settings.shape.name}, {"resolution", settings.shape.resolution}});
   auto bake = [&]() -> Status {

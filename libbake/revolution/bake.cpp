@@ -82,6 +82,7 @@ json optionsOf(const Settings& settings) {
           {"proxyBands", settings.proxyBands},
           {"overRelaxation", settings.overRelaxation},
           {"texelSize", settings.imageTexelSize},
+          {"position", settings.position},
           {"threads", settings.common.threads}};
 }
 

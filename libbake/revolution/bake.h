@@ -4,6 +4,7 @@
 // CPU march (identical to the shader) finds for the requested silhouette error.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,7 @@ struct Settings {
   int proxyBands = 16;
   double overRelaxation = 1.6;
   std::string baseColorTexture;  // optional PNG embedded as the material's base colour
+  std::array<double, 3> position{0, 0, 0};  // node translation (where the object stands in a scene)
   CommonOptions common;  // --report, --depfile, --threads, --quiet
 };
 

@@ -162,7 +162,13 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   glb::Node node;
   node.name = std::filesystem::path(settings.input).stem().string();
   node.mesh = 0;
-  if (state.meshAxis) node.matrix = axisFrameMatrix(*state.meshAxis);
+  if (state.meshAxis) {
+    std::array<double, 16> matrix = axisFrameMatrix(*state.meshAxis);
+    for (int k = 0; k < 3; ++k) matrix[12 + k] += settings.position[k];
+    node.matrix = matrix;
+  } else {
+    node.translation = settings.position;
+  }
   package.nodes.push_back(node);
   return package;
 }

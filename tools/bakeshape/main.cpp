@@ -1,5 +1,6 @@
 // bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
 #include "core/cli.h"
+#include "mesh/patterns.h"
 #include "mesh/shape_tool.h"
 
 int main(int argc, char** argv) {
@@ -7,11 +8,17 @@ int main(int argc, char** argv) {
   bake::Diagnostics diagnostics("bakeshape");
   std::string names;
   for (const std::string& name : bake::shapeNames()) names += (names.empty() ? "" : ", ") + name;
-  CLI::App app{"Generates closed example shapes by polygonising signed distance fields (marching tetrahedra).",
+  std::string patterns;
+  for (const std::string& name : bake::patternNames()) patterns += (patterns.empty() ? "" : ", ") + name;
+  CLI::App app{"Generates closed example shapes by polygonising signed distance fields (marching tetrahedra),\n"
+               "and tileable example images (colour textures, height maps) when the output ends in .png.",
                "bakeshape"};
-  app.add_option("shape", settings.shape.name, "One of: " + names)->required();
-  app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj)")->required();
-  app.add_option("--resolution", settings.shape.resolution, "Grid cells along the longest side")->default_str("64");
+  app.add_option("shape", settings.shape.name, "A shape: " + names + "; or, with a .png output, a pattern: " + patterns)
+      ->required();
+  app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj), or pattern image (.png)")->required();
+  app.add_option("--resolution", settings.shape.resolution,
+                 "Grid cells along the longest side (shapes, default 64) or pixels per side (patterns)")
+      ->default_str("64");
   bake::addCommonOptions(app, settings.common, {.version = true, .report = true, .depfile = true, .threads = false,
                                                 .printInputs = false});
   return bake::runTool(app, diagnostics, argc, argv, [&] {

@@ -1,5 +1,6 @@
 // revolbake: bakes the profile of a surface of revolution into a shape-map package for revolution
 // mapping (formats/revolution.md).
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
   app.add_option("--repeat-u", settings.repeatU, "Texture repeats around the axis (default: from the measured u:v ratio)");
   app.add_option("--repeat-v", settings.repeatV, "Texture repeats along the projection's v (default: 1)");
   app.add_option("--base-color", settings.baseColorTexture, "PNG embedded as the material's base colour texture");
+  std::string position;
+  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation; axis along +y)");
   app.add_option("--target-error", settings.targetError,
                  "Silhouette mismatch the recorded iteration budget must reach (fraction of rays)")
       ->default_str("0.005");
@@ -61,6 +64,10 @@ int main(int argc, char** argv) {
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
     if (projectionOption->count() > 0) settings.projection = projection;
+    const bool positionParsed = position.empty() || std::sscanf(position.c_str(), "%lf,%lf,%lf", &settings.position[0],
+                                                                &settings.position[1], &settings.position[2]) == 3;
+    if (!positionParsed || !std::isfinite(settings.position[0] + settings.position[1] + settings.position[2]))
+      return bake::usageError("--position " + position + ": expected X,Y,Z");
     if (settings.common.printInputs) {
       std::printf("%s\n", settings.input.c_str());
       if (!settings.heightMap.empty()) std::printf("%s\n", settings.heightMap.c_str());
