@@ -175,6 +175,19 @@ TEST(MarchSample, FiltersEncodedValuesBeforeDecoding) {
   EXPECT_NEAR(sampleDistance(u, g, 1.0, 0.5), 0.5 * (-0.04 + 1.0), 2 * u.distanceScale / 65535);
 }
 
+TEST(MarchSample, ReadsTheBakesEncodingsAsItsDecoderDoes) {
+  const ShapeGrid g = sphereGrid(24);
+  const ShapeField field = fieldFrom(g, sphereDistance);
+  for (DistanceEncoding encoding : {DistanceEncoding::Float, DistanceEncoding::Unorm16, DistanceEncoding::Sqrt8}) {
+    const EncodedShapeMap encoded = encodeShapeMap(field, encoding);
+    const ShapeField decoded = decodeShapeMap(encoded, g);
+    for (int j = 0; j < g.height; ++j)
+      for (int i = 0; i < g.width; ++i)
+        ASSERT_NEAR(sampleDistance(encoded, g, g.centreR(i), g.centreH(j)), decoded.at(i, j), 1e-6)
+            << encodingName(encoding) << " texel " << i << "," << j;
+  }
+}
+
 // --- exact intersection -----------------------------------------------------------------------------
 
 TEST(MarchExact, SphereMatchesTheClosedForm) {
