@@ -604,6 +604,23 @@ TEST_F(RevolutionUpload, OnlyTheMapsTheMaterialReads) {
   EXPECT_EQ(gpuBytes(twice, "twice"), twice.blobs[0].bytes.size() + 2 * kBoxBytes);
 }
 
+// Every variant compiles and links, including combinations no test package uses.
+TEST_F(RevolutionUpload, EveryVariantCompiles) {
+  gl::ShaderLibrary shaders;
+  for (const char* encoding : {"ENCODING_FLOAT", "ENCODING_UNORM16", "ENCODING_SQRT8"}) {
+    for (const char* projection : {"PROJECTION_CYLINDRICAL", "PROJECTION_SPHERICAL", "PROJECTION_ARC_LENGTH"}) {
+      for (int features = 0; features < 4; ++features) {
+        gl::Variant variant{{"revolution/revolution.vert", "revolution/revolution.frag", "", "", ""},
+                            {encoding, projection, "MAX_PROXY_BANDS 64"}};
+        if (features & 1) variant.defines.push_back("HAS_DISPLACEMENT");
+        if (features & 2) variant.defines.push_back("HAS_BASE_COLOR_TEXTURE");
+        const auto program = shaders.program(variant);
+        EXPECT_TRUE(program.isOk()) << variant.key() << ": " << program.status().describe();
+      }
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // (d) Validation names the fault
 
