@@ -301,11 +301,7 @@ ShapeField distanceFromCoverage(const CoverageImage& image) {
   p.width = w;
   p.height = h;
   p.pieces.resize(edges.size());
-  const int refinements = 2;
-  const double far = 2.0 * (w + h);  // no edge at all: unbounded, stored large and finite
-  for (int round = 0; round <= refinements; ++round) {
-    p.nearest.assign(std::size_t(w) * h, -1);
-    p.dist2.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
+  auto buildPieces = [&] {
     for (std::size_t e = 0; e < edges.size(); ++e) {
       const std::size_t k = edges[e];
       const int i = int(k % w), j = int(k / w);
@@ -313,22 +309,55 @@ ShapeField distanceFromCoverage(const CoverageImage& image) {
       const double offset = edgeOffset(a(i, j), n);
       const Vec foot{i + 0.5 + offset * n.x, j + 0.5 + offset * n.y};
       p.pieces[e] = n.x == 0 && n.y == 0 ? EdgePiece{foot, foot} : clipToTexel(i, j, foot, n);
-      const Vec q = nearestOnPiece(p.pieces[e], i + 0.5, j + 0.5);
-      p.nearest[k] = int(e);
-      p.dist2[k] = (i + 0.5 - q.x) * (i + 0.5 - q.x) + (j + 0.5 - q.y) * (j + 0.5 - q.y);
     }
-    propagate(p);
-    for (std::size_t k = 0; k < p.dist2.size(); ++k) {
-      const bool inside = image.coverage[k] >= 0.5f;
-      const double d = std::isfinite(p.dist2[k]) ? std::sqrt(p.dist2[k]) : far;
-      field.distance[k] = float((inside ? -d : d) * image.texelSize);
+  };
+  // Refine the edge normals twice: the gradient of the distance to the edge pieces (central
+  // differences at each edge texel) is smoother than the 3 x 3 coverage gradient. Near an edge the
+  // nearest piece lies within two texels, so these rounds look only there.
+  std::vector<int> edgeAt(std::size_t(w) * h, -1);
+  for (std::size_t e = 0; e < edges.size(); ++e) edgeAt[edges[e]] = int(e);
+  auto localDistance = [&](int i, int j) {
+    if (i < 0) i = -i - 1;  // the distance is symmetric about the axis
+    double best = std::numeric_limits<double>::infinity();
+    for (int y = std::max(0, j - 2); y <= std::min(h - 1, j + 2); ++y)
+      for (int x = std::max(0, i - 2); x <= std::min(w - 1, i + 2); ++x) {
+        const int e = edgeAt[std::size_t(y) * w + x];
+        if (e < 0) continue;
+        const Vec q = nearestOnPiece(p.pieces[e], i + 0.5, j + 0.5);
+        best = std::min(best, std::hypot(i + 0.5 - q.x, j + 0.5 - q.y));
+      }
+    return a(i, j) >= 0.5 ? -best : best;
+  };
+  std::vector<Vec> refined(edges.size());
+  for (int round = 0; round < 2; ++round) {
+    buildPieces();
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const int i = int(edges[e] % w), j = int(edges[e] / w);
+      const int ir = std::min(w - 1, i + 1), jd = std::max(0, j - 1), ju = std::min(h - 1, j + 1);
+      const double gr = (localDistance(ir, j) - localDistance(i - 1, j)) / (ir - i + 1);
+      const double gh = ju > jd ? (localDistance(i, ju) - localDistance(i, jd)) / (ju - jd) : 0.0;
+      const double len = std::hypot(gr, gh);
+      refined[e] = std::isfinite(len) && len > 0 ? Vec{-gr / len, -gh / len} : normal[edges[e]];
     }
-    if (round == refinements) break;
-    // Refine the edge normals: the gradient of the distance just computed is smoother than the
-    // coverage gradient (it sees the neighbouring edge pieces, not a 3 x 3 box of coverage).
-    gradientFromDistance(field);
-    for (std::size_t k : edges)
-      if (field.gradR[k] != 0 || field.gradH[k] != 0) normal[k] = {-double(field.gradR[k]), -double(field.gradH[k])};
+    for (std::size_t e = 0; e < edges.size(); ++e) normal[edges[e]] = refined[e];
+  }
+  buildPieces();
+  // Then every texel: the nearest piece, propagated from the edge texels.
+  p.nearest.assign(std::size_t(w) * h, -1);
+  p.dist2.assign(std::size_t(w) * h, std::numeric_limits<double>::infinity());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const std::size_t k = edges[e];
+    const int i = int(k % w), j = int(k / w);
+    const Vec q = nearestOnPiece(p.pieces[e], i + 0.5, j + 0.5);
+    p.nearest[k] = int(e);
+    p.dist2[k] = (i + 0.5 - q.x) * (i + 0.5 - q.x) + (j + 0.5 - q.y) * (j + 0.5 - q.y);
+  }
+  propagate(p);
+  const double far = 2.0 * (w + h);  // no edge at all: unbounded, stored large and finite
+  for (std::size_t k = 0; k < p.dist2.size(); ++k) {
+    const bool inside = image.coverage[k] >= 0.5f;
+    const double d = std::isfinite(p.dist2[k]) ? std::sqrt(p.dist2[k]) : far;
+    field.distance[k] = float((inside ? -d : d) * image.texelSize);
   }
   // Gradient: from the nearest point of the nearest edge piece, pointing out of the solid.
   for (std::size_t k = 0; k < p.dist2.size(); ++k) {
