@@ -4,11 +4,11 @@
 // volumes; Hart 1996, section 5). A texel square can hold solid only if the distance at its centre
 // is at most half its diagonal (the distance is exact at centres and 1-Lipschitz), so each band's
 // radius is the outer edge of the farthest such texel among the band's rows, widened by the margin
-// plus a quarter texel for the hit epsilon
-// (and by the rows within that reach above and below) because the march stops at distance
-// `margin` from the solid, not at the solid itself. The band boundaries are chosen by dynamic
-// programming over the rows for the least total band volume (O(bands x rows^2) additions), so bands
-// are thin where the radius changes fast and tall where it does not.
+// plus a quarter texel for the hit epsilon (and by the rows within that reach above and below),
+// because the march stops at distance `margin` from the solid, not at the solid itself. The band
+// boundaries are chosen by dynamic programming over the rows for the least total band volume
+// (O(bands x rows^2) additions, rows taken in groups beyond 1024 of them), so bands are thin where
+// the radius changes fast and tall where it does not.
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
@@ -21,6 +21,7 @@ namespace bake::revolution {
 namespace {
 
 constexpr double kHitSlackTexels = 0.25;  // above the hit epsilon (kHitEpsilonTexels)
+constexpr int kMaxCuts = 1024;            // band boundary positions the search considers
 
 // Outer edge (object units) of the farthest texel in row j that may contain solid; 0 when none.
 double rowExtent(const ShapeField& field, int j) {
@@ -79,8 +80,14 @@ std::vector<ProxyBand> buildProxyBands(const ShapeField& field, int bandCount, d
   auto radiusOf = [&](double widest) { return widest > 0 ? widest + reach : 0.0; };  // 0: no solid
 
   // Band boundaries by dynamic programming over the rows: the least total volume sum(R^2 rows),
-  // the empty space a ray can cross inside the bands.
-  const int n = g.height;
+  // the empty space a ray can cross inside the bands. Tall maps are cut at every `stride` rows only,
+  // which keeps the search at most kMaxCuts^2 per band.
+  const int stride = (g.height + kMaxCuts - 1) / kMaxCuts;
+  const int n = (g.height + stride - 1) / stride;  // cut positions 0..n
+  auto rowOfCut = [&](int k) { return std::min(k * stride, g.height); };
+  std::vector<double> blockWidest(n, 0);
+  for (int j = 0; j < g.height; ++j) blockWidest[j / stride] = std::max(blockWidest[j / stride], covered[j]);
+  bandCount = std::min(bandCount, n);
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> cost(std::size_t(n + 1), inf), next(std::size_t(n + 1));
   std::vector<std::vector<int>> split(bandCount + 1, std::vector<int>(n + 1, 0));
@@ -89,17 +96,17 @@ std::vector<ProxyBand> buildProxyBands(const ShapeField& field, int bandCount, d
     std::fill(next.begin(), next.end(), inf);
     for (int j = b; j <= n; ++j) {
       double widest = 0;
-      for (int i = j - 1; i >= b - 1; --i) {  // band = rows [i, j)
-        widest = std::max(widest, covered[i]);
+      for (int i = j - 1; i >= b - 1; --i) {  // band = cuts [i, j)
+        widest = std::max(widest, blockWidest[i]);
         const double radius = radiusOf(widest);
-        const double total = cost[i] + radius * radius * (j - i);
+        const double total = cost[i] + radius * radius * (rowOfCut(j) - rowOfCut(i));
         if (total < next[j]) next[j] = total, split[b][j] = i;
       }
     }
     cost.swap(next);
   }
-  std::vector<int> edges{n};
-  for (int b = bandCount, j = n; b >= 1; --b) edges.push_back(j = split[b][j]);
+  std::vector<int> edges{g.height};
+  for (int b = bandCount, j = n; b >= 1; --b) edges.push_back(rowOfCut(j = split[b][j]));
   std::reverse(edges.begin(), edges.end());
   for (int b = 0; b < bandCount; ++b) {
     const int j0 = edges[b], j1 = edges[b + 1];

@@ -365,6 +365,22 @@ TEST(MarchProxy, BandsContainEverySurfacePointAndAreTight) {
   }
 }
 
+TEST(MarchProxy, TallMapsCutBandsOnRowGroupsAndStillContainTheSurface) {
+  const ShapeGrid g = sphereGrid(1000);  // 2000 rows: cuts every 2 rows
+  const ShapeField field = fieldFrom(g, sphereDistance);
+  const double margin = 0.5 * g.texelSize;
+  const std::vector<ProxyBand> bands = buildProxyBands(field, 64, margin);
+  ASSERT_EQ(bands.size(), 64u);
+  for (std::size_t b = 1; b < bands.size(); ++b) EXPECT_DOUBLE_EQ(bands[b].hMin, bands[b - 1].hMax);
+  for (int k = 0; k <= 20000; ++k) {
+    const double angle = std::numbers::pi * (k / 20000.0 - 0.5);
+    const double r = std::cos(angle), h = std::sin(angle);
+    bool inside = false;
+    for (const ProxyBand& band : bands) inside |= h >= band.hMin && h <= band.hMax && r + margin <= band.rMax;
+    EXPECT_TRUE(inside) << "surface point (" << r << ", " << h << ")";
+  }
+}
+
 TEST(MarchProxy, EntryAndExitBracketTheSphere) {
   const SphereMap s = sphereMap(64);
   const Profile sphere = sphereProfile();
