@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numbers>
@@ -196,6 +197,26 @@ TEST(ReadProfile, SvgCurvesAreFlattenedWithinTheTolerance) {
     }
   }
   EXPECT_GT(curvePieces, 8);
+}
+
+TEST(ReadProfile, TheThreeVaseFilesDescribeTheSameSolid) {
+  // tests/revolution/data/vase.{json,csv,svg}: the vase of profile_shapes.h in each format.
+  const std::filesystem::path data = bake::test::sourceDir() / "tests" / "revolution" / "data";
+  Profile reference = makeProfile({vaseContour()});
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(validateProfile(reference, warnings).isOk());
+  std::vector<Result<Profile>> read;
+  read.push_back(readProfileJson((data / "vase.json").string()));
+  read.push_back(readProfileCsv((data / "vase.csv").string()));
+  read.push_back(readProfileSvg((data / "vase.svg").string(), "vase"));
+  for (auto& profile : read) {
+    ASSERT_TRUE(profile.isOk()) << profile.status().describe();
+    ASSERT_TRUE(validateProfile(*profile, warnings).isOk()) << profile->source;
+    for (double r = 0.02; r < 1.1; r += 0.09)
+      for (double h = -0.2; h < 2.2; h += 0.11)
+        ASSERT_NEAR(signedDistance(*profile, {r, h}).distance, signedDistance(reference, {r, h}).distance, 1e-9)
+            << profile->source << " at " << r << ", " << h;
+  }
 }
 
 TEST(ReadProfile, SvgEllipticalArcsAreRefused) {
