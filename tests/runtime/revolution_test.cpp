@@ -544,6 +544,40 @@ TEST(RevolutionRender, ArcLengthMatchesSphericalOnTheSphere) {
   EXPECT_GT(untextured->percentOver, 10.0);
 }
 
+// The base colour image's top row is at the top of the object: the checker's top half is pink
+// (green 0.6), its bottom half white; light pixels above the sphere's equator must be pink, below white.
+TEST(RevolutionRender, ImageTopIsAtTheTop) {
+  Options o;
+  o.projection = "spherical";
+  o.colourTexture = true;
+  o.baseColour = {1, 1, 1, 1};
+  const Image image = render({revolutionPackage(kSphere, o)}, "orientation", kFront);
+  int upper = 0, upperPink = 0, lower = 0, lowerWhite = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const Ray ray = pixelRay(kFront, x, y);
+      const auto t = sphereHit(ray);
+      if (!t) continue;
+      const Vec3 p = ray.origin + ray.direction * float(*t);
+      const double v = 1 - std::acos(std::clamp((p[1] - 0.5) / 0.5, -1.0, 1.0)) / kPi;
+      const float r = image.at(x, y, 0), g = image.at(x, y, 1), b = image.at(x, y, 2);
+      if (r < 0.7f * b || std::fabs(v - 0.5) < 0.08) continue;  // dark squares, the equator
+      const bool pink = g < 0.9f * r;
+      if (v > 0.5) {
+        ++upper;
+        upperPink += pink ? 1 : 0;
+      } else {
+        ++lower;
+        lowerWhite += pink ? 0 : 1;
+      }
+    }
+  }
+  ASSERT_GT(upper, 200);
+  ASSERT_GT(lower, 100);
+  EXPECT_GT(double(upperPink) / upper, 0.85) << upperPink << " of " << upper;
+  EXPECT_GT(double(lowerWhite) / lower, 0.85) << lowerWhite << " of " << lower;
+}
+
 // (c) Goldens per projection (BAKE_UPDATE_GOLDEN=1 rewrites them): checker texture and bumps.
 class RevolutionGolden : public ::testing::TestWithParam<std::string> {};
 
