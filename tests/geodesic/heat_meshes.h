@@ -106,4 +106,22 @@ inline FieldError relativeError(const std::vector<double>& field, const std::vec
   return error;
 }
 
+// Mean and maximum of |field - reference| over reachable vertices, divided by `length`.
+inline FieldError errorRelativeTo(const std::vector<double>& field, const std::vector<double>& reference, double length) {
+  FieldError error;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < field.size(); ++v) {
+    if (!std::isfinite(reference[v])) continue;
+    const double e = std::abs(field[v] - reference[v]);
+    sum += e;
+    error.max = std::max(error.max, e);
+    ++count;
+  }
+  if (count == 0 || length <= 0.0) return error;
+  error.mean = sum / static_cast<double>(count) / length;
+  error.max /= length;
+  return error;
+}
+
 }  // namespace bake::geodesic::testing
