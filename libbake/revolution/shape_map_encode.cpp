@@ -14,6 +14,7 @@
 #include <bake_formats/revolution.h>
 
 #include "core/parallel.h"
+#include "revolution/profile_geometry.h"
 #include "revolution/shape_map.h"
 
 namespace bake::revolution {
@@ -203,28 +204,81 @@ SafetyMargin measureSafetyMargin(const ShapeField& decoded, const Profile* exact
   // sit at convex corners and between lattice points; the finer pass finds them).
   const GpuSampler sample(decoded);
   const double band = 3 * texel;
-  auto texelWorst = [&](int i, int j, int sub) {
-    double local = -std::numeric_limits<double>::infinity();
-    for (int b = 0; b < sub; ++b)
-      for (int a = 0; a < sub; ++a) {
-        const double r = (i + (a + 0.5) / sub) * texel, h = grid.hMin + (j + (b + 0.5) / sub) * texel;
-        local = std::max(local, sample(r, h) - signedDistance(*exactProfile, {r, h}).distance);
+  std::vector<const Segment*> pieces, surface;
+  for (const Contour& contour : exactProfile->contours)
+    for (const Segment& s : contour.segments) {
+      pieces.push_back(&s);
+      if (!s.onAxis) surface.push_back(&s);
+    }
+  if (surface.empty()) {
+    margin.bilinearOverestimate = ceiling;
+    return margin;
+  }
+  // Worst (sample - exact) over sub x sub samples of the wanted texels of row j, exactly but fast:
+  // the parity crossings of each sample row are sorted once, and each run of 8 texels measures only
+  // the pieces that can be nearest in it (those within the nearest distance + 2 half-diagonals of
+  // its centre, by the triangle inequality).
+  auto rowWorst = [&](int j, int sub, const std::vector<char>& wanted, double* out) {
+    std::vector<std::vector<double>> crossings(sub);
+    for (int b = 0; b < sub; ++b) {
+      const double h = grid.hMin + (j + (b + 0.5) / sub) * texel;
+      for (const Segment* s : pieces) parityCrossings(*s, h, crossings[b]);
+      std::sort(crossings[b].begin(), crossings[b].end());
+    }
+    std::vector<const Segment*> candidates;
+    std::vector<double> toCentre(surface.size());
+    for (int i0 = 0; i0 < grid.width; i0 += 8) {
+      const int i1 = std::min(grid.width, i0 + 8);
+      if (std::none_of(wanted.begin() + i0, wanted.begin() + i1, [](char w) { return w != 0; })) continue;
+      const Point2 centre{0.5 * (i0 + i1) * texel, grid.hMin + (j + 0.5) * texel};
+      const double halfDiagonal = std::hypot(0.5 * (i1 - i0) * texel, 0.5 * texel);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < surface.size(); ++k) {
+        toCentre[k] = distanceToPiece(*surface[k], centre).distance;
+        nearest = std::min(nearest, toCentre[k]);
       }
-    return local;
+      candidates.clear();
+      for (std::size_t k = 0; k < surface.size(); ++k)
+        if (toCentre[k] <= nearest + 2 * halfDiagonal + 1e-12 * (1 + nearest)) candidates.push_back(surface[k]);
+      for (int i = i0; i < i1; ++i) {
+        if (!wanted[i]) continue;
+        double local = -std::numeric_limits<double>::infinity();
+        for (int b = 0; b < sub; ++b) {
+          const auto& row = crossings[b];
+          for (int a = 0; a < sub; ++a) {
+            const Point2 p{(i + (a + 0.5) / sub) * texel, grid.hMin + (j + (b + 0.5) / sub) * texel};
+            double exact = std::numeric_limits<double>::infinity();
+            for (const Segment* s : candidates) exact = std::min(exact, distanceToPiece(*s, p).distance);
+            const auto right = row.end() - std::upper_bound(row.begin(), row.end(), p.r);
+            if (right & 1) exact = -exact;
+            local = std::max(local, sample(p.r, p.h) - exact);
+          }
+        }
+        out[i] = local;
+      }
+    }
   };
   const std::size_t count = std::size_t(grid.width) * grid.height;
   std::vector<double> coarse(count, -std::numeric_limits<double>::infinity());
   parallelFor(std::size_t(grid.height), 0, [&](std::size_t j) {
-    for (int i = 0; i < grid.width; ++i)
-      if (std::abs(decoded.at(i, int(j))) <= band) coarse[j * grid.width + i] = texelWorst(i, int(j), 4);
+    std::vector<char> wanted(grid.width);
+    for (int i = 0; i < grid.width; ++i) wanted[i] = std::abs(decoded.at(i, int(j))) <= band;
+    rowWorst(int(j), 4, wanted, coarse.data() + j * grid.width);
   }, 1);
   double worst = 0;
   for (double v : coarse) worst = std::max(worst, v);
   const double threshold = 0.5 * worst;
   std::vector<double> fine(coarse);
-  parallelFor(count, 0, [&](std::size_t k) {
-    if (coarse[k] > threshold && coarse[k] > 0) fine[k] = std::max(coarse[k], texelWorst(int(k % grid.width), int(k / grid.width), 16));
-  }, 16);
+  parallelFor(std::size_t(grid.height), 0, [&](std::size_t j) {
+    std::vector<char> wanted(grid.width);
+    bool any = false;
+    for (int i = 0; i < grid.width; ++i) {
+      const double c = coarse[j * grid.width + i];
+      wanted[i] = c > threshold && c > 0;
+      any = any || wanted[i];
+    }
+    if (any) rowWorst(int(j), 16, wanted, fine.data() + j * grid.width);
+  }, 1);
   for (double v : fine) worst = std::max(worst, v);
   // The profile's corners themselves (where the exact distance has its kinks).
   for (const Contour& contour : exactProfile->contours)

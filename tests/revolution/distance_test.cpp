@@ -97,7 +97,9 @@ TEST(SignedDistance, ArcPieceMatchesDenseSampling) {
     EXPECT_NEAR(std::hypot(s.gradR, s.gradH), 1.0, 1e-9);
     const double step = 1e-6;
     const double moved = signedDistance(profile, {p.r + step * s.gradR, p.h + step * s.gradH}).distance;
-    if (std::abs(s.distance) > 1e-3 && p.r > 1e-3) EXPECT_NEAR(moved - s.distance, step, 1e-8);
+    if (std::abs(s.distance) > 1e-3 && p.r > 1e-3) {
+      EXPECT_NEAR(moved - s.distance, step, 1e-8);
+    }
   }
 }
 

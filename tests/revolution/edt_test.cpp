@@ -157,7 +157,9 @@ TEST(DistanceFromCoverage, FarTexelsKeepTheirSign) {
   for (int j = 0; j < 40; ++j)
     for (int i = 0; i < 40; ++i) {
       const double exact = std::hypot(i + 0.5 - 20, j + 0.5 - 20) - 10;
-      if (std::abs(exact) > 1) EXPECT_EQ(field.at(i, j) < 0, exact < 0);
+      if (std::abs(exact) > 1) {
+        EXPECT_EQ(field.at(i, j) < 0, exact < 0);
+      }
       EXPECT_NEAR(field.at(i, j), exact, 0.5);
     }
 }

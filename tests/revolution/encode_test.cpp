@@ -140,8 +140,9 @@ TEST(SafetyMargin, BilinearSampleMinusMarginStaysBelowTheExactDistance) {
     const SafetyMargin margin = measureSafetyMargin(decoded, &profile);
     EXPECT_GT(margin.bilinearOverestimate, 0);
     EXPECT_GT(margin.quantisation, 0);
-    if (encoding == DistanceEncoding::Float)
+    if (encoding == DistanceEncoding::Float) {
       EXPECT_LE(margin.bilinearOverestimate, grid.texelSize * std::sqrt(0.5));  // the analytic ceiling
+    }
     // Independent points (not on the 4 x 4 lattice) within 2 texels of the surface. The lattice
     // can miss the very worst point between its samples; allow a hundredth of a texel for that.
     std::mt19937 rng(17);
