@@ -100,6 +100,16 @@ void rowPass(std::vector<float>& f, int width, int height) {
 
 bool insideAt(const CoverageImage& image, std::size_t k) { return image.coverage[k] >= 0.5f; }
 
+// The image with exactly width * height coverages, each finite and in [0, 1] (NaN counts as empty).
+CoverageImage sanitised(const CoverageImage& image) {
+  CoverageImage clean = image;
+  clean.width = std::max(0, image.width);
+  clean.height = std::max(0, image.height);
+  clean.coverage.resize(std::size_t(clean.width) * clean.height, 0.0f);
+  for (float& c : clean.coverage) c = std::isfinite(c) ? std::clamp(c, 0.0f, 1.0f) : 0.0f;
+  return clean;
+}
+
 ShapeField emptyField(const CoverageImage& image) {
   ShapeField field;
   field.grid = {image.width, image.height, image.texelSize, image.hMin};
@@ -144,7 +154,8 @@ bool isBinary(const CoverageImage& image) {
   return true;
 }
 
-ShapeField distanceFromBinary(const CoverageImage& image) {
+ShapeField distanceFromBinary(const CoverageImage& input) {
+  const CoverageImage image = sanitised(input);
   ShapeField field = emptyField(image);
   const std::size_t count = field.distance.size();
   std::vector<float> toInside(count), toOutside(count);
@@ -265,7 +276,8 @@ void propagate(Propagation& p) {
 
 }  // namespace
 
-ShapeField distanceFromCoverage(const CoverageImage& image) {
+ShapeField distanceFromCoverage(const CoverageImage& input) {
+  const CoverageImage image = sanitised(input);
   ShapeField field = emptyField(image);
   const int w = image.width, h = image.height;
   if (w == 0 || h == 0) return field;
@@ -295,6 +307,16 @@ ShapeField distanceFromCoverage(const CoverageImage& image) {
       const double len = std::hypot(gx, gy);
       const std::size_t k = std::size_t(j) * w + i;
       normal[k] = len > 0 ? Vec{gx / len, gy / len} : Vec{0, 0};
+      // A symmetric sliver (one texel thick) has no central gradient: take the first one-sided
+      // difference that is not zero, so its edge lies on a texel side.
+      if (len == 0) {
+        const Vec sides[4] = {{0, a(i, j + 1) - c}, {0, c - a(i, j - 1)}, {a(i + 1, j) - c, 0}, {c - a(i - 1, j), 0}};
+        for (const Vec& g : sides)
+          if (g.x != 0 || g.y != 0) {
+            normal[k] = {g.x > 0 ? 1.0 : g.x < 0 ? -1.0 : 0.0, g.y > 0 ? 1.0 : g.y < 0 ? -1.0 : 0.0};
+            break;
+          }
+      }
       edges.push_back(k);
     }
   Propagation p;

@@ -164,5 +164,39 @@ TEST(DistanceFromCoverage, FarTexelsKeepTheirSign) {
     }
 }
 
+TEST(DistanceFromImageStiff, EmptyFullTinyAndNotFiniteImages) {
+  // No surface at all: finite, large, signed by the phase.
+  CoverageImage empty;
+  empty.width = 5;
+  empty.height = 4;
+  empty.coverage.assign(20, 0.0f);
+  for (const ShapeField& f : {distanceFromBinary(empty), distanceFromCoverage(empty)})
+    for (float d : f.distance) {
+      ASSERT_TRUE(std::isfinite(d));
+      ASSERT_GT(d, 0);
+    }
+  CoverageImage full = empty;
+  full.coverage.assign(20, 1.0f);
+  for (const ShapeField& f : {distanceFromBinary(full), distanceFromCoverage(full)})
+    for (float d : f.distance) {
+      ASSERT_TRUE(std::isfinite(d));
+      ASSERT_LT(d, 0);
+    }
+  // One texel wide and tall images, NaN and out-of-range coverage, a short coverage vector.
+  CoverageImage odd;
+  odd.width = 1;
+  odd.height = 3;
+  odd.coverage = {std::numeric_limits<float>::quiet_NaN(), 1.7f};
+  for (const ShapeField& f : {distanceFromBinary(odd), distanceFromCoverage(odd)}) {
+    ASSERT_EQ(f.distance.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) {
+      ASSERT_TRUE(std::isfinite(f.distance[k]));
+      ASSERT_TRUE(std::isfinite(f.gradR[k]) && std::isfinite(f.gradH[k]));
+    }
+    EXPECT_LT(f.distance[1], 0);  // 1.7 is full
+    EXPECT_GT(f.distance[2], 0);  // missing is empty
+  }
+}
+
 }  // namespace
 }  // namespace bake::revolution
