@@ -24,6 +24,7 @@ namespace {
 
 using testing::FieldError;
 using testing::relativeError;
+using testing::errorRelativeTo;
 
 
 Surface loadSurface(const std::filesystem::path& path) {
