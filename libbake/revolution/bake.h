@@ -32,7 +32,7 @@ struct Settings {
   std::optional<Projection> projection;  // unset: measured choice
   double repeatU = 0, repeatV = 0;       // 0: from the projection's recommended ratio
   double targetError = 0.005;            // silhouette mismatch the iteration budget must reach
-  int proxyBands = 16;
+  int proxyBands = 32;
   double overRelaxation = 1.6;
   std::string baseColorTexture;  // optional PNG embedded as the material's base colour
   std::array<double, 3> position{0, 0, 0};  // node translation (where the object stands in a scene)

@@ -46,14 +46,21 @@ Status checkNumbers(Profile& profile, double tol) {
     auto& segments = profile.contours[c].segments;
     for (std::size_t i = 0; i < segments.size(); ++i) {
       Segment& s = segments[i];
-      const std::string where = "contour " + std::to_string(c) + ", point " + std::to_string(i);
-      if (!std::isfinite(s.a.r) || !std::isfinite(s.a.h) || !std::isfinite(s.b.r) || !std::isfinite(s.b.h))
-        return invalidInput("coordinate is not a finite number", {profile.source, where});
-      if (!std::isfinite(s.bulge)) return invalidInput("bulge is not a finite number", {profile.source, where});
-      for (Point2* p : {&s.a, &s.b}) {
+      // Segment i runs from point i to point i + 1 (the first point again for a closing segment).
+      const std::size_t pointCount = profile.contours[c].closed ? segments.size() : segments.size() + 1;
+      auto where = [&](std::size_t point) {
+        return "contour " + std::to_string(c) + ", point " + std::to_string(point % pointCount);
+      };
+      if (!std::isfinite(s.a.r) || !std::isfinite(s.a.h))
+        return invalidInput("coordinate is not a finite number", {profile.source, where(i)});
+      if (!std::isfinite(s.b.r) || !std::isfinite(s.b.h))
+        return invalidInput("coordinate is not a finite number", {profile.source, where(i + 1)});
+      if (!std::isfinite(s.bulge)) return invalidInput("bulge is not a finite number", {profile.source, where(i)});
+      for (int end = 0; end < 2; ++end) {
+        Point2* p = end == 0 ? &s.a : &s.b;
         if (p->r < -tol)
           return invalidInput("negative radius r = " + std::to_string(p->r) + " (the profile must lie in r >= 0)",
-                              {profile.source, where});
+                              {profile.source, where(i + std::size_t(end))});
         if (p->r < tol) p->r = 0;  // round-off onto the axis
       }
     }

@@ -3,8 +3,9 @@
 // values and decoded after filtering; the safety margin is subtracted from every sample. The march
 // enters the proxy bands (else the box) and runs over-relaxed sphere tracing (Keinert et al. 2014,
 // "Enhanced Sphere Tracing", section 3.1): step omega * d, and when the new sample's sphere and the
-// previous one do not overlap (d_prev + |d| < step), go back and take the plain step d_prev from the
-// previous point with omega = 1 from then on.
+// previous one do not overlap (d_prev + |d| < step), or the sample lies inside the solid, or the step
+// left the march interval, go back and take the plain step d_prev from the previous point with
+// omega = 1 from then on. libbake/revolution/march.cpp runs the same loop on the CPU.
 // Variants: ENCODING_FLOAT / ENCODING_UNORM16 / ENCODING_SQRT8; MAX_PROXY_BANDS n.
 #ifndef BAKE_REVOLUTION_SHAPE_MARCH_GLSL
 #define BAKE_REVOLUTION_SHAPE_MARCH_GLSL
@@ -112,10 +113,19 @@ bool marchRay(vec3 o, vec3 d, vec2 interval, out float tHit) {
   float t = interval.x;
   float previousT = t, previousD = 0.0, step = 0.0;
   for (int i = 0; i < uIterations; ++i) {
-    if (t > interval.y) return false;
+    if (t > interval.y) {
+      // An over-relaxed step past the exit may have jumped over the solid (the bands' exit hugs it,
+      // unlike a far plane): take the plain step from the previous point instead.
+      if (!(omega > 1.0 && step > previousD)) return false;
+      omega = 1.0;
+      step = previousD;
+      t = previousT + step;
+      if (t > interval.y) return false;
+    }
     float dist = marchDistance(o + t * d);
-    if (omega > 1.0 && i > 0 && previousD + abs(dist) < step) {
-      // The relaxed step left the sphere known to be empty: it may have crossed the surface.
+    if (omega > 1.0 && step > 0.0 && (dist < 0.0 || previousD + abs(dist) < step)) {
+      // The relaxed step left the sphere known to be empty, or landed inside the solid: back to the
+      // previous point and a plain step (an overshoot into the solid is never a hit).
       omega = 1.0;
       step = previousD;
       t = previousT + step;

@@ -36,12 +36,12 @@ double totalArea(const Profile& profile) {
 
 TEST(ValidateProfile, NotFiniteNamesContourAndPoint) {
   Profile profile = makeProfile({rectangleContour(1, 0, 2, 1), rectangleContour(3, 0, 4, 1)});
-  profile.contours[1].segments[2].b.h = std::numeric_limits<double>::quiet_NaN();
+  profile.contours[1].segments[2].b.h = std::numeric_limits<double>::quiet_NaN();  // segment 2 ends at point 3
   std::vector<std::string> warnings;
   const Status status = validateProfile(profile, warnings);
   ASSERT_FALSE(status.isOk());
   EXPECT_EQ(status.where().file, "test.json");
-  EXPECT_EQ(status.where().element, "contour 1, point 2");
+  EXPECT_EQ(status.where().element, "contour 1, point 3");
 }
 
 TEST(ValidateProfile, NegativeRadiusIsAnError) {

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
                  "Silhouette mismatch the recorded iteration budget must reach (fraction of rays)")
       ->default_str("0.005");
   app.add_option("--proxy-bands", settings.proxyBands, "Stacked bands of the bounding proxy the march starts from")
-      ->default_str("16");
+      ->default_str("32");
   app.add_option("--over-relaxation", settings.overRelaxation, "Sphere-tracing over-relaxation in [1, 2)")
       ->default_str("1.6");
   bake::addCommonOptions(app, settings.common);
