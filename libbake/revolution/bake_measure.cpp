@@ -125,6 +125,9 @@ void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report
 
 void measureMarch(const Settings& settings, BakeState& state, Report& report, Diagnostics& diagnostics) {
   state.bands = buildProxyBands(state.field, settings.proxyBands, state.margin.total());
+  // A band over rows without solid bounds nothing; the package (and so the shader) leaves it out,
+  // and the march measured here uses exactly the package's bands.
+  std::erase_if(state.bands, [](const ProxyBand& band) { return !(band.rMax > 0); });
   MarchSettings march;
   march.safetyMargin = state.margin.total();
   march.overRelaxation = settings.overRelaxation;
