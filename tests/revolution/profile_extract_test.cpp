@@ -4,7 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/glb.h"
+#include "revolution/bake.h"
 #include "revolution/profile_extract.h"
+#include "support/golden.h"
 
 namespace bake::revolution {
 namespace {
@@ -96,6 +103,39 @@ TEST(MeshProfile, ABoxIsFarFromASurfaceOfRevolution) {
   auto profile = profileOfMesh(box, "box");
   ASSERT_TRUE(profile.isOk()) << profile.status().describe();
   EXPECT_GT(profile->maxDeviation / profile->objectSize, 0.05);
+}
+
+TEST(MeshProfile, RevolbakeTakesAMeshOfRevolutionAndPutsTheObjectBackOnIt) {
+  const Vec3 origin{2.0, -1.0, 0.5};
+  const Vec3 axis = normalised({1.0, 0.3, 0.0});
+  const TriangleMesh mesh = revolve(kVaseLike, 64, origin, axis);
+  const auto dir = test::freshTempDir("mesh_input");
+  std::ofstream obj(dir / "vase.obj");
+  for (const Vec3f& p : mesh.positions) obj << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+  for (const Triangle& t : mesh.triangles) obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  obj.close();
+  Settings settings;
+  settings.input = (dir / "vase.obj").string();
+  settings.output = (dir / "vase.glb").string();
+  settings.common.reportPath = (dir / "report.json").string();
+  settings.resolution = 128;
+  Diagnostics quiet("revolbake", true);
+  const Status status = run(settings, quiet);
+  ASSERT_TRUE(status.isOk()) << status.describe();
+  nlohmann::json report;
+  std::ifstream(settings.common.reportPath) >> report;
+  const nlohmann::json& fit = report["statistics"]["meshOfRevolution"];
+  EXPECT_LT(fit["maxDeviation"].get<double>(), 0.9 * (1 - std::cos(std::numbers::pi / 64)) * 1.05 + 1e-5);
+  // The node's matrix maps the object's axis (+y) onto the mesh's axis, through a point on it.
+  auto package = glb::read(settings.output);
+  ASSERT_TRUE(package.isOk());
+  ASSERT_TRUE(package->nodes[0].matrix.has_value());
+  const auto& m = *package->nodes[0].matrix;
+  const Vec3 y{m[4], m[5], m[6]};
+  EXPECT_GT(std::abs(y[0] * axis[0] + y[1] * axis[1] + y[2] * axis[2]), std::cos(1e-3));
+  const Vec3 d{m[12] - origin[0], m[13] - origin[1], m[14] - origin[2]};
+  const double along = d[0] * axis[0] + d[1] * axis[1] + d[2] * axis[2];
+  EXPECT_LT(std::sqrt(std::max(0.0, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along)), 1e-3);
 }
 
 CoverageImage discImage(int size, double radius, Point2 centre) {
