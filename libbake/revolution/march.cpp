@@ -23,7 +23,6 @@
 #include "revolution/march.h"
 
 namespace bake::revolution {
-namespace {
 
 // Ray parameters inside the shape box: x, z in [-R, R], y in the grid's h range.
 std::optional<std::array<double, 2>> enterShapeBox(const Ray& ray, const ShapeGrid& grid) {
@@ -46,6 +45,9 @@ std::optional<std::array<double, 2>> enterShapeBox(const Ray& ray, const ShapeGr
   if (!(tIn <= tOut)) return std::nullopt;
   return std::array<double, 2>{tIn, tOut};
 }
+
+namespace {
+
 
 double hitEpsilonOf(const MarchSettings& settings, const ShapeGrid& grid) {
   return settings.hitEpsilon > 0 ? settings.hitEpsilon : format::revolution::kHitEpsilonTexels * grid.texelSize;

@@ -22,6 +22,10 @@ struct Ray {
   Vec3d origin, direction;  // direction unit length
 };
 
+// Ray parameters inside the shape box (x, z in [-R, R], y in the grid's h range), t >= 0; nullopt
+// when the ray misses it.
+std::optional<std::array<double, 2>> enterShapeBox(const Ray& ray, const ShapeGrid& grid);
+
 // Stacked bands that bound the solid: in each h range, the largest r of the surface plus the
 // margin. The march starts where the ray first enters one.
 struct ProxyBand {

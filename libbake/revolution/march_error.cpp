@@ -76,23 +76,7 @@ Ray rayThrough(const View& v, double a, double b) {
   return ray;
 }
 
-bool entersBox(const Ray& ray, const ShapeGrid& grid) {
-  const double radius = grid.width * grid.texelSize;
-  const double lo[3] = {-radius, grid.hMin, -radius};
-  const double hi[3] = {radius, grid.hMin + grid.height * grid.texelSize, radius};
-  double tIn = 0, tOut = std::numeric_limits<double>::infinity();
-  for (int axis = 0; axis < 3; ++axis) {
-    const double o = ray.origin[axis], d = ray.direction[axis];
-    if (d == 0) {
-      if (o < lo[axis] || o > hi[axis]) return false;
-      continue;
-    }
-    double t0 = (lo[axis] - o) / d, t1 = (hi[axis] - o) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    tIn = std::max(tIn, t0), tOut = std::min(tOut, t1);
-  }
-  return tIn <= tOut;
-}
+bool entersBox(const Ray& ray, const ShapeGrid& grid) { return enterShapeBox(ray, grid).has_value(); }
 
 MarchErrorPoint summarise(const std::vector<RayOutcome>& outcomes, int budget) {
   MarchErrorPoint point;

@@ -88,22 +88,12 @@ struct FieldError {
   double mean = 0.0;
   double max = 0.0;
 };
+inline FieldError errorRelativeTo(const std::vector<double>& field, const std::vector<double>& reference, double length);
 inline FieldError relativeError(const std::vector<double>& field, const std::vector<double>& reference) {
-  FieldError error;
-  double range = 0.0, sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t v = 0; v < field.size(); ++v) {
-    if (!std::isfinite(reference[v])) continue;
-    range = std::max(range, reference[v]);
-    const double e = std::abs(field[v] - reference[v]);
-    sum += e;
-    error.max = std::max(error.max, e);
-    ++count;
-  }
-  if (count == 0 || range <= 0.0) return error;
-  error.mean = sum / static_cast<double>(count) / range;
-  error.max /= range;
-  return error;
+  double range = 0.0;
+  for (double r : reference)
+    if (std::isfinite(r)) range = std::max(range, r);
+  return errorRelativeTo(field, reference, range);
 }
 
 // Mean and maximum of |field - reference| over reachable vertices, divided by `length`.
