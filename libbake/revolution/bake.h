@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "bake_formats/revolution.h"
 #include "core/cli.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
@@ -33,7 +34,7 @@ struct Settings {
   double repeatU = 0, repeatV = 0;       // 0: from the projection's recommended ratio
   double targetError = 0.005;            // silhouette mismatch the iteration budget must reach
   int proxyBands = 32;
-  double overRelaxation = 1.6;
+  double overRelaxation = format::revolution::kDefaultOverRelaxation;
   std::string baseColorTexture;  // optional PNG embedded as the material's base colour
   std::array<double, 3> position{0, 0, 0};  // node translation (where the object stands in a scene)
   CommonOptions common;  // --report, --depfile, --threads, --quiet

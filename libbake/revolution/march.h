@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "bake_formats/revolution.h"
 #include "revolution/profile.h"
 #include "revolution/shape_map.h"
 
@@ -38,7 +39,7 @@ std::optional<std::array<double, 2>> enterBands(const Ray& ray, const std::vecto
 struct MarchSettings {
   int maxIterations = 35;
   double safetyMargin = 0;      // object units, from measureSafetyMargin
-  double overRelaxation = 1.6;  // 1: plain sphere tracing
+  double overRelaxation = format::revolution::kDefaultOverRelaxation;  // 1: plain sphere tracing
   double hitEpsilon = 0;        // object units (0: kHitEpsilonTexels texels)
   bool useProxy = true;
 };
