@@ -1,0 +1,44 @@
+// tambake: a style file to a tonal art map (formats/tam.md): a KTX2 2D array, one layer per tone, the
+// full mip chain (R8, or RGBA8 for coloured ink), the tone values in its metadata; optionally the
+// threshold texture and a glTF package applying the TAM to a mesh as a BAKE_hatching material. The
+// report gives the quality figures of tam/quality.h next to the construction time.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "core/cli.h"
+#include "core/diagnostics.h"
+#include "core/status.h"
+
+namespace bake::tam {
+
+struct MaterialSettings {
+  std::string mesh;                   // mesh to apply the TAM to (.obj .ply .off .stl .gltf .glb); empty: none
+  std::string package;                // the .glb to write with it
+  double tilesPerUnit = 4;            // hatching parameter scale: TAM tiles per object unit
+  double rotationDegrees = 0;         // rotation of the hatching parameters about N
+  std::array<double, 2> translation{0, 0};  // shift along T and B, in tiles
+  std::string orientation = "toward-light";  // or "across-light"
+  std::array<double, 3> baseColour{1, 1, 1};  // colour material the TAM is combined with
+  std::array<double, 3> position{0, 0, 0};    // node translation
+  double scale = 1;                           // uniform node scale
+};
+
+struct Settings {
+  std::string style;            // STYLE.json
+  std::string output;           // OUT.ktx2
+  std::string threshold;        // optional OUT.ktx2 of the threshold texture
+  bool zstd = false;            // Zstandard supercompression of the KTX2 levels
+  // Overrides of the style file (unset when < 0 / empty).
+  int candidates = -1;
+  int resolution = -1;
+  long long seed = -1;
+  MaterialSettings material;
+  CommonOptions common;         // --report, --depfile, --threads, --quiet
+};
+
+// Builds, writes every output atomically, the --report and the --depfile.
+Status run(const Settings& settings, Diagnostics& diagnostics);
+
+}  // namespace bake::tam

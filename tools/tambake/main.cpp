@@ -1,0 +1,65 @@
+// tambake: builds a tonal art map from a style file (formats/tam.md): a KTX2 2D array of tones with
+// its full mip chain, optionally the threshold texture and a package applying it to a mesh.
+#include <cmath>
+#include <cstdio>
+
+#include "core/cli.h"
+#include "tam/bake.h"
+#include "tam/style.h"
+
+namespace {
+
+bool parseTriple(const std::string& text, std::array<double, 3>& out) {
+  if (text.empty()) return true;
+  return std::sscanf(text.c_str(), "%lf,%lf,%lf", &out[0], &out[1], &out[2]) == 3 &&
+         std::isfinite(out[0] + out[1] + out[2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace bake::tam;
+  Settings settings;
+  bake::Diagnostics diagnostics("tambake");
+  CLI::App app{"Builds a tonal art map (Praun et al. 2001) from a style file: one image per tone, light to\n"
+               "dark, each level drawn with strokes at the same pixel width, nested across tones and\n"
+               "resolutions, tiling seamlessly. Writes a KTX2 2D array (one layer per tone, full mip chain,\n"
+               "tone values in its metadata), optionally the threshold texture, and optionally a glTF\n"
+               "package that applies the TAM to a mesh as a BAKE_hatching material for bakeplay.",
+               "tambake"};
+  app.add_option("style", settings.style, "Style file (.json, formats/tam-style.schema.json)")->required();
+  app.add_option("-o,--output", settings.output, "TAM to write (.ktx2)")->required();
+  app.add_option("--threshold", settings.threshold, "Also write the threshold texture (.ktx2): per texel, the first inked tone");
+  app.add_flag("--zstd", settings.zstd, "Zstandard-supercompress the KTX2 levels");
+  app.add_option("--candidates", settings.candidates, "Override the style's candidate strokes per step (K)");
+  app.add_option("--resolution", settings.resolution, "Override the style's finest level side (power of two)");
+  app.add_option("--seed", settings.seed, "Override the style's random seed");
+  MaterialSettings& material = settings.material;
+  app.add_option("--apply-to", material.mesh, "Mesh to apply the TAM to (.obj .ply .off .stl .gltf .glb)");
+  app.add_option("--package", material.package, "Package to write with --apply-to (.glb, BAKE_hatching material)");
+  app.add_option("--tiles-per-unit", material.tilesPerUnit, "Hatching scale: TAM tiles per object unit")->default_str("4");
+  app.add_option("--rotation", material.rotationDegrees, "Rotation of the strokes about the normal, degrees")->default_str("0");
+  app.add_option("--orientation", material.orientation, "Strokes toward-light (along the projected light) or across-light")
+      ->check(CLI::IsMember({"toward-light", "across-light"}))
+      ->default_str("toward-light");
+  std::string baseColour, position;
+  app.add_option("--base-colour", baseColour, "Colour material the TAM is combined with: R,G,B in [0, 1]");
+  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation)");
+  app.add_option("--scale", material.scale, "Uniform scale of the object's node")->default_str("1");
+  bake::addCommonOptions(app, settings.common);
+
+  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
+    diagnostics.setQuiet(settings.common.quiet);
+    if (!parseTriple(baseColour, material.baseColour)) return bake::usageError("--base-colour " + baseColour + ": expected R,G,B");
+    if (!parseTriple(position, material.position)) return bake::usageError("--position " + position + ": expected X,Y,Z");
+    if (material.mesh.empty() != material.package.empty())
+      return bake::usageError("--apply-to and --package go together");
+    if (settings.common.printInputs) {
+      BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style));
+      for (const std::string& input : style.inputs()) std::printf("%s\n", input.c_str());
+      if (!material.mesh.empty()) std::printf("%s\n", material.mesh.c_str());
+      return {};
+    }
+    return run(settings, diagnostics);
+  });
+}
