@@ -85,7 +85,8 @@ Paintstroke scaledPositions(const Paintstroke& stroke, double factor);
 
 // Catmull-Rom evaluation used by the rasterizer (centripetal would change the seed's look; this is
 // the uniform spline through the points, with the end points doubled), exposed for tests: position
-// and radius at parameter t in [0, points - 1].
+// and radius at parameter t in [0, points - 1]; colour and opacity at t are linear in arc length
+// between the two control points around t (as the rasterizer draws them). No taper is applied here.
 ControlPoint evaluate(const Paintstroke& stroke, double t);
 
 }  // namespace bake::stroke
