@@ -3,6 +3,7 @@
 #include <GL/glcorearb.h>
 
 #include "render/geodesic.h"
+#include "render/hatching.h"
 #include "render/revolution.h"
 #include "render/standard.h"
 
@@ -15,6 +16,7 @@ const RendererRegistry& RendererRegistry::builtIn() {
     // Technique renderers register here: r.add("BAKE_<technique>", ...).
     r.add("BAKE_geodesic", [] { return std::make_unique<GeodesicRenderer>(); });
     r.add("BAKE_revolution", [] { return std::make_unique<RevolutionRenderer>(); });
+    r.add("BAKE_hatching", [] { return std::make_unique<HatchingRenderer>(); });
     return r;
   }();
   return registry;
