@@ -62,10 +62,14 @@ struct InkFootprint {
   double ink() const;  // sum of alpha: the stroke's ink in pixel units
 };
 
-// How the centreline is sampled: a spline piece is cut into pieces no longer than this many pixels
-// (and at least one).
+// How the centreline is sampled: each spline segment (between two control points) is cut into
+// straight pieces no longer than `maxPieceLength` pixels (and at least one), and more where the
+// segment bends, so that no piece's chord strays further than `maxDeviation` pixels from the spline.
+// Coverage is exact for each straight piece whatever its length; these bound only how well the
+// polyline follows the curve.
 struct RasterOptions {
-  double maxPieceLength = 0.5;
+  double maxPieceLength = 2;
+  double maxDeviation = 0.02;
 };
 
 // Rasterises `stroke` whose coordinates are in pixels of a `width` x `height` image. With wrap on, a

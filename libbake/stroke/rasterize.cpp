@@ -36,17 +36,18 @@ struct Piece {
   double opacity0, opacity1;
   double before, after;  // how far past its start and end the piece's band reaches
   PixelFilter filter;
-  int sample;  // the centreline sample it starts at
+  std::array<float, 3> colour0, colour1;  // at its start and end
 };
 
 struct Disc {
   double x, y, r, opacity, tx, ty, arc;
-  int sample;
+  std::array<float, 3> colour;
 };
 
 struct Cell {
   float alpha;
-  std::int32_t source;  // >= 0: piece index; < 0: -(sample index + 1)
+  std::int32_t source;  // the element (piece, then disc) that gave the alpha, for the colour ...
+  float along;          // ... and where along it
 };
 
 struct Box {
@@ -100,12 +101,16 @@ double discProfile(double rho, double r, double centre, double edge) {
   return mean + (sampled - mean) * w;
 }
 
+std::array<float, 3> inkColour(const Sample& s) {
+  return {float(s.colour[0]), float(s.colour[1]), float(s.colour[2])};
+}
+
 Stroke buildStroke(const Paintstroke& stroke, double dx, double dy, const RasterOptions& options) {
   Stroke out;
   double piece = options.maxPieceLength;
-  if (!(piece > 0) || !std::isfinite(piece)) piece = 0.5;
+  if (!(piece > 0) || !std::isfinite(piece)) piece = RasterOptions{}.maxPieceLength;
   piece = std::clamp(piece, 1e-3, 64.0);
-  out.samples = detail::sampleCentreline(stroke, piece, kMaxSamples);
+  out.samples = detail::sampleCentreline(stroke, piece, options.maxDeviation, kMaxSamples);
   if (out.samples.size() < 2) return out;
   for (Sample& s : out.samples) s.x -= dx, s.y -= dy;
   out.length = out.samples.back().arc;
@@ -120,29 +125,39 @@ Stroke buildStroke(const Paintstroke& stroke, double dx, double dy, const Raster
     const double ex = s[i + 1].x - s[i].x, ey = s[i + 1].y - s[i].y;
     const double len = std::hypot(ex, ey);
     if (!(len > 1e-12) || std::max(s[i].radius, s[i + 1].radius) < kMinRadius) continue;
+    const PixelFilter filter(ey, -ex);
+    // A pixel is drawn by the piece its centre projects onto; the first and last pieces reach a pixel
+    // further, for the along-length filter of the butt ends (the caps are discs).
     Piece p{s[i].x, s[i].y, ex / len, ey / len, len, s[i].radius, s[i + 1].radius, s[i].arc,
-            s[i].opacity, s[i + 1].opacity, 0.75, 0.75, PixelFilter(ey, -ex), int(i)};
+            s[i].opacity, s[i + 1].opacity, 0, 0, filter, inkColour(s[i]), inkColour(s[i + 1])};
     if (previous >= 0 && out.pieces[previous].arc0 + out.pieces[previous].length >= p.arc0 - 1e-9) {
+      // Joints: on the outside of a turn the two pieces' bands leave a wedge of width r x turn
+      // between them, so each reaches past the joint by that much (and a little more for rounding).
       Piece& q = out.pieces[previous];
-      const double turn = std::acos(std::clamp(q.tx * p.tx + q.ty * p.ty, -1.0, 1.0));
+      const double chord = std::sqrt(std::max(0.0, 2 - 2 * (q.tx * p.tx + q.ty * p.ty)));  // ~ turn angle
       const double r = std::max(q.r1, p.r0);
-      const double margin = 0.75 + r * std::min(turn, kSharpTurn);
-      q.after = std::max(q.after, margin);
+      const double margin = 0.05 + r * std::min(1.1 * chord, kSharpTurn);
+      q.after = margin;
       p.before = margin;
-      if (turn > kSharpTurn && s[i].radius >= kMinRadius)
-        out.discs.push_back({s[i].x, s[i].y, s[i].radius, s[i].opacity, p.tx, p.ty, s[i].arc, int(i)});
+      if (chord > kSharpTurn && s[i].radius >= kMinRadius)
+        out.discs.push_back({s[i].x, s[i].y, s[i].radius, s[i].opacity, p.tx, p.ty, s[i].arc, inkColour(s[i])});
     }
     out.pieces.push_back(p);
     previous = int(out.pieces.size()) - 1;
+  }
+  if (!out.pieces.empty()) {
+    out.pieces.front().before = out.pieces.front().filter.halfWidth();
+    out.pieces.back().after = out.pieces.back().filter.halfWidth();
   }
   // Round caps. The cap's tangent (for the texture's across coordinate) is its piece's.
   const double t0x = out.pieces.empty() ? 1 : out.pieces.front().tx, t0y = out.pieces.empty() ? 0 : out.pieces.front().ty;
   const double t1x = out.pieces.empty() ? 1 : out.pieces.back().tx, t1y = out.pieces.empty() ? 0 : out.pieces.back().ty;
   if (s.front().radius >= kMinRadius)
-    out.discs.push_back({s.front().x, s.front().y, s.front().radius, s.front().opacity, t0x, t0y, 0.0, 0});
+    out.discs.push_back({s.front().x, s.front().y, s.front().radius, s.front().opacity, t0x, t0y, 0.0,
+                         inkColour(s.front())});
   if (s.back().radius >= kMinRadius && (out.length > 0 || s.front().radius < kMinRadius))
     out.discs.push_back({s.back().x, s.back().y, s.back().radius, s.back().opacity, t1x, t1y, out.length,
-                         int(s.size() - 1)});
+                         inkColour(s.back())});
   return out;
 }
 
@@ -162,17 +177,26 @@ Box discBox(const Disc& d, double clipX0, double clipY0, double clipX1, double c
   return {x0, y0, x1, y1};
 }
 
-// A dense buffer of cells over `box`, max-merging.
+// A dense buffer of cells over `box`, max-merging, which keeps the extent of each row's cells.
 class Buffer {
  public:
   explicit Buffer(const Box& box) : box_(box), width_(box.x1 - box.x0 + 1),
-      cells_(std::size_t(box.cells()), Cell{0.0f, 0}) {}
+      cells_(std::size_t(box.cells()), Cell{0.0f, 0, 0.0f}),
+      rowLo_(std::size_t(box.y1 - box.y0 + 1), box.x1 + 1), rowHi_(std::size_t(box.y1 - box.y0 + 1), box.x0 - 1) {}
   const Box& box() const { return box_; }
+  // Declares that row y may get cells in [x0, x1] (call before merging them).
+  void touch(std::int64_t y, std::int64_t x0, std::int64_t x1) {
+    const std::size_t j = std::size_t(y - box_.y0);
+    rowLo_[j] = std::min(rowLo_[j], x0);
+    rowHi_[j] = std::max(rowHi_[j], x1);
+  }
+  std::int64_t rowLo(std::int64_t y) const { return rowLo_[std::size_t(y - box_.y0)]; }
+  std::int64_t rowHi(std::int64_t y) const { return rowHi_[std::size_t(y - box_.y0)]; }
   // On a tie (inside a solid stroke) the piece the pixel projects onto wins, for its colour.
-  void merge(std::int64_t x, std::int64_t y, double alpha, std::int32_t source, bool preferred) {
+  void merge(std::int64_t x, std::int64_t y, double alpha, std::int32_t source, double along, bool preferred) {
     Cell& c = cells_[std::size_t((y - box_.y0) * width_ + (x - box_.x0))];
     const float a = float(std::min(alpha, 1.0));
-    if (a > c.alpha || (a == c.alpha && preferred)) c = {a, source};
+    if (a > c.alpha || (a == c.alpha && preferred)) c = {a, source, float(along)};
   }
   const Cell& at(std::int64_t x, std::int64_t y) const {
     return cells_[std::size_t((y - box_.y0) * width_ + (x - box_.x0))];
@@ -182,6 +206,7 @@ class Buffer {
   Box box_;
   std::int64_t width_;
   std::vector<Cell> cells_;
+  std::vector<std::int64_t> rowLo_, rowHi_;
 };
 
 void drawPiece(const Stroke& st, std::int32_t index, const Box& clip, Buffer& buffer) {
@@ -189,9 +214,28 @@ void drawPiece(const Stroke& st, std::int32_t index, const Box& clip, Buffer& bu
   const Box box = pieceBox(p, double(clip.x0), double(clip.y0), double(clip.x1), double(clip.y1));
   const double h = p.filter.halfWidth();
   const double invLength = 1 / p.length;
+  const double reach = std::max(p.r0, p.r1) + h;
   for (std::int64_t y = box.y0; y <= box.y1; ++y) {
     const double dy = double(y) + 0.5 - p.y0;
-    for (std::int64_t x = box.x0; x <= box.x1; ++x) {
+    // The row's pixels inside the piece's rectangle: -before <= s <= length + after and |d| <= reach,
+    // with s = dx tx + dy ty and d = dx ty - dy tx linear in dx.
+    double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+    auto limit = [&](double coef, double constant, double from, double to) {
+      if (std::abs(coef) < 1e-12) {
+        if (constant < from || constant > to) lo = 1, hi = 0;
+        return;
+      }
+      const double a = (from - constant) / coef, b = (to - constant) / coef;
+      lo = std::max(lo, std::min(a, b));
+      hi = std::min(hi, std::max(a, b));
+    };
+    limit(p.tx, dy * p.ty, -p.before, p.length + p.after);
+    limit(p.ty, -dy * p.tx, -reach, reach);
+    if (!(lo <= hi)) continue;
+    const auto [rx0, rx1] = pixelRange(p.x0 + lo, p.x0 + hi, double(box.x0), double(box.x1));
+    if (rx0 > rx1) continue;
+    buffer.touch(y, rx0, rx1);
+    for (std::int64_t x = rx0; x <= rx1; ++x) {
       const double dx = double(x) + 0.5 - p.x0;
       const double s = dx * p.tx + dy * p.ty;
       if (s < -p.before || s > p.length + p.after) continue;
@@ -204,15 +248,17 @@ void drawPiece(const Stroke& st, std::int32_t index, const Box& clip, Buffer& bu
       if (arc < h || arc > st.length - h) ink *= std::max(0.0, p.filter.cdf(st.length - arc) - p.filter.cdf(-arc));
       if (st.texture && ink > 0)
         ink *= textureAlpha(*st.texture, st.length > 0 ? arc / st.length : 0.5, 0.5 - 0.5 * d / r);
-      if (ink > 0) buffer.merge(x, y, ink, index, s >= 0 && s <= p.length);
+      if (ink > 0) buffer.merge(x, y, ink, index, u, s >= 0 && s <= p.length);
     }
   }
 }
 
-void drawDisc(const Stroke& st, const Disc& disc, const Box& clip, Buffer& buffer) {
+void drawDisc(const Stroke& st, std::int32_t index, const Box& clip, Buffer& buffer) {
+  const Disc& disc = st.discs[std::size_t(index) - st.pieces.size()];
   const Box box = discBox(disc, double(clip.x0), double(clip.y0), double(clip.x1), double(clip.y1));
   for (std::int64_t y = box.y0; y <= box.y1; ++y) {
     const double py = double(y) + 0.5;
+    buffer.touch(y, box.x0, box.x1);
     for (std::int64_t x = box.x0; x <= box.x1; ++x) {
       const double px = double(x) + 0.5;
       const double area = detail::discInPixel(px, py, disc.x, disc.y, disc.r);
@@ -224,22 +270,17 @@ void drawDisc(const Stroke& st, const Disc& disc, const Box& clip, Buffer& buffe
         ink *= textureAlpha(*st.texture, st.length > 0 ? disc.arc / st.length : 0.5,
                             0.5 - 0.5 * std::clamp(d / disc.r, -1.0, 1.0));
       }
-      if (ink > 0) buffer.merge(x, y, ink, -(disc.sample + 1), false);
+      if (ink > 0) buffer.merge(x, y, ink, index, 0, false);
     }
   }
 }
 
-std::array<float, 3> cellColour(const Stroke& st, std::int32_t source) {
-  std::array<float, 3> c{};
-  if (source < 0) {
-    const Sample& s = st.samples[std::size_t(-source - 1)];
-    for (int k = 0; k < 3; ++k) c[k] = float(s.colour[k]);
-    return c;
-  }
-  // A piece's colour is the mean of its ends' (the piece is at most maxPieceLength long).
-  const std::size_t i = std::size_t(st.pieces[std::size_t(source)].sample);
-  for (int k = 0; k < 3; ++k) c[k] = float(0.5 * (st.samples[i].colour[k] + st.samples[i + 1].colour[k]));
-  return c;
+std::array<float, 3> cellColour(const Stroke& st, const Cell& c) {
+  const std::size_t e = std::size_t(c.source);
+  if (e >= st.pieces.size()) return st.discs[e - st.pieces.size()].colour;
+  const Piece& p = st.pieces[e];
+  return {p.colour0[0] + (p.colour1[0] - p.colour0[0]) * c.along, p.colour0[1] + (p.colour1[1] - p.colour0[1]) * c.along,
+          p.colour0[2] + (p.colour1[2] - p.colour0[2]) * c.along};
 }
 
 std::int64_t wrapIndex(std::int64_t v, std::int64_t n) {
@@ -311,7 +352,7 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
     const std::size_t end = chunk + 1 < chunks.size() ? chunks[chunk + 1].first : elements;
     for (std::size_t e = chunks[chunk].first; e < end; ++e) {
       if (e < st.pieces.size()) drawPiece(st, std::int32_t(e), clip, buffer);
-      else drawDisc(st, st.discs[e - st.pieces.size()], clip, buffer);
+      else drawDisc(st, std::int32_t(e), clip, buffer);
     }
     return buffer;
   };
@@ -320,21 +361,30 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
   const bool direct = chunks.size() == 1 &&
       (!wrap || (first.x1 - first.x0 < width && first.y1 - first.y0 < height));
   if (direct) {
-    // No pixel is hit twice: list the cells in the wrapped row-major order.
+    // No pixel is hit twice: list the cells in the wrapped row-major order, a row's cells from its
+    // first wrapped column xs on, then those before it.
     const Buffer buffer = fill(0);
     const Box& b = buffer.box();
     const std::int64_t ys = wrap ? wrappedStart(b.y0, b.y1, height) : b.y0;
     const std::int64_t xs = wrap ? wrappedStart(b.x0, b.x1, width) : b.x0;
-    const std::int64_t rows = b.y1 - b.y0 + 1, cols = b.x1 - b.x0 + 1;
+    const std::int64_t rows = b.y1 - b.y0 + 1;
+    std::size_t capacity = 0;
+    for (std::int64_t y = b.y0; y <= b.y1; ++y) capacity += std::size_t(std::max<std::int64_t>(0, buffer.rowHi(y) - buffer.rowLo(y) + 1));
+    out.pixels.reserve(capacity);
+    auto emitRun = [&](std::int64_t y, std::int32_t wy, std::int64_t from, std::int64_t to) {
+      if (from > to) return;
+      const std::int64_t base = from - (wrap ? wrapIndex(from, width) : from);
+      for (std::int64_t x = from; x <= to; ++x) {
+        const Cell& c = buffer.at(x, y);
+        if (c.alpha > 0) out.pixels.push_back({std::int32_t(x - base), wy, c.alpha, cellColour(st, c)});
+      }
+    };
     for (std::int64_t j = 0; j < rows; ++j) {
       const std::int64_t y = ys + j > b.y1 ? ys + j - rows : ys + j;
-      for (std::int64_t i = 0; i < cols; ++i) {
-        const std::int64_t x = xs + i > b.x1 ? xs + i - cols : xs + i;
-        const Cell& c = buffer.at(x, y);
-        if (c.alpha > 0)
-          out.pixels.push_back({std::int32_t(wrap ? wrapIndex(x, width) : x), std::int32_t(wrap ? wrapIndex(y, height) : y),
-                                c.alpha, cellColour(st, c.source)});
-      }
+      const std::int32_t wy = std::int32_t(wrap ? wrapIndex(y, height) : y);
+      const std::int64_t lo = buffer.rowLo(y), hi = buffer.rowHi(y);
+      emitRun(y, wy, std::max(lo, xs), hi);
+      emitRun(y, wy, lo, std::min(hi, xs - 1));
     }
     return out;
   }
@@ -345,11 +395,11 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
     const Buffer buffer = fill(chunk);
     const Box& b = buffer.box();
     for (std::int64_t y = b.y0; y <= b.y1; ++y)
-      for (std::int64_t x = b.x0; x <= b.x1; ++x) {
+      for (std::int64_t x = buffer.rowLo(y); x <= buffer.rowHi(y); ++x) {
         const Cell& c = buffer.at(x, y);
         if (c.alpha > 0) {
           const std::int64_t wx = wrap ? wrapIndex(x, width) : x, wy = wrap ? wrapIndex(y, height) : y;
-          entries.push_back({wy * width + wx, std::int64_t(entries.size()), c.alpha, cellColour(st, c.source)});
+          entries.push_back({wy * width + wx, std::int64_t(entries.size()), c.alpha, cellColour(st, c)});
         }
       }
   }

@@ -84,11 +84,14 @@ double taperFactor(double arc, double length, double taper) {
   return x * x * (3 - 2 * x);
 }
 
-std::vector<Sample> sampleCentreline(const Paintstroke& stroke, double maxPieceLength, std::size_t maxSamples) {
+std::vector<Sample> sampleCentreline(const Paintstroke& stroke, double maxPieceLength, double maxDeviation,
+                                     std::size_t maxSamples) {
   const auto& p = stroke.points;
   std::vector<Sample> samples;
   if (p.size() < 2 || !std::all_of(p.begin(), p.end(), finitePoint)) return samples;
-  if (!(maxPieceLength > 0) || !std::isfinite(maxPieceLength)) maxPieceLength = 0.5;
+  if (!(maxPieceLength > 0) || !std::isfinite(maxPieceLength)) maxPieceLength = RasterOptions{}.maxPieceLength;
+  if (!(maxDeviation > 0) || !std::isfinite(maxDeviation)) maxDeviation = RasterOptions{}.maxDeviation;
+  maxDeviation = std::max(maxDeviation, 1e-4);
 
   auto toSample = [](const ControlPoint& c) {
     Sample s;
@@ -97,24 +100,34 @@ std::vector<Sample> sampleCentreline(const Paintstroke& stroke, double maxPieceL
   };
   samples.push_back(toSample(p.front()));
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-    // The segment's length, from a polyline fine enough for the piece count.
+    // The segment's length and total turn, from a polyline fine enough for the piece count. A piece of
+    // length l turning by a strays about l a / 8 from its chord; n equal pieces of a segment of length
+    // L turning by A stray L A / (8 n^2).
     constexpr int kProbe = 8;
-    double length = 0;
+    double length = 0, turn = 0, px = 0, py = 0;
     ControlPoint prev = p[i];
     for (int k = 1; k <= kProbe; ++k) {
       const ControlPoint q = evaluateSegment(p, i, double(k) / kProbe);
-      length += std::hypot(q.x - prev.x, q.y - prev.y);
+      const double dx = q.x - prev.x, dy = q.y - prev.y, step = std::hypot(dx, dy);
+      if (step > 0) {
+        if (px != 0 || py != 0) turn += std::acos(std::clamp((px * dx + py * dy) / step, -1.0, 1.0));
+        px = dx / step, py = dy / step;
+      }
+      length += step;
       prev = q;
     }
     if (!std::isfinite(length)) return {};
-    const double pieces = std::max(1.0, std::ceil(length / maxPieceLength));
+    const double pieces = std::max({1.0, std::ceil(length / maxPieceLength),
+                                    std::ceil(std::sqrt(length * turn / (8 * maxDeviation)))});
     if (pieces > double(maxSamples) || samples.size() + std::size_t(pieces) > maxSamples) return {};
     const int count = int(pieces);
     const std::size_t start = samples.size() - 1;
     for (int k = 1; k <= count; ++k) {
       Sample s = toSample(k == count ? p[i + 1] : evaluateSegment(p, i, double(k) / count));
       const Sample& before = samples.back();
-      s.arc = before.arc + std::hypot(s.x - before.x, s.y - before.y);
+      const double dx = s.x - before.x, dy = s.y - before.y;
+      const double step = std::sqrt(dx * dx + dy * dy);
+      s.arc = before.arc + (std::isfinite(step) ? step : std::hypot(dx, dy));
       samples.push_back(s);
     }
     // Colour and opacity: linear in arc length between the two control points.

@@ -22,10 +22,12 @@ struct Sample {
 };
 
 // Samples the centreline (spline.cpp): each Catmull-Rom segment is cut into equal parameter steps no
-// longer than `maxPieceLength`, the arc length accumulated, and the taper applied to the radius by arc
-// length. Returns an empty list when the stroke has fewer than two points or a non-finite value, or
-// when it would need more than `maxSamples` samples.
-std::vector<Sample> sampleCentreline(const Paintstroke& stroke, double maxPieceLength, std::size_t maxSamples);
+// longer than `maxPieceLength` and whose chords stray at most `maxDeviation` from the curve, the arc
+// length accumulated, and the taper applied to the radius by arc length. Returns an empty list when
+// the stroke has fewer than two points or a non-finite value, or when it would need more than
+// `maxSamples` samples.
+std::vector<Sample> sampleCentreline(const Paintstroke& stroke, double maxPieceLength, double maxDeviation,
+                                     std::size_t maxSamples);
 
 // The taper factor at arc length `arc` of a stroke `length` long (smoothstep over taper x length).
 double taperFactor(double arc, double length, double taper);
