@@ -1,0 +1,114 @@
+// bench-tam: the tonal art map construction (libbake/tam/build.h) on the default style (6 tones
+// evenly spaced up to darkness 0.9, 4 stroke levels, hatching), sweeping the candidate count K and the
+// finest resolution. Per (K, resolution): the median construction time over --repeats builds and the
+// quality figures of tam/quality.h (deterministic for the seed): the largest tone error and its ratio
+// to the tolerance max(0.25 %, 0.8 / N), the largest coefficient of variation over quarter-tile
+// windows and the largest low-frequency power share, over the images the uniformity targets apply to
+// and over all stroke images. Writes tam.csv (and, with --detail, images.csv: every image's figures);
+// progress on stderr.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "tam/build.h"
+#include "tam/quality.h"
+
+namespace {
+
+using namespace bake::tam;
+
+struct Options {
+  std::vector<int> candidates{1, 2, 4, 8, 16, 32};
+  std::vector<int> resolutions{64, 128, 256, 512};
+  int repeats = 3;
+  int threads = 2;
+  std::uint64_t seed = 1;
+  std::string out = "build-bench/results";
+  bool detail = false;
+};
+
+Style benchStyle(int candidates, int resolution, std::uint64_t seed) {
+  Style style;
+  style.source = "default";
+  for (int k = 1; k <= 6; ++k) style.tones.push_back(0.9 * k / 6.0);
+  style.resolution = resolution;
+  style.levels = 4;
+  style.candidates = candidates;
+  style.seed = seed;
+  return style;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"TAM construction: quality against construction time over K and resolution"};
+  app.add_option("--candidates", options.candidates, "candidate counts K")->delimiter(',');
+  app.add_option("--resolutions", options.resolutions, "finest resolutions")->delimiter(',');
+  app.add_option("--repeats", options.repeats, "builds per point (median time)");
+  app.add_option("--threads", options.threads, "construction threads");
+  app.add_option("--seed", options.seed, "construction seed");
+  app.add_option("--out", options.out, "output folder");
+  app.add_flag("--detail", options.detail, "also write every image's figures (images.csv)");
+  bool quick = false;
+  app.add_flag("--quick", quick, "K 1,4,16 at 64,128,256, one repeat");
+  CLI11_PARSE(app, argc, argv);
+  if (quick) {
+    options.candidates = {1, 4, 16};
+    options.resolutions = {64, 128, 256};
+    options.repeats = 1;
+  }
+  std::filesystem::create_directories(options.out);
+  std::ofstream csv(options.out + "/tam.csv");
+  csv << "candidates,resolution,seconds,max_tone_error,max_tone_error_over_tolerance,max_cv,max_low_frequency_power,"
+         "max_cv_all,max_low_frequency_power_all,nesting_violations,strokes,candidates_evaluated\n";
+  std::ofstream images;
+  if (options.detail) {
+    images.open(options.out + "/images.csv");
+    images << "candidates,resolution,tone,mip,side,target,darkness,tone_error,tone_tolerance,cv,low_frequency_power,"
+              "uniformity_checked\n";
+  }
+  for (int resolution : options.resolutions) {
+    for (int k : options.candidates) {
+      const Style style = benchStyle(k, resolution, options.seed);
+      BuildOptions build;
+      build.threads = options.threads;
+      std::vector<double> times;
+      Tam tam;
+      for (int r = 0; r < std::max(1, options.repeats); ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        bake::Result<Tam> result = buildTam(style, build);
+        times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        if (!result.isOk()) {
+          std::fprintf(stderr, "bench-tam: error: %s\n", result.status().describe().c_str());
+          return 4;
+        }
+        tam = std::move(result).value();
+      }
+      std::sort(times.begin(), times.end());
+      const double seconds = times[times.size() / 2];
+      const Quality q = measureQuality(tam);
+      csv << k << ',' << resolution << ',' << seconds << ',' << q.maxToneError << ',' << q.maxToneErrorOverTolerance << ','
+          << q.maxInkVariation << ',' << q.maxLowFrequencyPower << ',' << q.maxInkVariationAll << ','
+          << q.maxLowFrequencyPowerAll << ',' << q.nestingViolationsTone + q.nestingViolationsResolution << ','
+          << tam.strokes.size() << ',' << tam.candidatesEvaluated << '\n';
+      std::fprintf(stderr, "K %2d  %4d^2  %7.3f s  tone error %.4f (%.2f of tolerance)  cv %.3f  lfp %.4f  (all: cv %.3f lfp %.4f)  %zu strokes\n",
+                   k, resolution, seconds, q.maxToneError, q.maxToneErrorOverTolerance, q.maxInkVariation,
+                   q.maxLowFrequencyPower, q.maxInkVariationAll, q.maxLowFrequencyPowerAll, tam.strokes.size());
+      if (options.detail) {
+        for (const ImageQuality& iq : q.images) {
+          images << k << ',' << resolution << ',' << iq.tone << ',' << iq.mip << ',' << iq.side << ',' << iq.target << ','
+                 << iq.darkness << ',' << iq.toneError << ',' << iq.toneTolerance << ',' << iq.inkVariation << ','
+                 << iq.lowFrequencyPower << ',' << (iq.uniformityChecked ? 1 : 0) << '\n';
+        }
+      }
+    }
+  }
+  return 0;
+}

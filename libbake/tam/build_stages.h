@@ -1,0 +1,66 @@
+// The stages of the tonal art map construction (build.h), shared by build.cpp, build_candidates.cpp
+// and build_level.cpp. Internal to libbake/tam.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "stroke/paintstroke.h"
+#include "tam/style.h"
+
+namespace bake::tam::detail {
+
+// Counter-based random numbers: the stream of one candidate stroke depends only on
+// (seed, tone, level, step, candidate), never on the order candidates are evaluated in
+// (SplitMix64 finaliser over the key, then SplitMix64 steps).
+class StrokeRandom {
+ public:
+  StrokeRandom(std::uint64_t seed, int tone, int level, std::int64_t step, int candidate);
+  std::uint64_t next();
+  double uniform();                    // [0, 1)
+  double uniform(double low, double high);
+
+ private:
+  std::uint64_t state_;
+};
+
+// A random candidate stroke of the style, in tile units ([0, 1)^2; the rasterizer wraps it), radii in
+// pixels. `placementSide` is the side of the level the stroke is placed at (stipple dots are as long
+// as they are wide there).
+stroke::Paintstroke candidateStroke(const Style& style, int tone, int placementSide, StrokeRandom& random);
+
+// Normalised separable Gaussian, radius ceil(3 sigma) (sigma 0: the identity).
+struct Kernel {
+  int radius = 0;
+  std::vector<float> weights;  // 2 radius + 1 taps
+};
+Kernel gaussianKernel(double sigma);
+
+// One stroke level of the tone being built: its image, the darkness blurred by the kernel (kept up
+// to date stroke by stroke) and the total darkness.
+struct LevelImage {
+  int side = 0;
+  stroke::Raster brightness;   // 1 channel: ink as if black (the tone)
+  stroke::Raster colour;       // 3 channels with coloured ink, else empty
+  std::vector<float> blurred;  // blur of (1 - brightness), side x side, wrapping
+  double darknessSum = 0;      // sum over texels of (1 - brightness)
+  double meanDarkness() const { return darknessSum / (double(side) * double(side)); }
+};
+LevelImage blankLevel(int side, bool coloured);
+
+// A candidate's effect on one level: `gain` = sum over its texels of min(t, D + d) - min(t, D) with D
+// the blurred darkness, d the darkness it adds and t the target (progress towards the tone, none
+// where the neighbourhood is already dark enough); `ink` = its alpha sum; `darkening` = sum of d.
+struct Progress {
+  double gain = 0, ink = 0, darkening = 0;
+};
+Progress measureProgress(const stroke::InkFootprint& footprint, const LevelImage& level, double target);
+
+// Draws a footprint into the level: brightness *= 1 - alpha, colour composited, blurred darkness
+// updated over the footprint's neighbourhood only (wrapping), darkness sum updated.
+void applyFootprint(const stroke::InkFootprint& footprint, const Kernel& kernel, LevelImage& level);
+
+// 2x2 box average (mean-preserving), any channel count; side must be even or 1 -> 1.
+stroke::Raster boxHalve(const stroke::Raster& image);
+
+}  // namespace bake::tam::detail
