@@ -92,11 +92,12 @@ inline double discQuadrant(double x, double y, double r) {
 // Area of the disc of radius r centred at (cx, cy) inside the pixel whose centre is (px, py).
 inline double discInPixel(double px, double py, double cx, double cy, double r) {
   if (!(r > 0)) return 0;
+  const double dist = std::sqrt((px - cx) * (px - cx) + (py - cy) * (py - cy));
+  constexpr double kHalfDiagonal = 0.70710678118654757;
+  if (dist >= r + kHalfDiagonal) return 0;
+  if (dist + kHalfDiagonal <= r) return 1;
+  if (r > 64) return std::clamp(0.5 + r - dist, 0.0, 1.0);  // the area differences would lose precision
   const double x0 = px - 0.5 - cx, x1 = px + 0.5 - cx, y0 = py - 0.5 - cy, y1 = py + 0.5 - cy;
-  if (r > 4) {  // the square's area differences lose precision for large discs; the edge is flat here
-    const double dist = std::hypot(px - cx, py - cy);
-    return std::clamp(0.5 + r - dist, 0.0, 1.0);
-  }
   const double area = discQuadrant(x1, y1, r) - discQuadrant(x0, y1, r) - discQuadrant(x1, y0, r) + discQuadrant(x0, y0, r);
   return std::clamp(area, 0.0, 1.0);
 }

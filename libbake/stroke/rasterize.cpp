@@ -26,7 +26,7 @@ using detail::PixelFilter;
 using detail::Sample;
 
 constexpr std::size_t kMaxSamples = std::size_t(1) << 20;  // 0.5 M pixels of centreline at 0.5 px pieces
-constexpr std::int64_t kMaxBufferCells = std::int64_t(1) << 22;
+constexpr double kMaxBufferCells = double(1 << 22);
 constexpr double kMinRadius = 1e-9;
 constexpr double kSharpTurn = 0.5;  // radians: beyond this a joint gets a round join
 
@@ -53,7 +53,7 @@ struct Cell {
 struct Box {
   std::int64_t x0, y0, x1, y1;  // inclusive pixel indices
   bool empty() const { return x1 < x0 || y1 < y0; }
-  std::int64_t cells() const { return empty() ? 0 : (x1 - x0 + 1) * (y1 - y0 + 1); }
+  double cells() const { return empty() ? 0 : double(x1 - x0 + 1) * double(y1 - y0 + 1); }
   void add(const Box& o) {
     x0 = std::min(x0, o.x0), y0 = std::min(y0, o.y0), x1 = std::max(x1, o.x1), y1 = std::max(y1, o.y1);
   }
@@ -105,14 +105,17 @@ std::array<float, 3> inkColour(const Sample& s) {
   return {float(s.colour[0]), float(s.colour[1]), float(s.colour[2])};
 }
 
-Stroke buildStroke(const Paintstroke& stroke, double dx, double dy, const RasterOptions& options) {
+Stroke buildStroke(const Paintstroke& stroke, double dx, double dy, double maxRadius, const RasterOptions& options) {
   Stroke out;
   double piece = options.maxPieceLength;
   if (!(piece > 0) || !std::isfinite(piece)) piece = RasterOptions{}.maxPieceLength;
   piece = std::clamp(piece, 1e-3, 64.0);
   out.samples = detail::sampleCentreline(stroke, piece, options.maxDeviation, kMaxSamples);
   if (out.samples.size() < 2) return out;
-  for (Sample& s : out.samples) s.x -= dx, s.y -= dy;
+  for (Sample& s : out.samples) {
+    s.x -= dx, s.y -= dy;
+    s.radius = std::min(s.radius, maxRadius);
+  }
   out.length = out.samples.back().arc;
   out.centreOpacity = std::clamp(std::isfinite(stroke.centreOpacity) ? stroke.centreOpacity : 1.0, 0.0, 1.0);
   out.edgeOpacity = std::clamp(std::isfinite(stroke.edgeOpacity) ? stroke.edgeOpacity : 1.0, 0.0, 1.0);
@@ -295,14 +298,6 @@ std::int64_t wrappedStart(std::int64_t lo, std::int64_t hi, std::int64_t n) {
   return next <= hi ? next : lo;
 }
 
-// A pixel's cell before folding: its wrapped position, its order of arrival, its ink and colour.
-struct Entry {
-  std::int64_t key;
-  std::int64_t order;
-  float alpha;
-  std::array<float, 3> colour;
-};
-
 }  // namespace
 
 InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wrap, const RasterOptions& options) {
@@ -317,13 +312,15 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
     shiftY = std::floor(first.y / height) * height;
     if (!std::isfinite(shiftX) || !std::isfinite(shiftY)) shiftX = shiftY = 0;
   }
-  const Stroke st = buildStroke(stroke, shiftX, shiftY, options);
+  // With wrap-around a radius beyond the image's size only covers the image again: it is limited to
+  // that (which bounds the work).
+  const double maxRadius = wrap ? double(std::max(width, height)) : std::numeric_limits<double>::infinity();
+  const Stroke st = buildStroke(stroke, shiftX, shiftY, maxRadius, options);
   if (st.pieces.empty() && st.discs.empty()) return out;
 
   constexpr double kFar = 1e15;  // keeps the pixel indices of far-away pieces in range
   const double cx0 = wrap ? -kFar : 0, cy0 = wrap ? -kFar : 0;
   const double cx1 = wrap ? kFar : width - 1, cy1 = wrap ? kFar : height - 1;
-  const Box clip{std::int64_t(cx0), std::int64_t(cy0), std::int64_t(cx1), std::int64_t(cy1)};
 
   // Elements (pieces, then discs) in chunks whose bounding box fits the buffer; one chunk in practice.
   const std::size_t elements = st.pieces.size() + st.discs.size();
@@ -347,12 +344,13 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
   }
   if (chunks.empty()) return out;
 
-  auto fill = [&](std::size_t chunk) {
-    Buffer buffer(chunks[chunk].second);
+  // Draws a chunk's elements into a buffer over `band` (the chunk's box or a band of its rows).
+  auto fill = [&](std::size_t chunk, const Box& band) {
+    Buffer buffer(band);
     const std::size_t end = chunk + 1 < chunks.size() ? chunks[chunk + 1].first : elements;
     for (std::size_t e = chunks[chunk].first; e < end; ++e) {
-      if (e < st.pieces.size()) drawPiece(st, std::int32_t(e), clip, buffer);
-      else drawDisc(st, std::int32_t(e), clip, buffer);
+      if (e < st.pieces.size()) drawPiece(st, std::int32_t(e), band, buffer);
+      else drawDisc(st, std::int32_t(e), band, buffer);
     }
     return buffer;
   };
@@ -363,7 +361,7 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
   if (direct) {
     // No pixel is hit twice: list the cells in the wrapped row-major order, a row's cells from its
     // first wrapped column xs on, then those before it.
-    const Buffer buffer = fill(0);
+    const Buffer buffer = fill(0, chunks.front().second);
     const Box& b = buffer.box();
     const std::int64_t ys = wrap ? wrappedStart(b.y0, b.y1, height) : b.y0;
     const std::int64_t xs = wrap ? wrappedStart(b.x0, b.x1, width) : b.x0;
@@ -389,35 +387,51 @@ InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wr
     return out;
   }
 
-  // General case: periodic copies overlap (or several chunks): sum the cells per wrapped pixel.
-  std::vector<Entry> entries;
+  // General case: periodic copies overlap, or the stroke needed several chunks. The cells are summed
+  // per image pixel in a folded grid over the part of the image the stroke reaches.
+  Box all = kEmptyBox;
+  for (const auto& chunk : chunks) all.add(chunk.second);
+  const std::int64_t fx0 = wrap ? wrapIndex(all.x0, width) : all.x0, fy0 = wrap ? wrapIndex(all.y0, height) : all.y0;
+  const std::int64_t fw = std::min<std::int64_t>(all.x1 - all.x0 + 1, width);
+  const std::int64_t fh = std::min<std::int64_t>(all.y1 - all.y0 + 1, height);
+  std::vector<float> alpha(std::size_t(fw * fh), 0.0f);
+  std::vector<std::array<float, 3>> colour(std::size_t(fw * fh), std::array<float, 3>{0, 0, 0});
+  // The folded grid's cell of a pixel: its wrapped offset from (fx0, fy0).
+  auto foldX = [&](std::int64_t x) { return wrap ? wrapIndex(wrapIndex(x, width) - fx0, width) : x - fx0; };
+  auto foldY = [&](std::int64_t y) { return wrap ? wrapIndex(wrapIndex(y, height) - fy0, height) : y - fy0; };
   for (std::size_t chunk = 0; chunk < chunks.size(); ++chunk) {
-    const Buffer buffer = fill(chunk);
-    const Box& b = buffer.box();
-    for (std::int64_t y = b.y0; y <= b.y1; ++y)
-      for (std::int64_t x = buffer.rowLo(y); x <= buffer.rowHi(y); ++x) {
-        const Cell& c = buffer.at(x, y);
-        if (c.alpha > 0) {
-          const std::int64_t wx = wrap ? wrapIndex(x, width) : x, wy = wrap ? wrapIndex(y, height) : y;
-          entries.push_back({wy * width + wx, std::int64_t(entries.size()), c.alpha, cellColour(st, c)});
+    const Box& box = chunks[chunk].second;
+    const std::int64_t rowsPerBand = std::max<std::int64_t>(1, std::int64_t(kMaxBufferCells / double(box.x1 - box.x0 + 1)));
+    for (std::int64_t by = box.y0; by <= box.y1; by += rowsPerBand) {
+      const Buffer buffer = fill(chunk, Box{box.x0, by, box.x1, std::min(box.y1, by + rowsPerBand - 1)});
+      const Box& b = buffer.box();
+      for (std::int64_t y = b.y0; y <= b.y1; ++y) {
+        const std::int64_t row = foldY(y) * fw;
+        for (std::int64_t x = buffer.rowLo(y); x <= buffer.rowHi(y); ++x) {
+          const Cell& c = buffer.at(x, y);
+          if (!(c.alpha > 0)) continue;
+          const std::size_t k = std::size_t(row + foldX(x));
+          alpha[k] += c.alpha;
+          const std::array<float, 3> ink = cellColour(st, c);
+          for (int ch = 0; ch < 3; ++ch) colour[k][ch] += c.alpha * ink[ch];
         }
       }
-  }
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.key != b.key ? a.key < b.key : a.order < b.order; });
-  for (std::size_t i = 0; i < entries.size();) {
-    double alpha = 0;
-    std::array<double, 3> colour{0, 0, 0};
-    std::size_t j = i;
-    for (; j < entries.size() && entries[j].key == entries[i].key; ++j) {
-      alpha += entries[j].alpha;
-      for (int k = 0; k < 3; ++k) colour[k] += double(entries[j].alpha) * entries[j].colour[k];
     }
-    std::array<float, 3> mean{};
-    for (int k = 0; k < 3; ++k) mean[k] = float(colour[k] / alpha);
-    out.pixels.push_back({std::int32_t(entries[i].key % width), std::int32_t(entries[i].key / width),
-                          float(std::min(alpha, 1.0)), mean});
-    i = j;
+  }
+  // Row-major order of the image: folded rows (and columns) from the one that wraps to 0 on.
+  const std::int64_t rowStart = wrap ? (fh == height ? wrapIndex(-fy0, height) : wrappedStart(fy0, fy0 + fh - 1, height) - fy0) : 0;
+  const std::int64_t colStart = wrap ? (fw == width ? wrapIndex(-fx0, width) : wrappedStart(fx0, fx0 + fw - 1, width) - fx0) : 0;
+  for (std::int64_t j = 0; j < fh; ++j) {
+    const std::int64_t fy = (rowStart + j) % fh;
+    const std::int32_t y = std::int32_t(wrap ? wrapIndex(fy0 + fy, height) : fy0 + fy);
+    for (std::int64_t i = 0; i < fw; ++i) {
+      const std::int64_t fx = (colStart + i) % fw;
+      const std::size_t k = std::size_t(fy * fw + fx);
+      if (!(alpha[k] > 0)) continue;
+      std::array<float, 3> mean;
+      for (int ch = 0; ch < 3; ++ch) mean[ch] = colour[k][ch] / alpha[k];
+      out.pixels.push_back({std::int32_t(wrap ? wrapIndex(fx0 + fx, width) : fx0 + fx), y, std::min(alpha[k], 1.0f), mean});
+    }
   }
   return out;
 }
