@@ -41,6 +41,7 @@ struct Style {
   std::vector<double> tones;       // target darkness per tone, strictly increasing in (0, 1)
   int resolution = 256;            // finest level's side (power of two)
   int levels = 4;                  // levels drawn with strokes: resolution, resolution/2, ...
+  bool levelsGiven = false;        // the file gave `levels` (else it follows the resolution)
   StrokeStyle stroke;
   int candidates = 16;             // K: random candidates per stroke (Praun 2001)
   double blurSigma = 1.0;          // pixels: the blur under which tone progress is measured
@@ -52,8 +53,22 @@ struct Style {
 
 // Reads and validates a style file: every error names the file and the JSON pointer
 // (e.g. "/stroke/width/min"). `tones` may be given as a count (evenly spaced darkness) or as values.
+// With `loadImage` false the stroke image's path is resolved but the image is not read (for
+// --print-inputs, which must list inputs that do not exist yet).
 Result<Style> readStyle(const std::string& path);
+Result<Style> readStyle(const std::string& path, bool loadImage);
 Result<Style> parseStyle(const std::string& jsonText, const std::string& source, const std::string& baseDir);
+Result<Style> parseStyle(const std::string& jsonText, const std::string& source, const std::string& baseDir,
+                         bool loadImage);
+
+// The default stroke level count for a resolution: the coarsest stroke level stays >= 8 texels
+// wide, and at most 4 levels.
+int defaultLevels(int resolution);
+
+// Changes the resolution (an override of the style's): `levels` follows it when the file did not
+// give it; both are checked (power of two within 8 .. 4096, levels within 1 .. log2(resolution)),
+// errors naming `where` (e.g. "--resolution").
+Status setResolution(Style& style, int resolution, const std::string& where);
 
 const char* strokeKindName(StrokeKind kind);
 
