@@ -12,6 +12,7 @@
 #include "io/image.h"
 #include "render/geodesic.h"
 #include "render/renderer.h"
+#include "render/standard.h"
 #include "render/target.h"
 #include "scene/scene.h"
 
@@ -91,6 +92,22 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   session.report().setStatistic("size", {settings.view.width, settings.view.height});
   session.report().setStatistic("frameTimeGpu", timingJson(times.gpuMs));
   session.report().setStatistic("frameTimeCpu", timingJson(times.cpuMs));
+  if (settings.compareStandard) {
+    // The same scene, camera and light with every instance drawn by the standard renderer.
+    RendererRegistry standardOnly;
+    standardOnly.add("", [] { return std::make_unique<StandardRenderer>(); });
+    BAKE_ASSIGN_OR_RETURN(SceneRenderer standard, SceneRenderer::create(scene, standardOnly, shaders));
+    target.bind();
+    const FrameTimes standardTimes = renderFrames(standard, frame, settings.frames);
+    session.report().setStatistic("frameTimeStandardGpu", timingJson(standardTimes.gpuMs));
+    session.report().setStatistic("frameTimeStandardCpu", timingJson(standardTimes.cpuMs));
+    if (!session.diagnostics().quiet()) {
+      const double techniques = percentiles(times.cpuMs).median, phong = percentiles(standardTimes.cpuMs).median;
+      session.diagnostics().info("standard shading over " + std::to_string(settings.frames) + " frames: CPU median " +
+                                 std::to_string(phong) + " ms; the scene's techniques take " +
+                                 std::to_string(phong > 0 ? techniques / phong : 0.0) + " times as long");
+    }
+  }
   if (settings.frames > 1 && !session.diagnostics().quiet()) {
     const Percentiles gpu = percentiles(times.gpuMs), cpu = percentiles(times.cpuMs);
     const std::string gpuText = times.gpuMs.empty() ? "GPU not measured (unreliable timer queries)"
@@ -165,6 +182,7 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"camera", settings.view.camera},
                                {"light", settings.view.light},
                                {"frames", settings.frames},
+                               {"compareStandard", settings.compareStandard},
                                {"geotexture", settings.view.geotexture},
                                {"time", settings.view.time}});
   return session.finish(renderScene(settings, session));

@@ -1,6 +1,7 @@
 // `bakeplay render`: loads a scene (or the bundled example), renders it headless into an offscreen
 // target, writes PNG (sRGB, 8-bit) or EXR (linear, half), and with --frames N times N frames (GPU
-// timer queries and CPU wall time, median and p95) for the report.
+// timer queries and CPU wall time, median and p95) for the report; --compare-standard times the same
+// scene drawn with standard shading too.
 #pragma once
 
 #include <string>
@@ -28,6 +29,9 @@ struct RenderSettings {
   ViewSettings view;
   std::string output;  // .png or .exr
   int frames = 1;
+  // Also time the scene with every technique replaced by standard shading (Blinn-Phong), as seed 004
+  // compares hatching with Phong; both frame times go to the report.
+  bool compareStandard = false;
   CommonOptions common;
 };
 

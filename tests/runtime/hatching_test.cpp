@@ -622,5 +622,27 @@ TEST(HatchingRender, BakeplayRendersAndValidatesThePackage) {
   EXPECT_TRUE(verdict.isOk()) << verdict.describe();
 }
 
+// --compare-standard times the scene twice, as drawn and with standard shading, into one report.
+TEST(HatchingRender, CompareStandardTimesBothRenderers) {
+  const fs::path file = writePackage(hatchingPackage(meshPrimitive(shape("sphere", 16))), "compare");
+  RenderSettings settings;
+  settings.view.scenes = {file.string()};
+  settings.view.width = settings.view.height = 64;
+  settings.frames = 3;
+  settings.compareStandard = true;
+  settings.output = (file.parent_path() / "sphere.png").string();
+  settings.common.reportPath = (file.parent_path() / "report.json").string();
+  Diagnostics diagnostics("bakeplay", true);
+  const Status status = runRender(settings, diagnostics);
+  ASSERT_TRUE(status.isOk()) << status.describe();
+  const std::vector<std::uint8_t> bytes = test::readAll(settings.common.reportPath);
+  const nlohmann::json report = nlohmann::json::parse(bytes.begin(), bytes.end());
+  const nlohmann::json& statistics = report["statistics"];
+  EXPECT_EQ(statistics["techniques"], nlohmann::json({fmt::kExtension}));
+  EXPECT_EQ(statistics["frameTimeCpu"]["frames"], 3);
+  EXPECT_EQ(statistics["frameTimeStandardCpu"]["frames"], 3);
+  EXPECT_GT(statistics["frameTimeStandardCpu"]["medianMs"].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace bake::play

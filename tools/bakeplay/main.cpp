@@ -26,6 +26,8 @@ CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, st
   addViewOptions(*command, render.view, size);
   command->add_option("-o,--output", render.output, "Image to write (.png: sRGB 8-bit, .exr: linear half)")->required();
   command->add_option("--frames", render.frames, "Render this many frames and report median and p95 frame times");
+  command->add_flag("--compare-standard", render.compareStandard,
+                    "Also time the scene with every technique replaced by standard (Blinn-Phong) shading");
   bake::CommonOptionSet options = kReportOnly;
   options.depfile = true;
   bake::addCommonOptions(*command, render.common, options);
