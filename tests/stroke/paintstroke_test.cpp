@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <vector>
+#include <algorithm>
 
 namespace bake::stroke {
 namespace {
@@ -112,6 +114,59 @@ TEST(PaintstrokeRaster, InkIsConservedAtAnyWidthAngleAndOffset) {
         EXPECT_NEAR(f.ink(), expected, 0.02 * expected) << "r " << radius << " angle " << angle << " offset " << offset;
       }
     }
+  }
+}
+
+// The area of each pixel within r of a polyline, by 16 x 16 point samples (the independent oracle).
+double supersampledArea(const std::vector<std::pair<double, double>>& poly, double r, int x, int y) {
+  constexpr int kSub = 16;
+  int inside = 0;
+  for (int j = 0; j < kSub; ++j)
+    for (int i = 0; i < kSub; ++i) {
+      const double px = x + (i + 0.5) / kSub, py = y + (j + 0.5) / kSub;
+      double best = 1e300;
+      for (std::size_t k = 0; k + 1 < poly.size(); ++k) {
+        const double ax = poly[k].first, ay = poly[k].second, ex = poly[k + 1].first - ax, ey = poly[k + 1].second - ay;
+        const double l2 = ex * ex + ey * ey;
+        const double t = l2 > 0 ? std::clamp(((px - ax) * ex + (py - ay) * ey) / l2, 0.0, 1.0) : 0;
+        best = std::min(best, std::hypot(px - ax - t * ex, py - ay - t * ey));
+      }
+      inside += best <= r;
+    }
+  return double(inside) / (kSub * kSub);
+}
+
+TEST(PaintstrokeRaster, CoverageMatchesSupersampledArea) {
+  // A curved stroke (three quarters of a circle of radius 8) against the area of each pixel within r
+  // of the spline, point-sampled 256 times per pixel.
+  for (double r : {0.3, 1.0, 2.5}) {
+    Paintstroke s;
+    for (int i = 0; i <= 6; ++i) {
+      const double a = 1.5 * std::numbers::pi * i / 6;
+      s.points.push_back(point(16.3 + 8 * std::cos(a), 16.7 + 8 * std::sin(a), r));
+    }
+    std::vector<std::pair<double, double>> poly;
+    for (int k = 0; k <= 200; ++k) {
+      const ControlPoint q = evaluate(s, 6.0 * k / 200);
+      poly.push_back({q.x, q.y});
+    }
+    const auto m = alphaMap(rasterize(s, 32, 32, false));
+    double worst = 0, total = 0;
+    int count = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x) {
+        const double d = std::sqrt(std::pow(x + 0.5 - 16.3, 2) + std::pow(y + 0.5 - 16.7, 2));
+        if (std::abs(d - 8) > r + 1.5) {
+          EXPECT_EQ(get(m, x, y), 0.0f) << x << "," << y;  // (the caps lie within this ring too)
+          continue;
+        }
+        const double error = std::abs(get(m, x, y) - supersampledArea(poly, r, x, y));
+        worst = std::max(worst, error);
+        total += error;
+        ++count;
+      }
+    EXPECT_LT(worst, 0.065) << r;
+    EXPECT_LT(total / count, 0.005) << r;
   }
 }
 
