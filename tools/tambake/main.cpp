@@ -1,7 +1,9 @@
 // tambake: builds a tonal art map from a style file (formats/tam.md): a KTX2 2D array of tones with
 // its full mip chain, optionally the threshold texture and a package applying it to a mesh.
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "core/cli.h"
 #include "tam/bake.h"
@@ -11,8 +13,15 @@ namespace {
 
 bool parseTriple(const std::string& text, std::array<double, 3>& out) {
   if (text.empty()) return true;
-  return std::sscanf(text.c_str(), "%lf,%lf,%lf", &out[0], &out[1], &out[2]) == 3 &&
+  char rest = 0;
+  return std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &out[0], &out[1], &out[2], &rest) == 3 &&
          std::isfinite(out[0] + out[1] + out[2]);
+}
+
+bool parsePair(const std::string& text, std::array<double, 2>& out) {
+  if (text.empty()) return true;
+  char rest = 0;
+  return std::sscanf(text.c_str(), "%lf,%lf%c", &out[0], &out[1], &rest) == 2 && std::isfinite(out[0] + out[1]);
 }
 
 }  // namespace
@@ -39,6 +48,8 @@ int main(int argc, char** argv) {
   app.add_option("--package", material.package, "Package to write with --apply-to (.glb, BAKE_hatching material)");
   app.add_option("--tiles-per-unit", material.tilesPerUnit, "Hatching scale: TAM tiles per object unit")->default_str("4");
   app.add_option("--rotation", material.rotationDegrees, "Rotation of the strokes about the normal, degrees")->default_str("0");
+  std::string translation;
+  app.add_option("--translation", translation, "Shift of the hatching along T and B, in tiles: U,V")->default_str("0,0");
   app.add_option("--orientation", material.orientation, "Strokes toward-light (along the projected light) or across-light")
       ->check(CLI::IsMember({"toward-light", "across-light"}))
       ->default_str("toward-light");
@@ -52,10 +63,12 @@ int main(int argc, char** argv) {
     diagnostics.setQuiet(settings.common.quiet);
     if (!parseTriple(baseColour, material.baseColour)) return bake::usageError("--base-colour " + baseColour + ": expected R,G,B");
     if (!parseTriple(position, material.position)) return bake::usageError("--position " + position + ": expected X,Y,Z");
+    if (!parsePair(translation, material.translation)) return bake::usageError("--translation " + translation + ": expected U,V");
     if (material.mesh.empty() != material.package.empty())
       return bake::usageError("--apply-to and --package go together");
     if (settings.common.printInputs) {
-      BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style));
+      // The stroke image is listed, not read: a build system asks before the inputs exist.
+      BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style, false));
       for (const std::string& input : style.inputs()) std::printf("%s\n", input.c_str());
       if (!material.mesh.empty()) std::printf("%s\n", material.mesh.c_str());
       return {};
