@@ -1,12 +1,13 @@
 // Reading and checking BAKE_hatching (formats/tam.md) for the renderer and for `bakeplay validate`.
-// Packages are untrusted: every field is checked, and a failure names the file, the material and the
-// field. Required: `version`, `tam`, `tones`, `tilesPerUnit`; `rotation`, `translation`,
-// `orientation` and `baseColor` default to 0, [0, 0], toward-light and white when absent. The TAM must
-// be an embedded KTX2 2D array (one layer per tone) with the full mip chain, in R8 or RGBA8; when its
-// BAKE_tam metadata lists tones they must be the material's.
+// Packages are untrusted: every field is checked as formats/hatching.schema.json states it (all fields
+// but `threshold` required, no others), and a failure names the file, the material and the field. The
+// TAM must be an embedded KTX2 2D array (one layer per tone) with the full mip chain, in R8 or RGBA8;
+// when its BAKE_tam metadata lists tones they must be the material's.
 #include <bake_formats/tam.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "render/hatching.h"
 
@@ -119,23 +120,32 @@ Result<HatchingParams> parseHatching(const nlohmann::json& extension, const glb:
                             (e.contains("version") ? e["version"].dump() : std::string("nothing")) + ")",
                         where);
   }
+  static const char* const kFields[] = {"version",     "tam",         "tones",     "tilesPerUnit", "rotation",
+                                         "translation", "orientation", "baseColor", "threshold"};
+  for (const auto& [key, value] : e.items()) {
+    if (std::find(std::begin(kFields), std::end(kFields), key) == std::end(kFields)) {
+      return invalidInput(ext + " has an unknown field \"" + key + "\"", where);
+    }
+  }
+  for (const char* required : {"tam", "tones", "tilesPerUnit", "rotation", "translation", "orientation", "baseColor"}) {
+    if (!e.contains(required)) {
+      return invalidInput(ext + " lacks \"" + required + "\"" + (std::string(required) == "tam" ? " (missing image)" : ""),
+                          where);
+    }
+  }
   HatchingParams p;
-  if (!e.contains("tones")) return invalidInput(ext + " lacks \"tones\"", where);
   BAKE_RETURN_IF_ERROR(checkTones(e["tones"], p.tones, where));
-  if (!e.contains("tilesPerUnit")) return invalidInput(ext + " lacks \"tilesPerUnit\"", where);
   BAKE_ASSIGN_OR_RETURN(p.tilesPerUnit, finiteNumber(e["tilesPerUnit"], "tilesPerUnit", where));
   if (!(p.tilesPerUnit > 0)) return invalidInput(ext + ".tilesPerUnit must be > 0", where);
-  if (e.contains("rotation")) {
-    BAKE_ASSIGN_OR_RETURN(p.rotation, finiteNumber(e["rotation"], "rotation", where));
-  }
-  if (e.contains("translation")) {
+  BAKE_ASSIGN_OR_RETURN(p.rotation, finiteNumber(e["rotation"], "rotation", where));
+  {
     const nlohmann::json& t = e["translation"];
     if (!t.is_array() || t.size() != 2) return invalidInput(ext + ".translation must be an array of 2 numbers", where);
     for (std::size_t k = 0; k < 2; ++k) {
       BAKE_ASSIGN_OR_RETURN(p.translation[k], finiteNumber(t[k], "translation[" + std::to_string(k) + "]", where));
     }
   }
-  if (e.contains("orientation")) {
+  {
     const std::string o = e["orientation"].is_string() ? e["orientation"].get<std::string>() : "";
     if (o == fmt::kOrientationTowardLight) {
       p.orientation = HatchingOrientation::TowardLight;
@@ -147,15 +157,18 @@ Result<HatchingParams> parseHatching(const nlohmann::json& extension, const glb:
                           where);
     }
   }
-  if (e.contains("baseColor")) {
+  {
     const nlohmann::json& c = e["baseColor"];
     if (!c.is_array() || c.size() != 3) return invalidInput(ext + ".baseColor must be an array of 3 numbers", where);
     for (std::size_t k = 0; k < 3; ++k) {
       BAKE_ASSIGN_OR_RETURN(p.baseColor[k], finiteNumber(c[k], "baseColor[" + std::to_string(k) + "]", where));
-      if (p.baseColor[k] < 0) return invalidInput(ext + ".baseColor[" + std::to_string(k) + "] is negative", where);
+      if (!(p.baseColor[k] >= 0 && p.baseColor[k] <= 1)) {
+        return invalidInput(ext + ".baseColor[" + std::to_string(k) + "] = " + std::to_string(p.baseColor[k]) +
+                                " is outside [0, 1]",
+                            where);
+      }
     }
   }
-  if (!e.contains("tam")) return invalidInput(ext + " lacks \"tam\" (missing image)", where);
   BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, embeddedKtx2(package, e["tam"], "tam", where));
   p.tamImage = e["tam"].get<int>();
   auto decoded = ktx2::decode(bytes, where.file + " " + where.element + " " + ext + ".tam (image " +

@@ -597,6 +597,15 @@ TEST(HatchingValidate, RejectsBrokenTamsAndFields) {
     package = hatchingPackage(squarePrimitive());
     package.materials[0]["extensions"][fmt::kExtension]["tones"] = {0.125, 0.25, 0.4375, 1.5};
     EXPECT_NE(messageOf(checkPackageStructure(package, "h.glb")).find("outside (0, 1)"), std::string::npos);
+    package = hatchingPackage(squarePrimitive());
+    package.materials[0]["extensions"][fmt::kExtension]["baseColor"] = {0.5, 1.5, 0.5};
+    EXPECT_NE(messageOf(checkPackageStructure(package, "h.glb")).find("baseColor[1]"), std::string::npos);
+    package = hatchingPackage(squarePrimitive());
+    package.materials[0]["extensions"][fmt::kExtension].erase("rotation");
+    EXPECT_NE(messageOf(checkPackageStructure(package, "h.glb")).find("lacks \"rotation\""), std::string::npos);
+    package = hatchingPackage(squarePrimitive());
+    package.materials[0]["extensions"][fmt::kExtension]["tilesPerMetre"] = 2;
+    EXPECT_NE(messageOf(checkPackageStructure(package, "h.glb")).find("unknown field \"tilesPerMetre\""), std::string::npos);
   }
 }
 
