@@ -102,4 +102,86 @@ inline double discInPixel(double px, double py, double cx, double cy, double r) 
   return std::clamp(area, 0.0, 1.0);
 }
 
+// A small convex polygon (a pixel square clipped by a few half-planes).
+struct Polygon {
+  int count = 0;
+  double x[8], y[8];
+};
+
+// The pixel square centred at (px, py), counter-clockwise in a y-up frame.
+inline Polygon pixelSquare(double px, double py) {
+  Polygon q;
+  q.count = 4;
+  const double xs[4] = {-0.5, 0.5, 0.5, -0.5}, ys[4] = {-0.5, -0.5, 0.5, 0.5};
+  for (int i = 0; i < 4; ++i) q.x[i] = px + xs[i], q.y[i] = py + ys[i];
+  return q;
+}
+
+// Keeps the part of q where nx x + ny y <= c (Sutherland-Hodgman against one half-plane).
+inline Polygon clip(const Polygon& q, double nx, double ny, double c) {
+  Polygon out;
+  for (int i = 0; i < q.count; ++i) {
+    const int j = (i + 1) % q.count;
+    const double fi = nx * q.x[i] + ny * q.y[i] - c, fj = nx * q.x[j] + ny * q.y[j] - c;
+    if (fi <= 0) out.x[out.count] = q.x[i], out.y[out.count] = q.y[i], ++out.count;
+    if ((fi < 0 && fj > 0) || (fi > 0 && fj < 0)) {
+      const double t = fi / (fi - fj);
+      out.x[out.count] = q.x[i] + t * (q.x[j] - q.x[i]);
+      out.y[out.count] = q.y[i] + t * (q.y[j] - q.y[i]);
+      ++out.count;
+    }
+  }
+  return out;
+}
+
+inline double area(const Polygon& q) {
+  double a = 0;
+  for (int i = 0; i < q.count; ++i) {
+    const int j = (i + 1) % q.count;
+    a += q.x[i] * q.y[j] - q.x[j] * q.y[i];
+  }
+  return 0.5 * std::abs(a);
+}
+
+// Signed area of the disc of radius r at the origin inside the triangle (origin, a, b): the triangle's
+// part inside the circle plus circular sectors where the edge ab runs outside it.
+inline double discTriangle(double ax, double ay, double bx, double by, double r) {
+  auto sector = [r](double ux, double uy, double vx, double vy) {
+    return 0.5 * r * r * std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+  };
+  auto triangle = [](double ux, double uy, double vx, double vy) { return 0.5 * (ux * vy - uy * vx); };
+  const double r2 = r * r;
+  const bool aIn = ax * ax + ay * ay <= r2, bIn = bx * bx + by * by <= r2;
+  if (aIn && bIn) return triangle(ax, ay, bx, by);
+  // Where a + t (b - a) crosses the circle: |a + t e|^2 = r^2.
+  const double ex = bx - ax, ey = by - ay;
+  const double qa = ex * ex + ey * ey, qb = ax * ex + ay * ey, qc = ax * ax + ay * ay - r2;
+  const double disc = qb * qb - qa * qc;
+  if (!(qa > 0) || disc <= 0) return sector(ax, ay, bx, by);
+  const double root = std::sqrt(disc);
+  const double t1 = (-qb - root) / qa, t2 = (-qb + root) / qa;
+  if (aIn) {  // leaves the circle at t2
+    const double px = ax + t2 * ex, py = ay + t2 * ey;
+    return triangle(ax, ay, px, py) + sector(px, py, bx, by);
+  }
+  if (bIn) {  // enters at t1
+    const double px = ax + t1 * ex, py = ay + t1 * ey;
+    return sector(ax, ay, px, py) + triangle(px, py, bx, by);
+  }
+  if (t1 >= 1 || t2 <= 0) return sector(ax, ay, bx, by);
+  const double p1x = ax + t1 * ex, p1y = ay + t1 * ey, p2x = ax + t2 * ex, p2y = ay + t2 * ey;
+  return sector(ax, ay, p1x, p1y) + triangle(p1x, p1y, p2x, p2y) + sector(p2x, p2y, bx, by);
+}
+
+// Area of the convex polygon q inside the disc of radius r centred at (cx, cy).
+inline double discArea(const Polygon& q, double cx, double cy, double r) {
+  if (q.count < 3 || !(r > 0)) return 0;
+  double a = 0;
+  for (int i = 0; i < q.count; ++i) {
+    const int j = (i + 1) % q.count;
+    a += discTriangle(q.x[i] - cx, q.y[i] - cy, q.x[j] - cx, q.y[j] - cy, r);
+  }
+  return std::abs(a);
+}
+
 }  // namespace bake::stroke::detail

@@ -39,9 +39,16 @@ struct Piece {
   std::array<float, 3> colour0, colour1;  // at its start and end
 };
 
+// A disc (a dot, or a round join at a sharp turn), or a round cap: the disc's half beyond an end of
+// the stroke together with the band's square end, whose pixels get the exact area of their union.
 struct Disc {
-  double x, y, r, opacity, tx, ty, arc;
+  double x, y, r, opacity, tx, ty, arc;  // (tx, ty): the direction of travel, for the texture
   std::array<float, 3> colour;
+  bool cap = false;
+  double ix = 0, iy = 0;  // a cap's direction into the stroke
+  double band = 0;        // how far the band runs from a cap's centre (the stroke's length)
+  // On a stroke too short for its caps to be apart, each cap adds the other's half beyond its end.
+  double ox = 0, oy = 0, oix = 0, oiy = 0, orad = 0;
 };
 
 struct Cell {
@@ -152,15 +159,34 @@ Stroke buildStroke(const Paintstroke& stroke, double dx, double dy, double maxRa
     out.pieces.front().before = out.pieces.front().filter.halfWidth();
     out.pieces.back().after = out.pieces.back().filter.halfWidth();
   }
-  // Round caps. The cap's tangent (for the texture's across coordinate) is its piece's.
-  const double t0x = out.pieces.empty() ? 1 : out.pieces.front().tx, t0y = out.pieces.empty() ? 0 : out.pieces.front().ty;
-  const double t1x = out.pieces.empty() ? 1 : out.pieces.back().tx, t1y = out.pieces.empty() ? 0 : out.pieces.back().ty;
-  if (s.front().radius >= kMinRadius)
-    out.discs.push_back({s.front().x, s.front().y, s.front().radius, s.front().opacity, t0x, t0y, 0.0,
-                         inkColour(s.front())});
-  if (s.back().radius >= kMinRadius && (out.length > 0 || s.front().radius < kMinRadius))
-    out.discs.push_back({s.back().x, s.back().y, s.back().radius, s.back().opacity, t1x, t1y, out.length,
-                         inkColour(s.back())});
+  if (out.pieces.empty()) {  // a dot
+    if (s.front().radius >= kMinRadius)
+      out.discs.push_back({s.front().x, s.front().y, s.front().radius, s.front().opacity, 1, 0, 0.0, inkColour(s.front())});
+    return out;
+  }
+  // Round caps, drawn with the band's end; the first and last pieces leave them the end pixels.
+  Piece& first = out.pieces.front();
+  Piece& last = out.pieces.back();
+  if (s.front().radius >= kMinRadius) {
+    Disc cap{s.front().x, s.front().y, s.front().radius, s.front().opacity, first.tx, first.ty, 0.0, inkColour(s.front())};
+    cap.cap = true, cap.ix = first.tx, cap.iy = first.ty, cap.band = out.length;
+    out.discs.push_back(cap);
+    first.before = -first.filter.halfWidth();
+  }
+  if (s.back().radius >= kMinRadius) {
+    Disc cap{s.back().x, s.back().y, s.back().radius, s.back().opacity, last.tx, last.ty, out.length, inkColour(s.back())};
+    cap.cap = true, cap.ix = -last.tx, cap.iy = -last.ty, cap.band = out.length;
+    out.discs.push_back(cap);
+    last.after = -last.filter.halfWidth();
+  }
+  if (out.discs.size() >= 2) {
+    Disc& a = out.discs[out.discs.size() - 2];
+    Disc& b = out.discs.back();
+    if (a.cap && b.cap && out.length < a.r + b.r + 2) {
+      a.ox = b.x, a.oy = b.y, a.oix = b.ix, a.oiy = b.iy, a.orad = b.r;
+      b.ox = a.x, b.oy = a.y, b.oix = a.ix, b.oiy = a.iy, b.orad = a.r;
+    }
+  }
   return out;
 }
 
@@ -256,6 +282,41 @@ void drawPiece(const Stroke& st, std::int32_t index, const Box& clip, Buffer& bu
   }
 }
 
+// The ink of a round cap in the pixel centred at (px, py), before the opacity along the stroke: the
+// exact area of the pixel in the band's end plus that in the disc's half beyond the end, each with its
+// breadthwise opacity (the band's part with uniform opacity is exact; otherwise filtered as a piece).
+double capInk(const Stroke& st, const Disc& cap, double px, double py) {
+  const double rx = px - cap.x, ry = py - cap.y;
+  const double s = rx * cap.ix + ry * cap.iy;  // along the stroke from the cap's centre
+  const double nx = cap.iy, ny = -cap.ix;
+  const double d = rx * nx + ry * ny;
+  const double rho = std::sqrt(rx * rx + ry * ry);
+  constexpr double kHalfDiagonal = 0.70710678118654757;
+  if (s >= kHalfDiagonal) return 0;  // wholly in the band: the pieces draw it
+  const double profile = discProfile(rho, cap.r, st.centreOpacity, st.edgeOpacity);
+  if (s <= -kHalfDiagonal) return detail::discInPixel(px, py, cap.x, cap.y, cap.r) * profile;
+  if (rho >= cap.r + kHalfDiagonal && std::abs(d) >= cap.r + kHalfDiagonal) return 0;
+  const bool uniform = st.centreOpacity == st.edgeOpacity;
+  if (uniform && rho + kHalfDiagonal <= cap.r) return st.centreOpacity;
+  const detail::Polygon square = detail::pixelSquare(px, py);
+  const double c = cap.x * cap.ix + cap.y * cap.iy, cn = cap.x * nx + cap.y * ny;
+  double beyond = detail::discArea(detail::clip(square, cap.ix, cap.iy, c), cap.x, cap.y, cap.r);
+  if (cap.orad > 0)
+    beyond += detail::discArea(detail::clip(square, cap.oix, cap.oiy, cap.ox * cap.oix + cap.oy * cap.oiy), cap.ox, cap.oy, cap.orad);
+  double band;
+  if (uniform) {
+    detail::Polygon b = detail::clip(square, -cap.ix, -cap.iy, -c);
+    b = detail::clip(b, cap.ix, cap.iy, c + cap.band);
+    b = detail::clip(b, nx, ny, cn + cap.r);
+    b = detail::clip(b, -nx, -ny, -cn + cap.r);
+    band = st.centreOpacity * detail::area(b);
+  } else {
+    const PixelFilter filter(nx, ny);
+    band = filter.band(d, cap.r, st.centreOpacity, st.edgeOpacity) * std::max(0.0, filter.cdf(cap.band - s) - filter.cdf(-s));
+  }
+  return std::min(1.0, band + beyond * profile);
+}
+
 void drawDisc(const Stroke& st, std::int32_t index, const Box& clip, Buffer& buffer) {
   const Disc& disc = st.discs[std::size_t(index) - st.pieces.size()];
   const Box box = discBox(disc, double(clip.x0), double(clip.y0), double(clip.x1), double(clip.y1));
@@ -264,10 +325,11 @@ void drawDisc(const Stroke& st, std::int32_t index, const Box& clip, Buffer& buf
     buffer.touch(y, box.x0, box.x1);
     for (std::int64_t x = box.x0; x <= box.x1; ++x) {
       const double px = double(x) + 0.5;
-      const double area = detail::discInPixel(px, py, disc.x, disc.y, disc.r);
-      if (!(area > 0)) continue;
-      const double rho = std::hypot(px - disc.x, py - disc.y);
-      double ink = area * disc.opacity * discProfile(rho, disc.r, st.centreOpacity, st.edgeOpacity);
+      double ink = disc.cap ? capInk(st, disc, px, py)
+                            : detail::discInPixel(px, py, disc.x, disc.y, disc.r) *
+                                  discProfile(std::hypot(px - disc.x, py - disc.y), disc.r, st.centreOpacity, st.edgeOpacity);
+      if (!(ink > 0)) continue;
+      ink *= disc.opacity;
       if (st.texture && ink > 0) {
         const double d = (px - disc.x) * disc.ty - (py - disc.y) * disc.tx;
         ink *= textureAlpha(*st.texture, st.length > 0 ? disc.arc / st.length : 0.5,

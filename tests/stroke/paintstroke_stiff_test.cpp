@@ -60,6 +60,21 @@ TEST(PaintstrokeStiff, CoincidentPointsMakeADot) {
   EXPECT_NEAR(rasterize(three, 10, 10, true).ink(), std::numbers::pi, 1e-3);
 }
 
+TEST(PaintstrokeStiff, ShortStrokesKeepTheirCapsuleInk) {
+  // Strokes shorter than their width: both round caps share pixels; the ink is the capsule's area.
+  for (double length : {1e-6, 0.01, 0.3, 1.0, 2.5, 4.0}) {
+    for (double r : {0.2, 1.0, 2.0}) {
+      for (double angle : {0.0, 0.6, 2.2}) {
+        const double x0 = 16.31, y0 = 15.87;
+        const InkFootprint f = rasterize(
+            line(x0, y0, x0 + length * std::cos(angle), y0 + length * std::sin(angle), r), 32, 32, false);
+        const double expected = 2 * r * length + std::numbers::pi * r * r;
+        EXPECT_NEAR(f.ink(), expected, 0.01 * expected) << "length " << length << " r " << r << " angle " << angle;
+      }
+    }
+  }
+}
+
 TEST(PaintstrokeStiff, ZeroRadiusGivesNoInk) {
   EXPECT_TRUE(rasterize(line(3, 4, 30, 20, 0), 32, 32, true).pixels.empty());
   EXPECT_TRUE(rasterize(line(3, 4, 3, 4, 0), 32, 32, false).pixels.empty());
