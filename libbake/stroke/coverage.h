@@ -7,7 +7,10 @@
 // any row of pixels to exactly the band's width times its density, at every angle and sub-pixel offset:
 // this is what keeps thin strokes from losing or gaining ink (the point-sampled "clamp(0.5 - distance)"
 // rule does not). The end discs use the exact area of a disc inside an axis-aligned square, from the
-// integral of the circle's chord (area = x y inside the circle, else a circular segment).
+// integral of the circle's chord (area = x y inside the circle, else a circular segment). The round caps
+// need the pixel square cut by half-planes (Sutherland-Hodgman on a convex polygon), its area (shoelace)
+// and its area inside a disc: the sum over its edges of the disc's signed area in the triangle
+// (centre, edge), i.e. the triangle's part inside the circle plus circular sectors where it is outside.
 #pragma once
 
 #include <algorithm>

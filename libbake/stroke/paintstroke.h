@@ -32,8 +32,9 @@ struct Paintstroke {
   std::vector<ControlPoint> points;  // at least 2; a single dot is two coincident-ish points
   double centreOpacity = 1;          // breadthwise opacity at the centreline ...
   double edgeOpacity = 1;            // ... and at the edges (linear in |offset| / radius)
-  double taper = 0;                  // fraction of the length over which each end narrows to 0
-  const StrokeTexture* texture = nullptr;  // optional: multiplies the alpha (not owned)
+  double taper = 0;                  // fraction of the length (at most 0.5) over which each end narrows
+                                     // to 0 (smoothstep in arc length: a tapered stretch keeps half its ink)
+  const StrokeTexture* texture = nullptr;  // optional: multiplies the alpha at the pixel centre (not owned)
 };
 
 // A grey or colour image the strokes are drawn into, values in [0, 1], 1 = untouched paper.
@@ -72,8 +73,17 @@ struct RasterOptions {
   double maxDeviation = 0.02;
 };
 
-// Rasterises `stroke` whose coordinates are in pixels of a `width` x `height` image. With wrap on, a
-// pixel's ink is the sum of the stroke's coverage over every periodic copy, clamped to 1.
+// Rasterises `stroke` whose coordinates are in pixels of a `width` x `height` image (pixel (i, j)
+// covers [i, i + 1] x [j, j + 1]). The stroke's shape is the disc of its radius swept along the
+// centreline, so its ends are round; a pixel's alpha is the ink density integrated over the pixel
+// (box filter), exact for straight pieces and the caps, so a straight stroke of length L puts
+// opacity x (2 r L + pi r^2) of ink at any width, angle and sub-pixel position (times (centre + edge)/2
+// on the body with breadthwise opacity). Two coincident points make a dot. With wrap on, a pixel's ink
+// is the sum of the stroke's coverage over every periodic copy, clamped to 1, and a radius beyond
+// max(width, height) counts as that. Negative radii count as 0; opacities and colours are clamped to
+// [0, 1]. A stroke with fewer than two points or a non-finite value, or one longer than about a
+// million pieces, gives an empty footprint. Deterministic; no shared state, so calls may run
+// concurrently.
 InkFootprint rasterize(const Paintstroke& stroke, int width, int height, bool wrap, const RasterOptions& options = {});
 
 // Composites a footprint multiplicatively: value *= 1 - alpha * (1 - colour), per channel (for a

@@ -1,15 +1,16 @@
 // Rasterizing a paintstroke (seed 002 reduced to the image plane; see paintstroke.h). The sampled
 // centreline (spline.cpp) is a chain of short straight pieces. Each pixel whose centre projects onto a
 // piece (extended a little past the piece's ends, so the outside of a bend leaves no gaps) gets the
-// exact box-filtered ink of that piece's band: half-width = the radius interpolated at the projection,
-// density = breadthwise opacity (centre -> edge, section 4.3 of the seed) x the opacity along the
-// length, times the along-length fraction of the pixel inside [0, length] near the two ends (butt
-// ends), times the optional stroke texture. Round caps: a disc of the end radius at each end (and a
-// round join at sharp turns) contributes its exact pixel area. Pieces of one stroke merge by maximum,
-// so the overlaps at their joints do not double the ink; this happens in a small buffer over the
-// stroke's (unwrapped) bounding box. With wrap-around the buffer's cells then fold onto the image by
-// summing the periodic copies, clamped to 1. Work per stroke: the pixels within radius + 1 of each
-// piece, each evaluated with a few multiplications (coverage.h).
+// exact box-filtered ink of that piece's band (coverage.h): half-width = the radius interpolated at the
+// projection, density = breadthwise opacity (centre -> edge, the seed's "breadthwise opacity") x the
+// opacity along the length, times the optional stroke texture. The ends are round: a cap's pixels get
+// the exact area of their part in the band's square end plus their part in the disc's half beyond it
+// (pixel squares clipped by half-planes, areas of polygons and of polygon-disc intersections); a dot
+// is a disc, and sharp turns get a round join. Pieces of one stroke merge by maximum, so the overlaps
+// at their joints do not double the ink; this happens in a small buffer over the stroke's (unwrapped)
+// bounding box, whose cells are then listed in row-major order, or, when periodic copies overlap,
+// folded onto the image by summing, clamped to 1. Work per stroke: the pixels within radius + 1 of
+// each piece, row span by row span.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -200,7 +201,8 @@ Box pieceBox(const Piece& p, double clipX0, double clipY0, double clipX1, double
 }
 
 Box discBox(const Disc& d, double clipX0, double clipY0, double clipX1, double clipY1) {
-  const double reach = d.r + 0.75;
+  // A cap also draws the band's end: pixels up to a half-diagonal along and r + a half-diagonal across.
+  const double reach = d.r + (d.cap ? 1.5 : 0.75);
   const auto [x0, x1] = pixelRange(d.x - reach, d.x + reach, clipX0, clipX1);
   const auto [y0, y1] = pixelRange(d.y - reach, d.y + reach, clipY0, clipY1);
   return {x0, y0, x1, y1};

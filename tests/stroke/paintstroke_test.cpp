@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <thread>
 #include <vector>
 #include <algorithm>
 
@@ -111,7 +112,7 @@ TEST(PaintstrokeRaster, InkIsConservedAtAnyWidthAngleAndOffset) {
         const double x1 = x0 + length * std::cos(angle), y1 = y0 + length * std::sin(angle);
         const InkFootprint f = rasterize(line(x0, y0, x1, y1, radius, 0.8), 200, 200, false);
         const double expected = capsuleInk(length, radius, 0.8);
-        EXPECT_NEAR(f.ink(), expected, 0.02 * expected) << "r " << radius << " angle " << angle << " offset " << offset;
+        EXPECT_NEAR(f.ink(), expected, 1e-4 * expected) << "r " << radius << " angle " << angle << " offset " << offset;
       }
     }
   }
@@ -344,6 +345,39 @@ TEST(PaintstrokeRaster, DeterministicAcrossCalls) {
     EXPECT_EQ(a.pixels[i].x, b.pixels[i].x);
     EXPECT_EQ(a.pixels[i].alpha, b.pixels[i].alpha);
   }
+}
+
+TEST(PaintstrokeRaster, ConcurrentCallsGiveTheSerialResults) {
+  std::vector<Paintstroke> strokes;
+  for (int i = 0; i < 16; ++i) {
+    Paintstroke s;
+    s.points = {point(3.1 * i, 2.7 * i, 0.3 + 0.2 * i), point(40 + 1.3 * i, 9.5 * i, 0.5), point(70.2, 64 - 1.7 * i, 1.1)};
+    s.edgeOpacity = 0.05 * i;
+    s.taper = 0.02 * i;
+    strokes.push_back(s);
+  }
+  std::vector<InkFootprint> serial;
+  for (const auto& s : strokes) serial.push_back(rasterize(s, 64, 64, true));
+  std::vector<std::vector<InkFootprint>> parallel(4);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (int repeat = 0; repeat < 20; ++repeat)
+        for (const auto& s : strokes) parallel[t].push_back(rasterize(s, 64, 64, true));
+    });
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < 4; ++t)
+    for (std::size_t k = 0; k < parallel[t].size(); ++k) {
+      const InkFootprint& a = serial[k % strokes.size()];
+      const InkFootprint& b = parallel[t][k];
+      ASSERT_EQ(a.pixels.size(), b.pixels.size());
+      for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        ASSERT_EQ(a.pixels[i].x, b.pixels[i].x);
+        ASSERT_EQ(a.pixels[i].y, b.pixels[i].y);
+        ASSERT_EQ(a.pixels[i].alpha, b.pixels[i].alpha);
+        ASSERT_EQ(a.pixels[i].colour, b.pixels[i].colour);
+      }
+    }
 }
 
 }  // namespace
