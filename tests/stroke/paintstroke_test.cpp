@@ -259,6 +259,29 @@ TEST(PaintstrokeRaster, WrapKeepsInkAcrossTheBorderAndListsPixelsOnceInOrder) {
   EXPECT_LT(rasterize(straddling, 64, 64, false).ink(), 0.8 * a.ink());
 }
 
+TEST(PaintstrokeRaster, WrapEqualsFoldedCopiesOnALargerCanvas) {
+  // Oracle: draw without wrap on a canvas 5 periods wide and high, shifted by two periods, and fold the
+  // pixels onto the tile by summing (clamped to 1). Covers strokes narrower than, as wide as and wider
+  // than the tile, at its corners.
+  const int w = 16, h = 12;
+  std::vector<Paintstroke> cases;
+  cases.push_back(line(14.2, 10.7, 19.9, 13.1, 0.8));                   // crosses a corner
+  cases.push_back(line(0.3, 5.5, 15.7, 5.9, 1.0, 0.5));                 // about as wide as the tile
+  cases.push_back(line(-3.3, 2.2, 30.1, 9.6, 0.6, 0.3));                // two periods long
+  Paintstroke curve;
+  curve.points = {point(2, 2, 1.5, 0.2), point(20, 6, 0.7, 0.4), point(9, 15, 1.1, 0.3), point(-4, 9, 0.4, 0.6)};
+  cases.push_back(curve);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    Paintstroke shifted = cases[c];
+    for (auto& p : shifted.points) p.x += 2 * w, p.y += 2 * h;
+    std::vector<double> folded(std::size_t(w * h), 0.0);
+    for (const auto& p : rasterize(shifted, 5 * w, 5 * h, false).pixels) folded[std::size_t((p.y % h) * w + p.x % w)] += p.alpha;
+    std::vector<double> wrapped(std::size_t(w * h), 0.0);
+    for (const auto& p : rasterize(cases[c], w, h, true).pixels) wrapped[std::size_t(p.y * w + p.x)] = p.alpha;
+    for (int k = 0; k < w * h; ++k) EXPECT_NEAR(wrapped[std::size_t(k)], std::min(folded[std::size_t(k)], 1.0), 1e-5) << c << ": " << k;
+  }
+}
+
 TEST(PaintstrokeRaster, WrapSumsOverlappingCopies) {
   // A horizontal stroke 1.5 periods long at half opacity, radius 0.25 centred in a row: the overlapped
   // part of the row gets 2 x 0.25, the rest 0.25.
