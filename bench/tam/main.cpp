@@ -8,6 +8,7 @@
 // progress on stderr.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -31,7 +32,17 @@ struct Options {
   std::uint64_t seed = 1;
   std::string out = "build-bench/results";
   bool detail = false;
+  std::string images;  // folder for PGM images of the last build
 };
+
+// Binary PGM of a brightness image.
+void writePgm(const std::string& path, const bake::stroke::Raster& image) {
+  std::ofstream out(path, std::ios::binary);
+  out << "P5\n" << image.width << ' ' << image.height << "\n255\n";
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) out.put(char(static_cast<unsigned char>(std::lround(255.0f * image.at(x, y)))));
+  }
+}
 
 Style benchStyle(int candidates, int resolution, std::uint64_t seed) {
   Style style;
@@ -56,6 +67,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "construction seed");
   app.add_option("--out", options.out, "output folder");
   app.add_flag("--detail", options.detail, "also write every image's figures (images.csv)");
+  app.add_option("--images", options.images, "write the stroke images of each build as PGM into this folder");
   bool quick = false;
   app.add_flag("--quick", quick, "K 1,4,16 at 64,128,256, one repeat");
   CLI11_PARSE(app, argc, argv);
@@ -72,7 +84,7 @@ int main(int argc, char** argv) {
   if (options.detail) {
     images.open(options.out + "/images.csv");
     images << "candidates,resolution,tone,mip,side,target,darkness,tone_error,tone_tolerance,cv,low_frequency_power,"
-              "uniformity_checked\n";
+              "strokes,uniformity_checked\n";
   }
   for (int resolution : options.resolutions) {
     for (int k : options.candidates) {
@@ -101,11 +113,21 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "K %2d  %4d^2  %7.3f s  tone error %.4f (%.2f of tolerance)  cv %.3f  lfp %.4f  (all: cv %.3f lfp %.4f)  %zu strokes\n",
                    k, resolution, seconds, q.maxToneError, q.maxToneErrorOverTolerance, q.maxInkVariation,
                    q.maxLowFrequencyPower, q.maxInkVariationAll, q.maxLowFrequencyPowerAll, tam.strokes.size());
+      if (!options.images.empty()) {
+        std::filesystem::create_directories(options.images);
+        for (int t = 0; t < tam.tones; ++t) {
+          for (int m = 0; m < tam.strokeLevels; ++m) {
+            writePgm(options.images + "/k" + std::to_string(k) + "_r" + std::to_string(resolution) + "_t" + std::to_string(t) +
+                         "_m" + std::to_string(m) + ".pgm",
+                     tam.images[std::size_t(t)][std::size_t(m)]);
+          }
+        }
+      }
       if (options.detail) {
         for (const ImageQuality& iq : q.images) {
           images << k << ',' << resolution << ',' << iq.tone << ',' << iq.mip << ',' << iq.side << ',' << iq.target << ','
                  << iq.darkness << ',' << iq.toneError << ',' << iq.toneTolerance << ',' << iq.inkVariation << ','
-                 << iq.lowFrequencyPower << ',' << (iq.uniformityChecked ? 1 : 0) << '\n';
+                 << iq.lowFrequencyPower << ',' << iq.strokes << ',' << (iq.uniformityChecked ? 1 : 0) << '\n';
         }
       }
     }

@@ -63,6 +63,25 @@ void blurLine(const float* in, float* out, int count, std::size_t stride, const 
   }
 }
 
+// The cells' mean darkness, smoothed by [1 2 1] / 4 along both axes (wrapping).
+void updateWide(LevelImage& level) {
+  const int c = level.cells;
+  const double area = double(1 << level.cellShift) * double(1 << level.cellShift);
+  std::vector<double> rows(level.cellDarkness.size());
+  for (int y = 0; y < c; ++y) {
+    for (int x = 0; x < c; ++x) {
+      const auto at = [&](int i) { return level.cellDarkness[std::size_t(y) * std::size_t(c) + std::size_t(wrapIndex(i, c))]; };
+      rows[std::size_t(y) * std::size_t(c) + std::size_t(x)] = 0.25 * (at(x - 1) + 2 * at(x) + at(x + 1)) / area;
+    }
+  }
+  for (int y = 0; y < c; ++y) {
+    for (int x = 0; x < c; ++x) {
+      const auto at = [&](int j) { return rows[std::size_t(wrapIndex(j, c)) * std::size_t(c) + std::size_t(x)]; };
+      level.wide[std::size_t(y) * std::size_t(c) + std::size_t(x)] = float(0.25 * (at(y - 1) + 2 * at(y) + at(y + 1)));
+    }
+  }
+}
+
 }  // namespace
 
 Kernel gaussianKernel(double sigma) {
@@ -88,17 +107,23 @@ LevelImage blankLevel(int side, bool coloured) {
   level.brightness = stroke::Raster(side, side, 1, true);
   if (coloured) level.colour = stroke::Raster(side, side, 3, true);
   level.blurred.assign(std::size_t(side) * std::size_t(side), 0.0f);
+  level.cells = std::min(side, 16);
+  while ((level.cells << level.cellShift) < side) ++level.cellShift;
+  level.cellDarkness.assign(std::size_t(level.cells) * std::size_t(level.cells), 0.0);
+  level.wide.assign(level.cellDarkness.size(), 0.0f);
   return level;
 }
 
 Progress measureProgress(const stroke::InkFootprint& footprint, const LevelImage& level, double target) {
   Progress progress;
-  const float t = float(target);
+  const float t = float(target), spread = float(kSpreadWeight / target);
   for (const stroke::InkFootprint::Pixel& p : footprint.pixels) {
     const std::size_t index = std::size_t(p.y) * std::size_t(level.side) + std::size_t(p.x);
     const float d = level.brightness.values[index] * p.alpha;
     const float blurred = level.blurred[index];
-    progress.gain += double(std::min(t, blurred + d) - std::min(t, blurred));
+    const float wide = level.wide[std::size_t(p.y >> level.cellShift) * std::size_t(level.cells) + std::size_t(p.x >> level.cellShift)];
+    const float weight = std::max(0.0f, 1.0f + spread * (t - wide));
+    progress.gain += double((std::min(t, blurred + d) - std::min(t, blurred)) * weight);
     progress.ink += double(p.alpha);
     progress.darkening += double(d);
   }
@@ -125,12 +150,14 @@ void applyFootprint(const stroke::InkFootprint& footprint, const Kernel& kernel,
     const float d = b * p.alpha;
     b -= d;  // b * (1 - alpha)
     darkening += double(d);
+    level.cellDarkness[std::size_t(p.y >> level.cellShift) * std::size_t(level.cells) + std::size_t(p.x >> level.cellShift)] += double(d);
     const std::size_t lx = std::size_t(wrapIndex(p.x - sx.origin, side));
     const std::size_t ly = std::size_t(wrapIndex(p.y - sy.origin, side));
     added[ly * wx + lx] = d;
   }
   if (level.colour.channels == 3) stroke::composite(footprint, level.colour);
   level.darknessSum += darkening;
+  updateWide(level);
 
   for (std::size_t y = 0; y < wy; ++y) blurLine(&added[y * wx], &rows[y * wx], int(wx), 1, kernel, sx.periodic);
   for (std::size_t x = 0; x < wx; ++x) blurLine(&rows[x], &added[x], int(wy), wx, kernel, sy.periodic);

@@ -44,13 +44,21 @@ struct LevelImage {
   stroke::Raster colour;       // 3 channels with coloured ink, else empty
   std::vector<float> blurred;  // blur of (1 - brightness), side x side, wrapping
   double darknessSum = 0;      // sum over texels of (1 - brightness)
+  // Coarse grid of cells x cells (cells of 8 texels, at most 16 per side): darkness sum per cell, and
+  // the cells' mean darkness smoothed over their neighbours ([1 2 1] / 4 both ways, wrapping).
+  int cells = 1, cellShift = 0;  // cell of texel x: x >> cellShift
+  std::vector<double> cellDarkness;
+  std::vector<float> wide;
   double meanDarkness() const { return darknessSum / (double(side) * double(side)); }
 };
 LevelImage blankLevel(int side, bool coloured);
 
 // A candidate's effect on one level: `gain` = sum over its texels of min(t, D + d) - min(t, D) with D
 // the blurred darkness, d the darkness it adds and t the target (progress towards the tone, none
-// where the neighbourhood is already dark enough); `ink` = its alpha sum; `darkening` = sum of d.
+// where the neighbourhood is already dark enough), each texel's share weighted by
+// max(0, 1 + kSpreadWeight (t - W) / t) with W the smoothed darkness of its coarse cell (cells behind
+// the target count more); `ink` = its alpha sum; `darkening` = sum of d.
+inline constexpr double kSpreadWeight = 16.0;
 struct Progress {
   double gain = 0, ink = 0, darkening = 0;
 };

@@ -136,6 +136,11 @@ Quality measureQuality(const Tam& tam) {
   Quality q;
   std::vector<std::vector<double>> darkness(std::size_t(tam.tones), std::vector<double>(std::size_t(tam.strokeLevels), 0.0));
   std::vector<ImageQuality> images(std::size_t(tam.tones) * std::size_t(tam.strokeLevels));
+  for (const PlacedStroke& placed : tam.strokes) {  // in every darker tone and finer level
+    for (int t = placed.tone; t < tam.tones; ++t) {
+      for (int mip = 0; mip < tam.strokeLevels - placed.level; ++mip) ++images[std::size_t(t * tam.strokeLevels + mip)].strokes;
+    }
+  }
   parallelFor(images.size(), 0, [&](std::size_t i) {
     const int t = int(i) / tam.strokeLevels, mip = int(i) % tam.strokeLevels;
     const stroke::Raster& image = tam.images[std::size_t(t)][std::size_t(mip)];
@@ -149,7 +154,7 @@ Quality measureQuality(const Tam& tam) {
     iq.toneTolerance = std::max(0.0025, 0.8 / double(iq.side));
     iq.inkVariation = inkVariation(image);
     iq.lowFrequencyPower = lowFrequencyPower(image);
-    iq.uniformityChecked = iq.side >= kUniformityMinSide && iq.target >= kUniformityMinDarkness;
+    iq.uniformityChecked = iq.side >= kUniformityMinSide && iq.strokes >= kUniformityMinStrokes;
   }, 1);
   for (const ImageQuality& iq : images) {
     darkness[std::size_t(iq.tone)][std::size_t(iq.mip)] = iq.darkness;
@@ -189,6 +194,12 @@ Quality measureQuality(const Tam& tam) {
   return q;
 }
 
+std::string uniformityScope() {
+  return "stroke images of side >= " + std::to_string(kUniformityMinSide) + " holding >= " +
+         std::to_string(kUniformityMinStrokes) + " strokes (" + std::to_string(kUniformityMinStrokes / 16) +
+         " per quarter-tile window)";
+}
+
 nlohmann::json Quality::toJson() const {
   nlohmann::json out;
   out["maxToneError"] = maxToneError;
@@ -201,12 +212,12 @@ nlohmann::json Quality::toJson() const {
   out["maxLowFrequencyPower"] = maxLowFrequencyPower;
   out["maxInkVariationAll"] = maxInkVariationAll;
   out["maxLowFrequencyPowerAll"] = maxLowFrequencyPowerAll;
-  out["uniformityApplies"] = {{"minSide", kUniformityMinSide}, {"minDarkness", kUniformityMinDarkness}};
+  out["uniformityApplies"] = {{"minSide", kUniformityMinSide}, {"minStrokes", kUniformityMinStrokes}};
   nlohmann::json list = nlohmann::json::array();
   for (const ImageQuality& iq : images) {
     list.push_back({{"tone", iq.tone}, {"mip", iq.mip}, {"side", iq.side}, {"target", iq.target},
                     {"darkness", iq.darkness}, {"toneError", iq.toneError}, {"toneTolerance", iq.toneTolerance},
-                    {"inkVariation", iq.inkVariation}, {"lowFrequencyPower", iq.lowFrequencyPower},
+                    {"inkVariation", iq.inkVariation}, {"lowFrequencyPower", iq.lowFrequencyPower}, {"strokes", iq.strokes},
                     {"uniformityChecked", iq.uniformityChecked}});
   }
   out["images"] = std::move(list);

@@ -7,14 +7,20 @@
 // frequencies below 4 cycles per tile ("low-frequency power").
 //
 // Where the uniformity targets apply (CV <= 0.08, low-frequency power <= 3 %): to stroke images of
-// side >= 64 whose target darkness is >= kUniformityMinDarkness. The reason: a quarter-tile window of
-// a light tone holds only a few strokes (tone 0.15 at 256^2 with strokes 0.3-0.5 tile long and
-// 1-1.5 px wide: about 60 strokes per tile, each crossing 2-3 windows), so its ink varies from
-// window to window by whole strokes whatever the placement; and below 64 texels a window is 16 texels
-// or less, narrower than one stroke. Every image's figures are still measured and reported
-// (ImageQuality), and maxInkVariationAll / maxLowFrequencyPowerAll give the maxima over all of them.
+// side >= kUniformityMinSide (128) holding >= kUniformityMinStrokes (128) strokes, i.e. at least 8
+// strokes per quarter-tile window on average. The reasons, measured on the default style
+// (bench/tam): (1) the window CV counts whole strokes: with n strokes per window the ink of a window
+// varies by a fraction of a stroke at best, and below ~8 per window (tone 0.15 at 256^2, tone 0.3
+// at 128^2: ~6 per window) evenly spread strokes still give a CV of 0.08-0.12 depending on the seed;
+// (2) at 64 texels the band below 4 cycles per tile is 48 of the 4095 non-DC frequencies, white
+// noise alone puts 1.2 % of its power there, and strokes 0.3-0.5 tile long keep most of their power at
+// |f| <= 1 / length along their direction for every frequency across it, so even evenly spread
+// hatching at 64^2 measures 3-6 %. Every image's figures are still measured and reported
+// (ImageQuality, with its stroke count), and maxInkVariationAll / maxLowFrequencyPowerAll are the
+// maxima over all stroke images.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -30,11 +36,18 @@ struct ImageQuality {
   double toneTolerance = 0;        // max(0.0025, 0.8 / side)
   double inkVariation = 0;         // coefficient of variation over quarter-tile windows
   double lowFrequencyPower = 0;    // share of non-DC power below 4 cycles per tile
-  bool uniformityChecked = false;  // side >= 64 and target >= kUniformityMinDarkness
+  long long strokes = 0;           // strokes drawn in this image
+  bool uniformityChecked = false;  // side >= kUniformityMinSide and strokes >= kUniformityMinStrokes
 };
 
-inline constexpr int kUniformityMinSide = 64;
-inline constexpr double kUniformityMinDarkness = 0.3;
+inline constexpr int kUniformityMinSide = 128;
+inline constexpr long long kUniformityMinStrokes = 128;
+// The scope above in words, for reports: "stroke images of side >= 128 holding >= 128 strokes ...".
+std::string uniformityScope();
+// Earlier scope by darkness, kept so that older callers compile: the scope no longer depends on the
+// tone (0: every tone), use uniformityScope().
+[[deprecated("the uniformity scope is by side and stroke count: use uniformityScope()")]]
+inline constexpr double kUniformityMinDarkness = 0.0;
 
 struct Quality {
   std::vector<ImageQuality> images;  // stroke levels only (box-filtered mips are exact by construction)

@@ -142,13 +142,23 @@ TEST(TamQuality, FindsAStrokeMissingFromAFinerLevel) {
   EXPECT_EQ(measureQuality(tam).nestingViolationsResolution, 0);
 }
 
-TEST(TamQuality, UniformityTargetsCoverTheDarkerTonesFromSixtyFourTexels) {
-  Tam tam = blankTam(4, 128, 3);  // targets 0.1 .. 0.4, sides 128, 64, 32
+TEST(TamQuality, UniformityTargetsCoverLargeImagesWithManyStrokes) {
+  Tam tam = blankTam(4, 256, 3);  // sides 256, 128, 64
+  // 100 strokes of tone 0 at level 0 (in every image), 40 of tone 2 at level 1 (tones 2-3, 256 and 128).
+  PlacedStroke placed;
+  placed.stroke.points.resize(2);
+  for (int i = 0; i < 100; ++i) tam.strokes.push_back(placed);
+  placed.tone = 2;
+  placed.level = 1;
+  for (int i = 0; i < 40; ++i) tam.strokes.push_back(placed);
   const Quality q = measureQuality(tam);
   ASSERT_EQ(q.images.size(), 12u);
   for (const ImageQuality& iq : q.images) {
-    EXPECT_EQ(iq.uniformityChecked, iq.side >= kUniformityMinSide && iq.target >= kUniformityMinDarkness);
+    const long long expected = 100 + (iq.tone >= 2 && iq.side >= 128 ? 40 : 0);
+    EXPECT_EQ(iq.strokes, expected) << iq.tone << " " << iq.side;
+    EXPECT_EQ(iq.uniformityChecked, iq.side >= 128 && expected >= 128);
   }
+  EXPECT_NE(uniformityScope().find("128"), std::string::npos);
   const nlohmann::json json = q.toJson();
   for (const char* key : {"maxToneError", "nestingViolationsTone", "nestingViolationsResolution", "monotoneTones",
                           "meanLevelDifference", "maxInkVariation", "maxLowFrequencyPower", "images"}) {
