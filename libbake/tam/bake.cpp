@@ -163,8 +163,7 @@ void reportQuality(const BakeState& state, Report& report) {
   int uniformityImages = 0;
   for (const ImageQuality& image : q.images) uniformityImages += image.uniformityChecked ? 1 : 0;
   report.addAccuracy("ink uniformity: coefficient of variation of darkness over the 16 quarter-tile windows",
-                     "evenly spread ink: target <= " + number(kInkVariationTarget) + " on stroke images of side >= " +
-                         std::to_string(kUniformityMinSide) + " and target darkness >= " + number(kUniformityMinDarkness),
+                     "evenly spread ink: target <= " + number(kInkVariationTarget) + " on " + uniformityScope(),
                      {{"maxInkVariation", q.maxInkVariation},
                       {"target", kInkVariationTarget},
                       {"imagesChecked", uniformityImages},

@@ -1,9 +1,9 @@
 // The TAM and its threshold texture as KTX2 files (formats/tam.md). Texel values are paper
 // brightness quantised to 8 bits (round(255 v)). The TAM is a 2D array, one layer per tone, light to
 // dark, with the full mip chain (levels below the stroke levels are the builder's box-filtered ones).
-// Black ink gives R8; coloured ink gives RGBA8 with RGB the composited colour and A the brightness,
-// taken as the mean of R, G and B (the same reduction the rasterizer uses to composite coloured ink
-// into a one-channel image). The `BAKE_tam` key/value entry carries the tone values and the
+// Black ink gives R8; coloured ink gives RGBA8 with RGB the composited colour (the builder's colour
+// images) and A the brightness (its one-channel images: the ink as if black, whose darkness is what
+// the tones target). The `BAKE_tam` key/value entry carries the tone values and the
 // construction's parameters as JSON.
 #include <algorithm>
 #include <cmath>
@@ -22,11 +22,13 @@ std::uint8_t quantise(float v) {
   return std::uint8_t(std::lround(clamped * 255.0f));
 }
 
-Status checkImage(const stroke::Raster& image, int side, int tone, int mip) {
-  if (image.width != side || image.height != side || image.values.size() != std::size_t(side) * side * image.channels)
+Status checkImage(const stroke::Raster& image, int side, int channels, int tone, int mip) {
+  if (image.width != side || image.height != side || image.channels != channels ||
+      image.values.size() != std::size_t(side) * side * std::size_t(channels))
     return internalError("the TAM image of tone " + std::to_string(tone) + ", mip " + std::to_string(mip) + " is " +
-                         std::to_string(image.width) + " x " + std::to_string(image.height) + ", expected " +
-                         std::to_string(side) + " x " + std::to_string(side));
+                         std::to_string(image.width) + " x " + std::to_string(image.height) + " x " +
+                         std::to_string(image.channels) + ", expected " + std::to_string(side) + " x " +
+                         std::to_string(side) + " x " + std::to_string(channels));
   return {};
 }
 
@@ -51,29 +53,26 @@ Result<ktx2::Texture> tamTexture(const Tam& tam, const Style& style) {
   texture.format = tam.coloured ? ktx2::Format::RGBA8 : ktx2::Format::R8;
   texture.width = texture.height = std::uint32_t(tam.resolution);
   texture.layers = std::uint32_t(tam.tones);
-  const int channels = tam.coloured ? 3 : 1;
+  if (tam.coloured && tam.colourImages.size() != tam.images.size()) return internalError("the coloured TAM lacks its colour images");
   for (int mip = 0; mip < tam.mipLevels; ++mip) {
     const int side = std::max(1, tam.resolution >> mip);
+    const std::size_t texels = std::size_t(side) * side;
     std::vector<std::uint8_t> level;
-    level.reserve(std::size_t(side) * side * tam.tones * (tam.coloured ? 4 : 1));
+    level.reserve(texels * tam.tones * (tam.coloured ? 4 : 1));
     for (int tone = 0; tone < tam.tones; ++tone) {
       if (int(tam.images[tone].size()) != tam.mipLevels) return internalError("tone " + std::to_string(tone) + " lacks mip levels");
       const stroke::Raster& image = tam.images[tone][mip];
-      BAKE_RETURN_IF_ERROR(checkImage(image, side, tone, mip));
-      if (image.channels != channels)
-        return internalError("the TAM image of tone " + std::to_string(tone) + " has " + std::to_string(image.channels) +
-                             " channels, expected " + std::to_string(channels));
-      const std::size_t texels = std::size_t(side) * side;
+      BAKE_RETURN_IF_ERROR(checkImage(image, side, 1, tone, mip));
+      if (!tam.coloured) {
+        for (std::size_t i = 0; i < texels; ++i) level.push_back(quantise(image.values[i]));
+        continue;
+      }
+      if (int(tam.colourImages[tone].size()) != tam.mipLevels) return internalError("tone " + std::to_string(tone) + " lacks colour mip levels");
+      const stroke::Raster& colour = tam.colourImages[tone][mip];
+      BAKE_RETURN_IF_ERROR(checkImage(colour, side, 3, tone, mip));
       for (std::size_t i = 0; i < texels; ++i) {
-        if (!tam.coloured) {
-          level.push_back(quantise(image.values[i]));
-          continue;
-        }
-        const float* rgb = &image.values[i * 3];
-        level.push_back(quantise(rgb[0]));
-        level.push_back(quantise(rgb[1]));
-        level.push_back(quantise(rgb[2]));
-        level.push_back(quantise((rgb[0] + rgb[1] + rgb[2]) / 3.0f));
+        for (int c = 0; c < 3; ++c) level.push_back(quantise(colour.values[i * 3 + c]));
+        level.push_back(quantise(image.values[i]));
       }
     }
     texture.levels.push_back(std::move(level));
@@ -93,9 +92,9 @@ Result<ktx2::Texture> thresholdKtx(const Tam& tam, const Style& style) {
   for (int mip = 0; mip < tam.mipLevels; ++mip) {
     const int side = std::max(1, tam.resolution >> mip);
     const stroke::Raster& image = thresholds[mip];
-    BAKE_RETURN_IF_ERROR(checkImage(image, side, 0, mip));
+    BAKE_RETURN_IF_ERROR(checkImage(image, side, 1, 0, mip));
     std::vector<std::uint8_t> level(std::size_t(side) * side);
-    for (std::size_t i = 0; i < level.size(); ++i) level[i] = quantise(image.values[i * image.channels]);
+    for (std::size_t i = 0; i < level.size(); ++i) level[i] = quantise(image.values[i]);
     texture.levels.push_back(std::move(level));
   }
   texture.setText(fmt::kMetadataKey, tamMetadata(tam, style, true).dump());

@@ -165,6 +165,41 @@ TEST(TamBake, ZstdKeepsTheTexelsAndThreadsKeepTheBytes) {
   EXPECT_EQ(test::readAll(plain.output), test::readAll(again.output));
 }
 
+TEST(TamBake, ColouredInkGivesRgbaWithTheBrightnessInAlpha) {
+  const fs::path dir = test::freshTempDir("tam_bake_colour");
+  Settings settings = smallSettings(dir);
+  settings.style = dataFile("image.json").string();  // image strokes, ink (0.1, 0.2, 0.6)
+  const Status status = runQuietly(settings);
+  ASSERT_TRUE(status.isOk()) << status.describe();
+  Result<ktx2::Texture> texture = ktx2::read(settings.output);
+  ASSERT_TRUE(texture.isOk()) << texture.status().describe();
+  EXPECT_EQ(texture->format, ktx2::Format::RGBA8);
+  EXPECT_EQ(texture->layers, 2u);
+  EXPECT_EQ(texture->width, 32u);
+  EXPECT_EQ(texture->levels.size(), 6u);
+  const json metadata = json::parse(texture->text("BAKE_tam"));
+  EXPECT_EQ(metadata["colour"], true);
+  EXPECT_EQ(metadata["style"], "image");
+  // Untouched paper is white in every channel; elsewhere the blue ink absorbs more red than blue.
+  const std::vector<std::uint8_t>& level = texture->levels[0];
+  double redInk = 0, blueInk = 0, darkness = 0;
+  for (std::size_t i = 0; i < level.size(); i += 4) {
+    if (level[i + 3] == 255) {
+      EXPECT_EQ(level[i], 255);
+      EXPECT_EQ(level[i + 2], 255);
+    }
+    redInk += 255 - level[i];
+    blueInk += 255 - level[i + 2];
+    darkness += 255 - level[i + 3];
+  }
+  EXPECT_GT(redInk, blueInk);
+  EXPECT_GT(darkness, 0);
+  const json parsed = test::runNodeChecker("check_ktx2.mjs", {settings.output});
+  ASSERT_TRUE(parsed.is_object());
+  EXPECT_EQ(parsed["vkFormat"], ktx2::vkFormatOf(ktx2::Format::RGBA8));
+  EXPECT_EQ(parsed["layerCount"], 2);
+}
+
 TEST(TamBake, SeedOverrideChangesTheStrokes) {
   const fs::path dir = test::freshTempDir("tam_bake_seed");
   Settings first = smallSettings(dir);
