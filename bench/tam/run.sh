@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Builds bench-tam (BUILD_TYPE, default Release; -DBAKE_BUILD_BENCH=ON; only this target) into BUILD_DIR (default
+# build-bench), runs it and plots tam.png: tone error and ink uniformity against construction time,
+# over K (1 2 4 8 16 32) and the finest resolution (64 128 256 512). Arguments go to bench-tam
+# (--quick, --candidates, --resolutions, --repeats, --threads (default 2), --seed, --detail,
+# --images DIR, --out DIR; default BUILD_DIR/results).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="${BUILD_DIR:-$here/build-bench}"
+out="$build/results"
+args=("$@")
+out_given=0
+for ((i = 0; i < ${#args[@]}; ++i)); do
+  if [[ "${args[i]}" == "--out" && $((i + 1)) -lt ${#args[@]} ]]; then out="${args[i + 1]}"; out_given=1; fi
+  if [[ "${args[i]}" == --out=* ]]; then out="${args[i]#--out=}"; out_given=1; fi
+done
+[[ $out_given == 1 ]] || args=(--out "$out" "${args[@]}")
+cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" -DBAKE_BUILD_BENCH=ON >/dev/null
+cmake --build "$build" --target bench-tam --parallel "$(nproc)"
+mkdir -p "$out"
+"$build/bench/tam/bench-tam" "${args[@]}"
+
+# The headline figures: per resolution and K, the median time and the quality figures.
+{
+  echo "median seconds / max tone error (x tolerance) / max CV / max low-frequency power (scoped images; all images):"
+  # No image of a 64^2 map is in the uniformity scope (side >= 128): "-".
+  awk -F, 'NR > 1 { cv = $6 > 0 ? sprintf("%.3f", $6) : "-"; lfp = $7 > 0 ? sprintf("%.4f", $7) : "-";
+                    printf "  %4d^2  K %2d  %7.3f s  %.4f (%.2f)  cv %5s  lfp %6s  (all: cv %.3f lfp %.4f)  %d strokes\n",
+                    $2, $1, $3, $4, $5, cv, lfp, $8, $9, $11 }' "$out/tam.csv"
+} | tee "$out/summary.txt"
+
+if command -v gnuplot >/dev/null; then
+  resolutions="$(awk -F, 'NR > 1 { print $2 }' "$out/tam.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
+  gnuplot -e "dir='$out'; resolutions='$resolutions'" "$here/bench/tam/plot.gp"
+  echo "plot: $out/tam.png"
+else
+  echo "gnuplot not found (apt-get install gnuplot-nox): no plot" >&2
+fi
