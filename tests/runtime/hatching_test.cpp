@@ -402,16 +402,38 @@ TEST_F(HatchingFrames, LightMovingInHalfDegreeStepsNeverPopsOnAPlane) {
   EXPECT_GT(meanFirst - meanLast, 0.2) << meanFirst << " -> " << meanLast;
 }
 
+// Mean grey of each 8 x 8 block of pixels: the picture at the scale of tone, not of single strokes.
+std::vector<double> blockMeans(const Image& image) {
+  constexpr int kBlock = 8;
+  std::vector<double> means;
+  for (int by = 0; by < kSize; by += kBlock) {
+    for (int bx = 0; bx < kSize; bx += kBlock) {
+      double sum = 0;
+      for (int y = by; y < by + kBlock; ++y)
+        for (int x = bx; x < bx + kBlock; ++x) sum += grey(image, x, y);
+      means.push_back(sum / (kBlock * kBlock));
+    }
+  }
+  return means;
+}
+
 // On a sphere the strokes also turn with the light (B follows it), so single pixels may flip; the
-// picture as a whole must still change progressively: every step's mean change small, and no step's
-// change more than 3 times the median step's (no frame-to-frame jump).
+// picture must still change progressively: at the scale of 8 x 8 blocks (where turning strokes keep
+// their mean) no block changes by more than 0.03 per 0.5 degree step, every step's mean change is
+// small, and no step's change is more than 3 times the median step's (no frame-to-frame jump).
+// Measured: worst block change 0.007; the same renderer snapping to the nearest tone gives 0.08.
 TEST_F(HatchingFrames, LightMovingInHalfDegreeStepsChangesTheSphereProgressively) {
   load(hatchingPackage(meshPrimitive(shape("sphere", 40))), "sphere_steps");
   std::vector<double> means;
+  double worstBlock = 0;
   std::optional<Image> previous;
   for (int step = 0; step <= 40; ++step) {
     Image image = frame(lightAt(20 + 0.5 * step, 35));
-    if (previous) means.push_back(change(*previous, image).mean);
+    if (previous) {
+      means.push_back(change(*previous, image).mean);
+      const std::vector<double> a = blockMeans(*previous), b = blockMeans(image);
+      for (std::size_t i = 0; i < a.size(); ++i) worstBlock = std::max(worstBlock, std::fabs(a[i] - b[i]));
+    }
     previous = std::move(image);
   }
   std::vector<double> sorted = means;
@@ -419,9 +441,13 @@ TEST_F(HatchingFrames, LightMovingInHalfDegreeStepsChangesTheSphereProgressively
   const double median = sorted[sorted.size() / 2], worst = sorted.back();
   ::testing::Test::RecordProperty("medianMeanStep", std::to_string(median));
   ::testing::Test::RecordProperty("worstMeanStep", std::to_string(worst));
+  ::testing::Test::RecordProperty("worstBlockStep", std::to_string(worstBlock));
+  std::printf("sphere steps: median mean change %.4f, worst %.4f, worst 8x8 block change %.4f\n", median, worst,
+              worstBlock);
   EXPECT_GT(median, 0.0) << "the light moved, the picture must change";
   EXPECT_LT(worst, 0.02);
   EXPECT_LT(worst, 3 * median + 1e-3) << "median " << median;
+  EXPECT_LT(worstBlock, 0.03);
 }
 
 // Darker where the light grazes. The tones are darkness targets and darkness = 1 - Lambert, so the
