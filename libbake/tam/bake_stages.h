@@ -28,6 +28,8 @@ struct BakeState {
   std::size_t normalsComputed = 0;    // vertices whose normal was computed (the mesh had none)
   Tam tam;
   Quality quality;
+  // Mean darkness of each stroke level's layers as stored (8-bit): storedDarkness[level][tone].
+  std::vector<std::vector<double>> storedDarkness;
   std::vector<std::uint8_t> tamBytes;        // the encoded TAM (.ktx2)
   std::vector<std::uint8_t> thresholdBytes;  // the encoded threshold texture, when asked for
 };
@@ -37,6 +39,9 @@ nlohmann::json tamMetadata(const Tam& tam, const Style& style, bool threshold);
 // The TAM as a KTX2 2D array: one layer per tone, the full mip chain, R8 (black ink) or RGBA8
 // (coloured ink: RGB the composited colour, A the brightness).
 Result<ktx2::Texture> tamTexture(const Tam& tam, const Style& style);
+// Mean darkness (1 - brightness) of every layer of one level of an encoded TAM, from its R channel
+// (R8) or its A channel (RGBA8): what the runtime will sample, quantisation included.
+std::vector<double> storedDarkness(const ktx2::Texture& texture, std::uint32_t level);
 // The threshold texture (build.h thresholdTexture) as a KTX2 2D R8 texture with the same mip chain.
 Result<ktx2::Texture> thresholdKtx(const Tam& tam, const Style& style);
 

@@ -82,6 +82,20 @@ Result<ktx2::Texture> tamTexture(const Tam& tam, const Style& style) {
   return texture;
 }
 
+std::vector<double> storedDarkness(const ktx2::Texture& texture, std::uint32_t level) {
+  const std::size_t texels = std::size_t(texture.levelWidth(level)) * texture.levelHeight(level);
+  const std::size_t stride = texture.format == ktx2::Format::RGBA8 ? 4 : 1;
+  const std::size_t offset = stride - 1;  // R of R8, A of RGBA8
+  std::vector<double> darkness;
+  const std::vector<std::uint8_t>& bytes = texture.levels[level];
+  for (std::uint32_t layer = 0; layer < texture.layerCount(); ++layer) {
+    std::uint64_t sum = 0;
+    for (std::size_t i = 0; i < texels; ++i) sum += bytes[(layer * texels + i) * stride + offset];
+    darkness.push_back(1.0 - double(sum) / (255.0 * double(texels)));
+  }
+  return darkness;
+}
+
 Result<ktx2::Texture> thresholdKtx(const Tam& tam, const Style& style) {
   const std::vector<stroke::Raster> thresholds = thresholdTexture(tam);
   if (int(thresholds.size()) != tam.mipLevels) return internalError("the threshold texture lacks mip levels");

@@ -209,6 +209,8 @@ Result<stroke::StrokeTexture> loadStrokeImage(const std::string& path, const std
       texture.alpha[std::size_t(y) * image.width + x] = std::clamp(a, 0.0f, 1.0f);
     }
   }
+  if (*std::max_element(texture.alpha.begin(), texture.alpha.end()) <= 0.0f)
+    return invalidInput("the stroke image holds no ink (alpha 0, or white without alpha, everywhere)", {path, ""});
   return texture;
 }
 
@@ -231,6 +233,9 @@ Status readStroke(const ObjectReader& root, const std::string& baseDir, bool loa
   BAKE_RETURN_IF_ERROR(reader.number("centreOpacity", s.centreOpacity, 0, 1));
   BAKE_RETURN_IF_ERROR(reader.number("edgeOpacity", s.edgeOpacity, 0, 1));
   BAKE_RETURN_IF_ERROR(reader.number("taper", s.taper, 0, 0.5));
+  if (s.centreOpacity == 0 && s.edgeOpacity == 0)
+    return reader.error(reader.pointer(reader.has("centreOpacity") ? "centreOpacity" : "edgeOpacity"),
+                        "centreOpacity and edgeOpacity are both 0: the strokes would carry no ink");
   if (reader.has("colour")) {
     const json& colour = reader.at("colour");
     if (!colour.is_array() || colour.size() != 3) return reader.error(reader.pointer("colour"), "must be [R, G, B]");

@@ -294,6 +294,9 @@ TEST(TamBake, PackageCarriesTheMaterialAndTheEmbeddedKtx) {
   for (const json& entry : report["accuracy"])
     for (const auto& [name, value] : entry["metrics"].items()) EXPECT_TRUE(value.is_number()) << name;
   EXPECT_TRUE(report["statistics"].contains("quality"));
+  // Rounding to 8 bits moves a layer's mean by at most half a step.
+  const json& tone = report["accuracy"][0]["metrics"];
+  EXPECT_LE(tone["maxToneErrorStored8Bit"].get<double>(), tone["maxToneError"].get<double>() + 0.5 / 255 + 1e-12);
   EXPECT_EQ(report["statistics"]["mesh"]["normalsComputed"], 8);
   std::vector<std::string> stages;
   for (const json& stage : report["stages"]) stages.push_back(stage["name"]);
@@ -332,6 +335,69 @@ TEST(TamBake, SettingsAreChecked) {
   settings.output = (dir / "tam.png").string();
   EXPECT_EQ(runQuietly(settings).code(), ExitCode::Usage);
   EXPECT_FALSE(fs::exists(dir / "tam.ktx2"));
+}
+
+// Extreme styles: the smallest tile, the most tones in it, tones at the ends of (0, 1), strokes too
+// faint to reach their tone. Each bakes a decodable TAM whose layers darken monotonically, or says
+// what it could not do; none hangs or writes garbage silently.
+Result<ktx2::Texture> bakeStyle(const fs::path& dir, const std::string& name, const std::string& text, Diagnostics& diagnostics) {
+  std::ofstream(dir / (name + ".json")) << text;
+  Settings settings;
+  settings.style = (dir / (name + ".json")).string();
+  settings.output = (dir / (name + ".ktx2")).string();
+  BAKE_RETURN_IF_ERROR(run(settings, diagnostics));
+  return ktx2::read(settings.output);
+}
+
+TEST(TamBakeStiff, ExtremeStylesGiveMonotoneDecodableTams) {
+  const fs::path dir = test::freshTempDir("tam_bake_stiff");
+  const std::pair<const char*, const char*> styles[] = {
+      {"smallest", R"({"tones": [0.5], "resolution": 8, "levels": 1})"},
+      {"most_tones", R"({"tones": 16, "resolution": 8, "candidates": 2})"},
+      {"extreme_tones", R"({"tones": [0.01, 0.999], "resolution": 16})"},
+      {"wide_strokes", R"({"tones": 3, "resolution": 16, "stroke": {"width": {"min": 6, "max": 8}}})"},
+      {"dots", R"({"tones": 4, "resolution": 32, "stroke": {"kind": "stippling"}})"},
+  };
+  for (const auto& [name, text] : styles) {
+    Diagnostics diagnostics("tambake", true);
+    Result<ktx2::Texture> texture = bakeStyle(dir, name, text, diagnostics);
+    ASSERT_TRUE(texture.isOk()) << name << ": " << texture.status().describe();
+    const std::uint32_t layers = texture->layers;
+    EXPECT_EQ(texture->levels.size(), ktx2::fullMipCount(texture->width, texture->height)) << name;
+    for (std::uint32_t level = 0; level < texture->levels.size(); ++level) {
+      const std::vector<double> darkness = storedDarkness(texture.value(), level);
+      ASSERT_EQ(darkness.size(), layers);
+      for (std::uint32_t k = 1; k < layers; ++k)
+        EXPECT_GE(darkness[k], darkness[k - 1] - 1e-12) << name << ": level " << level << ", layer " << k;
+    }
+  }
+}
+
+TEST(TamBakeStiff, UnreachableToneIsAWarningNamingIt) {
+  const fs::path dir = test::freshTempDir("tam_bake_stiff_faint");
+  Diagnostics diagnostics("tambake", true);
+  Result<ktx2::Texture> texture =
+      bakeStyle(dir, "faint", R"({"tones": [0.5], "resolution": 16, "levels": 1, "stroke": {"opacity": 0.001}})", diagnostics);
+  ASSERT_TRUE(texture.isOk()) << texture.status().describe();
+  ASSERT_EQ(diagnostics.warnings().count("tone-missed"), 1u);
+  const std::string& message = diagnostics.warnings().at("tone-missed").message;
+  EXPECT_NE(message.find("faint.json: tone 0 (target darkness 0.5)"), std::string::npos) << message;
+}
+
+TEST(TamBakeStored, DarknessIsReadFromRedOrAlpha) {
+  ktx2::Texture grey;
+  grey.format = ktx2::Format::R8;
+  grey.width = grey.height = 2;
+  grey.layers = 2;
+  grey.levels = {{255, 255, 255, 255, 0, 255, 0, 255}, {255, 0}};
+  EXPECT_EQ(storedDarkness(grey, 0), (std::vector<double>{0.0, 0.5}));
+  EXPECT_EQ(storedDarkness(grey, 1), (std::vector<double>{0.0, 1.0}));
+  ktx2::Texture colour;
+  colour.format = ktx2::Format::RGBA8;
+  colour.width = colour.height = 1;
+  colour.layers = 1;
+  colour.levels = {{0, 0, 0, 51}};
+  EXPECT_NEAR(storedDarkness(colour, 0)[0], 0.8, 1e-12);
 }
 
 TEST(TamBakeNormals, OctahedronNormalsPointAlongTheVertices) {

@@ -171,6 +171,7 @@ TEST(Style, StrokeFieldsAreChecked) {
   expectError(R"({"stroke": {"image": "a.png"}})", "/stroke/image", "only to the \"image\" kind");
   expectError(R"({"stroke": {"kind": "image"}})", "/stroke/kind", "needs \"image\"");
   expectError(R"({"stroke": "hatching"})", "/stroke", "JSON object");
+  expectError(R"({"stroke": {"centreOpacity": 0, "edgeOpacity": 0}})", "/stroke/centreOpacity", "no ink");
 }
 
 TEST(Style, MissingStrokeImageNamesStyleElementAndImage) {
