@@ -1,10 +1,13 @@
 // One stroke level of a tonal art map under construction (Praun et al. 2001, section 3.2): the image,
 // and the darkness blurred by a small Gaussian, against which a candidate stroke's tone progress is
-// measured ("we measure progress on a blurred version of the image, so that strokes spread evenly").
+// measured, so that overlapping strokes score less and strokes spread evenly.
 // A candidate's progress is summed over its own footprint only: a texel gains min(t, D + d) -
 // min(t, D) where D is the blurred darkness there, d the darkness the stroke adds and t the target
-// tone, so ink laid over or next to earlier strokes (where D already reaches t) counts for little. The
-// blurred image is kept up to date incrementally: after a stroke is placed, the darkness it added is
+// tone, so ink laid over or next to earlier strokes (where D already reaches t) counts for little.
+// That blur (about a pixel) spreads strokes locally only; at the scale of the tile a coarse grid of
+// 16 x 16 cells (smoothed over neighbours) weights each texel's progress by how far its cell lags
+// behind the target (kSpreadWeight), which keeps the ink even over quarter-tile windows and out of the
+// low frequencies (measured by bench/tam: see quality.h). The blurred image is kept up to date incrementally: after a stroke is placed, the darkness it added is
 // blurred (separable kernel) over its footprint's neighbourhood only, found as the smallest wrapping
 // interval of rows and of columns holding the footprint, widened by the kernel radius (the whole
 // torus when that would not be smaller). No full-image pass runs per stroke.

@@ -58,6 +58,9 @@ LevelImage blankLevel(int side, bool coloured);
 // where the neighbourhood is already dark enough), each texel's share weighted by
 // max(0, 1 + kSpreadWeight (t - W) / t) with W the smoothed darkness of its coarse cell (cells behind
 // the target count more); `ink` = its alpha sum; `darkening` = sum of d.
+// Measured on the default style at 256^2, K 16, seeds 1-3 (bench-tam): the largest window CV of the
+// images in quality.h's uniformity scope goes from 0.053-0.075 without the weight (0) to 0.042-0.049
+// with 16, the low-frequency power from 1.7-2.0 % to 1.1-1.5 %, at the same tone errors.
 inline constexpr double kSpreadWeight = 16.0;
 struct Progress {
   double gain = 0, ink = 0, darkening = 0;
