@@ -25,7 +25,7 @@ namespace {
 
 using namespace detail;
 
-constexpr double kMaxBufferCells = double(1 << 22);
+constexpr double kMaxBufferCells = double(1 << 18);  // 3 MB: strokes up to ~700 px across in one
 
 std::int64_t wrapIndex(std::int64_t v, std::int64_t n) {
   const std::int64_t m = v % n;
