@@ -94,7 +94,7 @@ class Builder {
 
   void score(Candidate& candidate, int tone, int level, long long step, int index) const {
     detail::StrokeRandom random(style_.seed, tone, level, step, index);
-    candidate.stroke = detail::candidateStroke(style_, tone, side(level), random);
+    candidate.stroke = detail::candidateStroke(style_, tone, random);
     if (style_.stroke.kind == StrokeKind::Image) candidate.stroke.texture = tam_.strokeTexture.get();
     const double target = tam_.targets[std::size_t(tone)];
     const int levels = tam_.strokeLevels;

@@ -3,8 +3,9 @@
 // is drawn from the style's ranges: centre uniform over the tile, direction = the style's angle plus
 // a uniform jitter (cross-hatching: from tone `crossFrom` on, each candidate takes the crossing
 // direction angle + crossAngle with probability 1/2, so the choice by progress balances the two),
-// length uniform in the length range (fraction of the tile; stipple dots are as long as wide at the
-// level they are placed at), width uniform in the width range (pixels, the same at every level),
+// length uniform in the length range (fraction of the tile; a stipple dot is a round dot, two points
+// 1/1000 pixel apart at the finest level with no taper, so it stays a dot of its width at every level),
+// width uniform in the width range (pixels, the same at every level),
 // a slight bend through a middle control point displaced sideways by up to curvature x length, and
 // the style's taper and breadthwise opacity. Image strokes are straight and carry the stroke image.
 // Random numbers come from a counter-based generator keyed by (seed, tone, level, step, candidate),
@@ -45,7 +46,7 @@ double StrokeRandom::uniform() { return double(next() >> 11) * 0x1.0p-53; }
 
 double StrokeRandom::uniform(double low, double high) { return low + (high - low) * uniform(); }
 
-stroke::Paintstroke candidateStroke(const Style& style, int tone, int placementSide, StrokeRandom& random) {
+stroke::Paintstroke candidateStroke(const Style& style, int tone, StrokeRandom& random) {
   const StrokeStyle& s = style.stroke;
   constexpr double kDegree = std::numbers::pi / 180.0;
   // Every candidate draws the same count of numbers in the same order, whatever its kind.
@@ -63,7 +64,7 @@ stroke::Paintstroke candidateStroke(const Style& style, int tone, int placementS
   const double dx = std::cos(angle), dy = std::sin(angle);
 
   double length = lengthDraw;
-  if (s.kind == StrokeKind::Stippling) length = width / double(placementSide);
+  if (s.kind == StrokeKind::Stippling) length = 1e-3 / double(style.resolution);
   const double bend = (s.kind == StrokeKind::Hatching || s.kind == StrokeKind::CrossHatching)
                           ? s.curvature * length * bendDraw
                           : 0.0;
@@ -75,7 +76,7 @@ stroke::Paintstroke candidateStroke(const Style& style, int tone, int placementS
   stroke::Paintstroke result;
   result.centreOpacity = s.centreOpacity;
   result.edgeOpacity = s.edgeOpacity;
-  result.taper = s.taper;
+  result.taper = s.kind == StrokeKind::Stippling ? 0.0 : s.taper;
   point.x = cx - 0.5 * length * dx;
   point.y = cy - 0.5 * length * dy;
   result.points.push_back(point);

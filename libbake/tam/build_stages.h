@@ -25,9 +25,8 @@ class StrokeRandom {
 };
 
 // A random candidate stroke of the style, in tile units ([0, 1)^2; the rasterizer wraps it), radii in
-// pixels. `placementSide` is the side of the level the stroke is placed at (stipple dots are as long
-// as they are wide there).
-stroke::Paintstroke candidateStroke(const Style& style, int tone, int placementSide, StrokeRandom& random);
+// pixels. Stipple dots are round dots of their width at every level.
+stroke::Paintstroke candidateStroke(const Style& style, int tone, StrokeRandom& random);
 
 // Normalised separable Gaussian, radius ceil(3 sigma) (sigma 0: the identity).
 struct Kernel {

@@ -149,9 +149,13 @@ TEST(BuildTam, EveryStrokeKindBuilds) {
       const auto& pts = placed.stroke.points;
       const double dx = pts.back().x - pts.front().x, dy = pts.back().y - pts.front().y;
       const double length = std::hypot(dx, dy);
-      const double side = n / double(1 << (tam.strokeLevels - 1 - placed.level));
-      if (kind == StrokeKind::Stippling) {
-        EXPECT_NEAR(length * side, 2 * pts.front().radius, 1e-9);  // a dot as long as wide
+      if (kind == StrokeKind::Stippling) {  // a round dot of its width at every level
+        EXPECT_LE(length * n, 1e-2);
+        EXPECT_EQ(placed.stroke.taper, 0.0);
+        const stroke::InkFootprint dot = stroke::rasterize(stroke::scaledPositions(placed.stroke, n), int(n), int(n), true);
+        const double r = pts.front().radius;
+        EXPECT_NEAR(dot.ink(), std::numbers::pi * r * r * style.stroke.opacity *
+                                   (style.stroke.centreOpacity + style.stroke.edgeOpacity) / 2, 0.35 * r * r);
       } else {
         ASSERT_GE(length, style.stroke.length.min - 1e-9);
         ASSERT_LE(length, style.stroke.length.max + 1e-9);
