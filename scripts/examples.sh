@@ -50,6 +50,20 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/vase.glb" "$out/ring.glb" "$out/plate.glb" --size 1024x512 \
   -o "$out/revolution-scene.png"
 
+# Hatching (pipelines/hatching): tonal art maps by tambake on a torus and the pretzel, drawn together
+# and timed beside standard Blinn-Phong shading of the same scene.
+hat="$here/pipelines/hatching"
+"$bin/bakeshape/bakeshape" torus -o "$out/torus.glb" -q
+"$bin/tambake/tambake" "$hat/hatching.json" -o "$out/hatching.ktx2" --apply-to "$out/torus.glb" \
+  --package "$out/torus-hatched.glb" --position -2.4,0,0 --report "$out/hatching.report.json"
+"$bin/tambake/tambake" "$hat/stippling.json" -o "$out/stippling.ktx2" --apply-to "$out/pretzel.glb" \
+  --package "$out/pretzel-stippled.glb" --position 1.6,0,0 --base-colour 1,0.93,0.8 \
+  --report "$out/stippling.report.json"
+"$bin/bakeplay/bakeplay" validate -q "$out/torus-hatched.glb" "$out/pretzel-stippled.glb"
+"$bin/bakeplay/bakeplay" render -q "$out/torus-hatched.glb" "$out/pretzel-stippled.glb" --size 1024x512 \
+  --camera -0.1,1.7,6.9:-0.1,0,0 --light -0.5,0.7,0.6 --frames 20 --compare-standard \
+  --report "$out/hatching-scene.report.json" -o "$out/hatching-scene.png"
+
 "$bin/bakeplay/bakeplay" render -q -o "$out/bundled-example.png" --frames 30 --report "$out/bundled-example.report.json"
 echo "rendered: $(cd "$out" && ls *.png | tr '\n' ' ')(in out/examples/)"
 echo "open a window on a package: $bin/bakeplay/bakeplay view pipelines/example/wavy-grid.glb"
