@@ -9,7 +9,7 @@ inline constexpr int kVersion = 1;
 
 // KTX2 key/value entry holding the TAM's description as JSON text (NUL-terminated, as KTX2 asks):
 // {"version", "tones" [darkness per layer, light -> dark], "strokeLevels" (levels drawn with strokes,
-//  the rest of the mip chain is box-filtered), "style", "seed", "colour" (bool), "tileSize"}.
+//  the rest of the mip chain is box-filtered), "style", "seed", "colour" (bool)}.
 inline constexpr const char* kMetadataKey = "BAKE_tam";
 
 // Texel values are paper brightness: 1 (255) is untouched paper, 0 is full ink. Layer k is tone k;
