@@ -1,5 +1,6 @@
 // bench-tam: the tonal art map construction (libbake/tam/build.h) on the default style (6 tones
-// evenly spaced up to darkness 0.9, 4 stroke levels, hatching), sweeping the candidate count K and the
+// evenly spaced up to darkness 0.9, 4 stroke levels, hatching; --kind cross-hatching crosses from
+// tone 3 on, --kind stippling draws dots 1.5-2.5 px wide), sweeping the candidate count K and the
 // finest resolution. Per (K, resolution): the median construction time over --repeats builds and the
 // quality figures of tam/quality.h (deterministic for the seed): the largest tone error and its ratio
 // to the tolerance max(0.25 %, 0.8 / N), the largest coefficient of variation over quarter-tile
@@ -33,6 +34,7 @@ struct Options {
   std::string out = "build-bench/results";
   bool detail = false;
   std::string images;  // folder for PGM images of the last build
+  std::string kind = "hatching";
 };
 
 // Binary PGM of a brightness image.
@@ -44,8 +46,15 @@ void writePgm(const std::string& path, const bake::stroke::Raster& image) {
   }
 }
 
-Style benchStyle(int candidates, int resolution, std::uint64_t seed) {
+Style benchStyle(int candidates, int resolution, std::uint64_t seed, const std::string& kind) {
   Style style;
+  if (kind == "cross-hatching") {
+    style.stroke.kind = StrokeKind::CrossHatching;
+    style.stroke.crossFrom = 3;  // the darker half crosses
+  } else if (kind == "stippling") {
+    style.stroke.kind = StrokeKind::Stippling;
+    style.stroke.width = {1.5, 2.5};
+  }
   style.source = "default";
   for (int k = 1; k <= 6; ++k) style.tones.push_back(0.9 * k / 6.0);
   style.resolution = resolution;
@@ -65,6 +74,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", options.repeats, "builds per point (median time)");
   app.add_option("--threads", options.threads, "construction threads");
   app.add_option("--seed", options.seed, "construction seed");
+  app.add_option("--kind", options.kind, "stroke kind")->check(CLI::IsMember({"hatching", "cross-hatching", "stippling"}));
   app.add_option("--out", options.out, "output folder");
   app.add_flag("--detail", options.detail, "also write every image's figures (images.csv)");
   app.add_option("--images", options.images, "write the stroke images of each build as PGM into this folder");
@@ -88,7 +98,7 @@ int main(int argc, char** argv) {
   }
   for (int resolution : options.resolutions) {
     for (int k : options.candidates) {
-      const Style style = benchStyle(k, resolution, options.seed);
+      const Style style = benchStyle(k, resolution, options.seed, options.kind);
       BuildOptions build;
       build.threads = options.threads;
       std::vector<double> times;

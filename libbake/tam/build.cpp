@@ -7,8 +7,9 @@
 // units of its mean (progress measured against the blurred darkness, build_level.cpp). The best
 // candidate (lowest index among equals) is drawn into that level and every finer level; the darker
 // tones inherit it when they start, so nesting across tones and resolutions holds by construction.
-// Candidates are scored in parallel with random numbers keyed by (seed, tone, level, step, candidate),
-// and the choice is made in candidate order, so the result does not depend on the thread count.
+// Candidates are scored in parallel (StepPool, build_pool.cpp) with random numbers keyed by
+// (seed, tone, level, step, candidate), and the choice is made in candidate order, so the result
+// does not depend on the thread count.
 // An image stops when its mean darkness reaches the target, keeping the last stroke only if it
 // brings the mean closer. The mip levels below the stroke levels are 2x2 box averages.
 #include "tam/build.h"
@@ -60,7 +61,7 @@ class Builder {
  public:
   Builder(const Style& style, const BuildOptions& options, Tam& tam)
       : style_(style), options_(options), tam_(tam), kernel_(detail::gaussianKernel(style.blurSigma)),
-        threads_(resolveThreadCount(unsigned(std::max(0, options.threads)))),
+        pool_(std::min<unsigned>(resolveThreadCount(unsigned(std::max(0, options.threads))), unsigned(style.candidates))),
         candidates_(std::size_t(style.candidates)) {}
 
   void run() {
@@ -121,8 +122,7 @@ class Builder {
     for (long long step = 0; step < cap; ++step) {
       const double mean = image.meanDarkness();
       if (mean >= target) return;
-      parallelFor(candidates_.size(), threads_,
-                  [&](std::size_t i) { score(candidates_[i], tone, level, step, int(i)); }, 1);
+      pool_.run(candidates_.size(), [&](std::size_t i) { score(candidates_[i], tone, level, step, int(i)); });
       tam_.candidatesEvaluated += (long long)candidates_.size();
       std::size_t best = 0;
       for (std::size_t i = 1; i < candidates_.size(); ++i) {
@@ -142,7 +142,7 @@ class Builder {
   const BuildOptions& options_;
   Tam& tam_;
   detail::Kernel kernel_;
-  unsigned threads_;
+  detail::StepPool pool_;
   std::vector<Candidate> candidates_;
   std::vector<LevelImage> levels_;  // the tone being built, level 0 = coarsest stroke level
 };

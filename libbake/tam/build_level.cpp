@@ -7,8 +7,9 @@
 // That blur (about a pixel) spreads strokes locally only; at the scale of the tile a coarse grid of
 // 16 x 16 cells (smoothed over neighbours) weights each texel's progress by how far its cell lags
 // behind the target (kSpreadWeight), which keeps the ink even over quarter-tile windows and out of the
-// low frequencies (measured by bench/tam: see quality.h). The blurred image is kept up to date incrementally: after a stroke is placed, the darkness it added is
-// blurred (separable kernel) over its footprint's neighbourhood only, found as the smallest wrapping
+// low frequencies (measured by bench/tam: see build_stages.h). The blurred image is kept up to date
+// incrementally: after a stroke is placed, the darkness it added is blurred (separable kernel) over
+// its footprint's neighbourhood only, found as the smallest wrapping
 // interval of rows and of columns holding the footprint, widened by the kernel radius (the whole
 // torus when that would not be smaller). No full-image pass runs per stroke.
 #include <algorithm>

@@ -2,7 +2,13 @@
 // and build_level.cpp. Internal to libbake/tam.
 #pragma once
 
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "stroke/paintstroke.h"
@@ -69,6 +75,36 @@ Progress measureProgress(const stroke::InkFootprint& footprint, const LevelImage
 // Draws a footprint into the level: brightness *= 1 - alpha, colour composited, blurred darkness
 // updated over the footprint's neighbourhood only (wrapping), darkness sum updated.
 void applyFootprint(const stroke::InkFootprint& footprint, const Kernel& kernel, LevelImage& level);
+
+// Persistent workers for the many small parallel steps of the construction (one per stroke: K
+// candidates). The calling thread takes part and claims items itself, and waits only for items a
+// worker has already claimed, so a worker that is slow to be scheduled on a busy machine costs
+// nothing (core/parallel.h starts threads per call, which costs more than a stroke's candidates).
+// Each item's result depends only on its index, whatever thread runs it.
+class StepPool {
+ public:
+  explicit StepPool(unsigned threads);  // threads - 1 workers
+  ~StepPool();
+  StepPool(const StepPool&) = delete;
+  StepPool& operator=(const StepPool&) = delete;
+  // body(i) for every i in [0, count); rethrows the first exception a body threw.
+  void run(std::size_t count, const std::function<void(std::size_t)>& body);
+
+ private:
+  void work();
+  bool claimAndRun(std::uint32_t generation);
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::uint32_t generation_ = 0;  // under mutex_
+  bool stop_ = false;             // under mutex_
+  std::atomic<const std::function<void(std::size_t)>*> body_{nullptr};
+  std::atomic<std::size_t> count_{0};
+  std::atomic<std::uint64_t> ticket_{0};  // generation << 32 | next item
+  std::atomic<std::size_t> done_{0};
+  std::exception_ptr failure_;
+  std::vector<std::thread> workers_;
+};
 
 // 2x2 box average (mean-preserving), any channel count; side must be even or 1 -> 1.
 stroke::Raster boxHalve(const stroke::Raster& image);

@@ -308,8 +308,6 @@ TEST(BuildTamStiff, OneTone) {
 TEST(BuildTamStiff, NearlyBlackTone) {
   Style style = defaultStyle();
   style.tones = {0.5, 0.99};
-  style.resolution = 64;
-  style.levels = 2;
   const Tam tam = build(style);
   const Quality q = measureQuality(tam);
   expectSound(tam, q);
