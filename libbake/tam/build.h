@@ -3,7 +3,8 @@
 // each image starts from its lighter neighbour at the same level plus the strokes of coarser levels of
 // its own tone; strokes are chosen greedily, the best of K random candidates by tone progress over
 // all finer levels per unit of ink, progress measured on a slightly blurred image so overlapping
-// strokes score less and strokes spread evenly. A stroke placed at level l is drawn into every level
+// strokes score less and strokes spread evenly (plus, at the tile's scale, a weight favouring the
+// coarse cells that lag behind the target: build_level.cpp). A stroke placed at level l is drawn into every level
 // >= l of its tone and of every darker tone, at the same width in pixels (levels are rendered, never
 // downsampled), so nesting across tones and resolutions holds by construction. Tiles wrap toroidally.
 // Mip levels below the coarsest stroke level are box-filtered (mean-preserving), and so are the
