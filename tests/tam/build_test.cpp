@@ -282,6 +282,20 @@ TEST(BuildTam, StyleErrorsNameTheElement) {
   EXPECT_EQ(buildTam(style).status().where().element, "/tones/1");
 }
 
+TEST(BuildTam, ReportsProgressUpToOne) {
+  Style style = smallStyle(StrokeKind::Hatching);
+  style.resolution = 64;
+  std::vector<double> seen;
+  BuildOptions options;
+  options.threads = 2;
+  options.progress = [&](double fraction) { seen.push_back(fraction); };
+  ASSERT_TRUE(buildTam(style, options).isOk());
+  ASSERT_EQ(seen.size(), std::size_t(3 * 3));  // per tone and stroke level
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_GT(seen.front(), 0.0);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+}
+
 TEST(BuildTam, CoarseLevelsThatCannotHoldAStrokeAreBoxFiltered) {
   Style style = defaultStyle();
   style.resolution = 64;
