@@ -24,10 +24,6 @@ namespace {
 using nlohmann::json;
 namespace fmt = format::tam;
 
-// The uniformity targets of tam/quality.h (its header comment), stated in the report.
-constexpr double kInkVariationTarget = 0.08;
-constexpr double kLowFrequencyPowerTarget = 0.03;
-
 std::string number(double x) {
   std::ostringstream out;
   out << x;

@@ -44,10 +44,9 @@ inline constexpr int kUniformityMinSide = 128;
 inline constexpr long long kUniformityMinStrokes = 128;
 // The scope above in words, for reports: "stroke images of side >= 128 holding >= 128 strokes ...".
 std::string uniformityScope();
-// Earlier scope by darkness, kept so that older callers compile: the scope no longer depends on the
-// tone (0: every tone), use uniformityScope().
-[[deprecated("the uniformity scope is by side and stroke count: use uniformityScope()")]]
-inline constexpr double kUniformityMinDarkness = 0.0;
+// The uniformity targets within that scope (the tambake issue's done-when figures).
+inline constexpr double kInkVariationTarget = 0.08;
+inline constexpr double kLowFrequencyPowerTarget = 0.03;
 
 struct Quality {
   std::vector<ImageQuality> images;  // stroke levels only (box-filtered mips are exact by construction)
