@@ -25,6 +25,7 @@
 #include "render/hatching.h"
 #include "render/renderer.h"
 #include "render/target.h"
+#include "tam/bake.h"
 #include "runtime/gl_test.h"
 #include "support/golden.h"
 
@@ -677,6 +678,90 @@ TEST(HatchingRender, CompareStandardTimesBothRenderers) {
   EXPECT_EQ(statistics["frameTimeCpu"]["frames"], 3);
   EXPECT_EQ(statistics["frameTimeStandardCpu"]["frames"], 3);
   EXPECT_GT(statistics["frameTimeStandardCpu"]["medianMs"].get<double>(), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// End to end: the example scene of pipelines/hatching, baked by tambake from its own style files
+
+// Bakes one example style onto `mesh` and returns the package's path.
+fs::path bakeExample(const std::string& style, const fs::path& mesh, const fs::path& dir, const std::string& position) {
+  tam::Settings settings;
+  settings.style = (test::sourceDir() / "pipelines" / "hatching" / style).string();
+  settings.output = (dir / (style + ".ktx2")).string();
+  settings.material.mesh = mesh.string();
+  settings.material.package = (dir / (style + ".glb")).string();
+  std::sscanf(position.c_str(), "%lf,%lf,%lf", &settings.material.position[0], &settings.material.position[1],
+              &settings.material.position[2]);
+  settings.common.quiet = true;
+  Diagnostics quiet("tambake", true);
+  const Status status = tam::run(settings, quiet);
+  EXPECT_TRUE(status.isOk()) << style << ": " << status.describe();
+  return settings.material.package;
+}
+
+// The two example objects render headless side by side, each with ink and paper visible, the same
+// bytes twice, and the packages pass validation.
+TEST(HatchingExample, PipelineStylesBakeValidateAndRenderHeadless) {
+  const fs::path dir = test::freshTempDir("hatching_example");
+  glb::Package meshOnly;
+  glb::Mesh torus;
+  torus.primitives.push_back(meshPrimitive(shape("torus", 40)));
+  torus.primitives.back().material = -1;
+  meshOnly.meshes.push_back(std::move(torus));
+  glb::Node node;
+  node.mesh = 0;
+  meshOnly.nodes.push_back(node);
+  const fs::path mesh = dir / "torus.glb";
+  ASSERT_TRUE(glb::write(mesh, meshOnly).isOk());
+  const fs::path left = bakeExample("hatching.json", mesh, dir, "-1.5,0,0");
+  const fs::path right = bakeExample("stippling.json", mesh, dir, "1.5,0,0");
+  ASSERT_FALSE(::testing::Test::HasFailure());
+
+  Diagnostics diagnostics("bakeplay", true);
+  ValidateSettings validate;
+  validate.packages = {left.string(), right.string()};
+  validate.size = 64;
+  std::FILE* sink = std::tmpfile();
+  const Status verdict = runValidate(validate, diagnostics, sink);
+  std::fclose(sink);
+  EXPECT_TRUE(verdict.isOk()) << verdict.describe();
+
+  std::vector<std::vector<std::uint8_t>> frames;
+  for (int run = 0; run < 2; ++run) {
+    RenderSettings settings;
+    settings.view.scenes = {left.string(), right.string()};
+    settings.view.width = 512;
+    settings.view.height = 256;
+    // Close enough that strokes span pixels (from afar the TAM's mips turn them into grey tone).
+    settings.view.camera = "0,1.2,3.6:0,0,0";
+    settings.view.light = "-0.5,0.7,0.6";
+    settings.output = (dir / ("scene" + std::to_string(run) + ".png")).string();
+    const Status status = runRender(settings, diagnostics);
+    ASSERT_TRUE(status.isOk()) << status.describe();
+    frames.push_back(test::readAll(settings.output));
+  }
+  EXPECT_EQ(frames[0], frames[1]) << "the same scene rendered twice differs";
+
+  auto image = readImage(dir / "scene0.png");
+  ASSERT_TRUE(image.isOk()) << image.status().describe();
+  // Each half holds one object: count its inked (dark) and paper (bright) pixels apart from the
+  // background, which is the colour of the top-left corner.
+  for (int half = 0; half < 2; ++half) {
+    int dark = 0, bright = 0;
+    for (int y = 0; y < image->height; ++y)
+      for (int x = half * image->width / 2; x < (half + 1) * image->width / 2; ++x) {
+        float difference = 0, luminance = 0;
+        for (int c = 0; c < 3; ++c) {
+          difference += std::abs(image->at(x, y, c) - image->at(0, 0, c));
+          luminance += image->at(x, y, c) / 3;
+        }
+        if (difference < 0.02f) continue;
+        dark += luminance < 0.3f ? 1 : 0;
+        bright += luminance > 0.7f ? 1 : 0;
+      }
+    EXPECT_GT(dark, 1000) << "half " << half << ": no ink drawn";
+    EXPECT_GT(bright, 1000) << "half " << half << ": no paper left between the strokes";
+  }
 }
 
 }  // namespace
