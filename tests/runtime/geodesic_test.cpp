@@ -23,6 +23,7 @@
 #include "render/geodesic.h"
 #include "render/target.h"
 #include "runtime/gl_test.h"
+#include "runtime/golden_image.h"
 #include "support/golden.h"
 
 namespace bake::play {
@@ -693,16 +694,7 @@ TEST_P(GeoTextureGolden, MatchesTheGoldenImage) {
   const std::string preset = GetParam();
   const Image image = renderPackage(spherePackage(geoMaterial(preset)), "golden_" + preset);
   const std::string golden = "runtime/geodesic-" + preset + ".v1.png";
-  if (test::updatingGoldens()) {
-    fs::create_directories(test::goldenPath(golden).parent_path());
-    ASSERT_TRUE(writeImage(test::goldenPath(golden), image, PixelType::U8).isOk());
-    GTEST_SKIP() << "updated " << golden;
-  }
-  auto expected = readImage(test::goldenPath(golden));
-  ASSERT_TRUE(expected.isOk()) << expected.status().describe();
-  auto difference = compareImages(image, *expected, 0.1);
-  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
-  EXPECT_TRUE(withinTolerance(*difference, {0.02, 0.1, 1.0})) << describe(*difference);
+  EXPECT_TRUE(test::matchesGoldenImage(image, golden));
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, GeoTextureGolden, ::testing::ValuesIn(geoPresetNames()),

@@ -27,6 +27,7 @@
 #include "render/target.h"
 #include "tam/bake.h"
 #include "runtime/gl_test.h"
+#include "runtime/golden_image.h"
 #include "support/golden.h"
 
 namespace bake::play {
@@ -521,16 +522,7 @@ TEST_P(HatchingGolden, MatchesTheGoldenImage) {
   load(hatchingPackage(meshPrimitive(shape(c.shape, 48)), c.material), "golden_" + c.name);
   const Image image = frame(lightAt(40, 35));
   const std::string golden = "runtime/hatching-" + c.name + ".v1.png";
-  if (test::updatingGoldens()) {
-    fs::create_directories(test::goldenPath(golden).parent_path());
-    ASSERT_TRUE(writeImage(test::goldenPath(golden), image, PixelType::U8).isOk());
-    GTEST_SKIP() << "updated " << golden;
-  }
-  auto expected = readImage(test::goldenPath(golden));
-  ASSERT_TRUE(expected.isOk()) << expected.status().describe();
-  auto difference = compareImages(image, *expected, 0.1);
-  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
-  EXPECT_TRUE(withinTolerance(*difference, {0.02, 0.1, 1.0})) << describe(*difference);
+  EXPECT_TRUE(test::matchesGoldenImage(image, golden));
 }
 
 Material coloured() {

@@ -25,6 +25,7 @@
 #include "revolution/march.h"
 #include "render/revolution.h"
 #include "runtime/gl_test.h"
+#include "runtime/golden_image.h"
 #include "support/golden.h"
 
 namespace bake::play {
@@ -593,16 +594,7 @@ TEST_P(RevolutionGolden, MatchesTheGoldenImage) {
   const Circle& shape = projection == "spherical" ? kSphere : kTorus;
   const Image image = render({revolutionPackage(shape, o)}, "golden_" + projection, kFront);
   const std::string golden = "runtime/revolution-" + projection + ".v1.png";
-  if (test::updatingGoldens()) {
-    fs::create_directories(test::goldenPath(golden).parent_path());
-    ASSERT_TRUE(writeImage(test::goldenPath(golden), image, PixelType::U8).isOk());
-    GTEST_SKIP() << "updated " << golden;
-  }
-  auto expected = readImage(test::goldenPath(golden));
-  ASSERT_TRUE(expected.isOk()) << expected.status().describe();
-  auto difference = compareImages(image, *expected, 0.1);
-  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
-  EXPECT_TRUE(withinTolerance(*difference, {0.02, 0.1, 1.0})) << describe(*difference);
+  EXPECT_TRUE(test::matchesGoldenImage(image, golden));
 }
 
 INSTANTIATE_TEST_SUITE_P(Projections, RevolutionGolden, ::testing::Values("cylindrical", "spherical"));
