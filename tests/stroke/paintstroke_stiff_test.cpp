@@ -1,6 +1,7 @@
 // Stiff cases for the paintstroke rasterizer: dots, zero and huge radii, strokes much longer than the
 // image, huge, tiny and non-finite coordinates, hairpins. Output must be finite and correct, or empty.
 #include "stroke/paintstroke.h"
+#include "stroke/stroke_builders.h"
 
 #include <gtest/gtest.h>
 
@@ -11,17 +12,8 @@
 namespace bake::stroke {
 namespace {
 
-ControlPoint point(double x, double y, double radius, double opacity = 1) {
-  ControlPoint p;
-  p.x = x, p.y = y, p.radius = radius, p.opacity = opacity;
-  return p;
-}
-
-Paintstroke line(double x0, double y0, double x1, double y1, double radius, double opacity = 1) {
-  Paintstroke s;
-  s.points = {point(x0, y0, radius, opacity), point(x1, y1, radius, opacity)};
-  return s;
-}
+using test::line;
+using test::point;
 
 // Every pixel inside the image, listed once, in row-major order, alpha in (0, 1], colour finite.
 void expectWellFormed(const InkFootprint& f, int width, int height) {

@@ -1,6 +1,7 @@
 // Paintstroke rasterizer: spline, coverage profile, ink conservation, breadthwise opacity, taper,
 // wrap-around and multiplicative compositing.
 #include "stroke/paintstroke.h"
+#include "stroke/stroke_builders.h"
 
 #include <gtest/gtest.h>
 
@@ -14,17 +15,8 @@
 namespace bake::stroke {
 namespace {
 
-ControlPoint point(double x, double y, double radius = 0.5, double opacity = 1) {
-  ControlPoint p;
-  p.x = x, p.y = y, p.radius = radius, p.opacity = opacity;
-  return p;
-}
-
-Paintstroke line(double x0, double y0, double x1, double y1, double radius, double opacity = 1) {
-  Paintstroke s;
-  s.points = {point(x0, y0, radius, opacity), point(x1, y1, radius, opacity)};
-  return s;
-}
+using test::line;
+using test::point;
 
 // Ink of a straight stroke with round caps: body + the disc of the two half caps.
 double capsuleInk(double length, double radius, double opacity) {
