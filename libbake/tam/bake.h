@@ -16,7 +16,7 @@ namespace bake::tam {
 struct MaterialSettings {
   std::string mesh;                   // mesh to apply the TAM to (.obj .ply .off .stl .gltf .glb); empty: none
   std::string package;                // the .glb to write with it
-  double tilesPerUnit = 4;            // hatching parameter scale: TAM tiles per object unit
+  double tilesPerUnit = 1;            // hatching parameter scale: TAM tiles per object unit
   double rotationDegrees = 0;         // rotation of the hatching parameters about N
   std::array<double, 2> translation{0, 0};  // shift along T and B, in tiles
   std::string orientation = "toward-light";  // or "across-light"

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   MaterialSettings& material = settings.material;
   app.add_option("--apply-to", material.mesh, "Mesh to apply the TAM to (.obj .ply .off .stl .gltf .glb)");
   app.add_option("--package", material.package, "Package to write with --apply-to (.glb, BAKE_hatching material)");
-  app.add_option("--tiles-per-unit", material.tilesPerUnit, "Hatching scale: TAM tiles per object unit")->default_str("4");
+  app.add_option("--tiles-per-unit", material.tilesPerUnit, "Hatching scale: TAM tiles per object unit")->default_str("1");
   app.add_option("--rotation", material.rotationDegrees, "Rotation of the strokes about the normal, degrees")->default_str("0");
   std::string translation;
   app.add_option("--translation", translation, "Shift of the hatching along T and B, in tiles: U,V")->default_str("0,0");
