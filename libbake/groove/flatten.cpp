@@ -1,0 +1,233 @@
+// Paths to primitives (formats/groove-scene.md "Flattening"). Segments and circular arcs are kept
+// exactly, as the seed keeps its primitives (seed 000 §3.1). Spirals and Béziers are flattened into
+// circular arcs by recursive subdivision: each parameter interval is replaced by the arc through its
+// start, middle and end points (a segment when these are collinear), and split in two while that arc
+// deviates from the curve by more than 0.9 x the tolerance at any of 15 interior samples, or turns by more
+// than 45 degrees. Pieces of one flattened curve meet G1 (no corner); the local radius of curvature
+// is checked at every piece's ends and middle against the groove's half-width.
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "groove/scene.h"
+
+namespace bake::groove {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Vec2 operator+(Vec2 a, Vec2 b) { return {a.u + b.u, a.v + b.v}; }
+Vec2 operator-(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
+Vec2 operator*(double s, Vec2 a) { return {s * a.u, s * a.v}; }
+double cross(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
+double norm(Vec2 a) { return std::hypot(a.u, a.v); }
+
+std::string showPoint(Vec2 p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g)", p.u, p.v);
+  return text;
+}
+
+// A parametric curve on t in [0, 1] with its first and second derivatives.
+struct Curve {
+  std::function<Vec2(double)> f, d1, d2;
+};
+
+Curve curveOf(const PathPiece& piece) {
+  Curve c;
+  if (piece.kind == PathPiece::Kind::Spiral) {
+    // Archimedean: r(theta) = r0 + b theta, b = pitch / (2 pi), theta = sweep t.
+    const double r0 = piece.radius, b = piece.pitch / (2 * kPi), s = piece.sweep, a0 = piece.startAngle;
+    const Vec2 o = piece.centre;
+    // Radius along the sweep's direction of travel: the pitch is per turn, whatever the sense.
+    c.f = [=](double t) {
+      const double th = s * t, r = r0 + b * std::abs(th);
+      return o + Vec2{r * std::cos(a0 + th), r * std::sin(a0 + th)};
+    };
+    c.d1 = [=](double t) {
+      const double th = s * t, r = r0 + b * std::abs(th), sg = s < 0 ? -1.0 : 1.0;
+      return s * Vec2{sg * b * std::cos(a0 + th) - r * std::sin(a0 + th), sg * b * std::sin(a0 + th) + r * std::cos(a0 + th)};
+    };
+    c.d2 = [=](double t) {
+      const double th = s * t, r = r0 + b * std::abs(th), sg = s < 0 ? -1.0 : 1.0;
+      return (s * s) * Vec2{-2 * sg * b * std::sin(a0 + th) - r * std::cos(a0 + th),
+                            2 * sg * b * std::cos(a0 + th) - r * std::sin(a0 + th)};
+    };
+  } else if (piece.kind == PathPiece::Kind::Quadratic) {
+    const Vec2 p0 = piece.p[0], p1 = piece.p[1], p2 = piece.p[2];
+    c.f = [=](double t) { return (1 - t) * (1 - t) * p0 + 2 * (1 - t) * t * p1 + t * t * p2; };
+    c.d1 = [=](double t) { return 2 * (1 - t) * (p1 - p0) + 2 * t * (p2 - p1); };
+    c.d2 = [=](double) { return 2 * (p2 - 2 * p1 + p0); };
+  } else {
+    const Vec2 p0 = piece.p[0], p1 = piece.p[1], p2 = piece.p[2], p3 = piece.p[3];
+    c.f = [=](double t) {
+      const double s = 1 - t;
+      return s * s * s * p0 + 3 * s * s * t * p1 + 3 * s * t * t * p2 + t * t * t * p3;
+    };
+    c.d1 = [=](double t) { return 3 * (1 - t) * (1 - t) * (p1 - p0) + 6 * (1 - t) * t * (p2 - p1) + 3 * t * t * (p3 - p2); };
+    c.d2 = [=](double t) { return 6 * (1 - t) * (p2 - 2 * p1 + p0) + 6 * t * (p3 - 2 * p2 + p1); };
+  }
+  return c;
+}
+
+// The primitive through a, m, b: an arc, or a segment when the three are (nearly) collinear.
+Primitive primitiveThrough(Vec2 a, Vec2 m, Vec2 b) {
+  Primitive p;
+  p.a = a;
+  p.b = b;
+  const double chord = norm(b - a);
+  const double area = cross(m - a, b - a);
+  if (chord == 0 || std::abs(area) <= 1e-12 * chord * chord) {
+    p.kind = Primitive::Kind::Segment;
+    p.length = chord;
+    return p;
+  }
+  // Circumcentre of a, m, b.
+  const Vec2 ab = b - a, am = m - a;
+  const double d = 2 * cross(am, ab);
+  const double am2 = am.u * am.u + am.v * am.v, ab2 = ab.u * ab.u + ab.v * ab.v;
+  const Vec2 c = a + Vec2{(ab.v * am2 - am.v * ab2) / d, (am.u * ab2 - ab.u * am2) / d};
+  p.kind = Primitive::Kind::Arc;
+  p.centre = c;
+  p.radius = norm(a - c);
+  p.startAngle = std::atan2(a.v - c.v, a.u - c.u);
+  double delta = std::atan2(b.v - c.v, b.u - c.u) - p.startAngle;
+  const bool ccw = area > 0;  // m right of the chord a->b: the centre is on the left, counter-clockwise
+  if (ccw) {
+    while (delta <= 0) delta += 2 * kPi;
+  } else {
+    while (delta >= 0) delta -= 2 * kPi;
+  }
+  p.sweep = delta;
+  p.length = p.radius * std::abs(delta);
+  return p;
+}
+
+double distanceTo(const Primitive& p, Vec2 q) {
+  if (p.kind == Primitive::Kind::Arc) return std::abs(norm(q - p.centre) - p.radius);
+  const Vec2 ab = p.b - p.a;
+  const double len2 = ab.u * ab.u + ab.v * ab.v;
+  double t = len2 > 0 ? ((q.u - p.a.u) * ab.u + (q.v - p.a.v) * ab.v) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(q - (p.a + t * ab));
+}
+
+struct Flattener {
+  const Curve& curve;
+  double tolerance;
+  double minRadius;
+  std::size_t firstOfGroove;
+  const std::string& label;
+  const std::string& source;
+  std::vector<Primitive>& out;
+
+  Status checkCurvature(double t) const {
+    const Vec2 d1 = curve.d1(t), d2 = curve.d2(t);
+    const double speed = norm(d1);
+    const double k = std::abs(cross(d1, d2));
+    if (speed == 0) return Status::ok();  // a cusp of zero speed is caught as a corner-free point
+    const double radius = speed * speed * speed / k;
+    if (k > 0 && radius < minRadius)
+      return invalidInput(label + ": segment " + std::to_string(out.size() - firstOfGroove) + " at " +
+                              showPoint(curve.f(t)) + ": radius of curvature " + std::to_string(radius) +
+                              " is smaller than the groove's half-width " + std::to_string(minRadius),
+                          {source, ""});
+    return Status::ok();
+  }
+
+  Status run(double t0, double t1, int depth) {
+    const double tm = 0.5 * (t0 + t1);
+    const Vec2 a = curve.f(t0), m = curve.f(tm), b = curve.f(t1);
+    Primitive p = primitiveThrough(a, m, b);
+    bool fits = depth >= 40 || (p.kind == Primitive::Kind::Segment || std::abs(p.sweep) <= kPi / 4);
+    // 15 samples against 90% of the tolerance: the deviation between samples stays within it.
+    for (int i = 1; fits && i < 16 && depth < 40; ++i)
+      if (distanceTo(p, curve.f(t0 + (t1 - t0) * i / 16.0)) > 0.9 * tolerance) fits = false;
+    if (!fits || depth < 2) {
+      BAKE_RETURN_IF_ERROR(run(t0, tm, depth + 1));
+      return run(tm, t1, depth + 1);
+    }
+    BAKE_RETURN_IF_ERROR(checkCurvature(t0));
+    BAKE_RETURN_IF_ERROR(checkCurvature(tm));
+    BAKE_RETURN_IF_ERROR(checkCurvature(t1));
+    p.cornerAtStart = false;  // G1 inside one curve
+    out.push_back(p);
+    return Status::ok();
+  }
+};
+
+}  // namespace
+
+Vec2 Primitive::pointAt(double t) const {
+  if (kind == Kind::Segment) return a + t * (b - a);
+  const double angle = startAngle + sweep * t;
+  return centre + Vec2{radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+Vec2 Primitive::tangentAt(double t) const {
+  if (kind == Kind::Segment) {
+    const double len = norm(b - a);
+    return len > 0 ? (1 / len) * (b - a) : Vec2{};
+  }
+  const double angle = startAngle + sweep * t, s = sweep < 0 ? -1.0 : 1.0;
+  return {-s * std::sin(angle), s * std::cos(angle)};
+}
+
+Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, double minRadius, std::size_t grooveIndex,
+                   const std::string& label, const std::string& source, std::vector<Primitive>& out) {
+  const std::size_t first = out.size();
+  for (const PathPiece& piece : pieces) {
+    const std::size_t before = out.size();
+    const std::string segment = "segment " + std::to_string(before - first);
+    if (piece.kind == PathPiece::Kind::Line) {
+      Primitive p;
+      p.a = piece.p[0];
+      p.b = piece.p[1];
+      p.length = norm(p.b - p.a);
+      if (!(p.length > 0))
+        return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": zero-length segment", {source, ""});
+      out.push_back(p);
+    } else if (piece.kind == PathPiece::Kind::Arc) {
+      Primitive p;
+      p.kind = Primitive::Kind::Arc;
+      p.centre = piece.centre;
+      p.radius = piece.radius;
+      p.startAngle = piece.startAngle;
+      p.sweep = piece.sweep;
+      p.a = p.pointAt(0);
+      p.b = p.pointAt(1);
+      p.length = p.radius * std::abs(p.sweep);
+      if (!(p.length > 0))
+        return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": zero-length arc", {source, ""});
+      if (p.radius < minRadius)
+        return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": arc radius " + std::to_string(p.radius) +
+                                " is smaller than the groove's half-width " + std::to_string(minRadius),
+                            {source, ""});
+      out.push_back(p);
+    } else {
+      const Curve curve = curveOf(piece);
+      double length = 0;  // rough length, to refuse degenerate curves
+      for (int i = 0; i < 64; ++i) length += norm(curve.f((i + 1) / 64.0) - curve.f(i / 64.0));
+      if (!(length > 0))
+        return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": zero-length curve", {source, ""});
+      Flattener flattener{curve, tolerance, minRadius, first, label, source, out};
+      BAKE_RETURN_IF_ERROR(flattener.run(0, 1, 0));
+    }
+    // The joint with the previous piece: a corner when the tangent turns (polyline vertices).
+    if (before > first) {
+      const Vec2 t0 = out[before - 1].tangentAt(1), t1 = out[before].tangentAt(0);
+      out[before].cornerAtStart = std::abs(std::atan2(cross(t0, t1), t0.u * t1.u + t0.v * t1.v)) > 1e-6;
+    }
+  }
+  double s = 0;
+  for (std::size_t i = first; i < out.size(); ++i) {
+    out[i].groove = grooveIndex;
+    out[i].arcStart = s;
+    s += out[i].length;
+  }
+  return Status::ok();
+}
+
+}  // namespace bake::groove
