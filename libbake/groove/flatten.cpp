@@ -178,8 +178,10 @@ Vec2 Primitive::tangentAt(double t) const {
 Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, double minRadius, std::size_t grooveIndex,
                    const std::string& label, const std::string& source, std::vector<Primitive>& out) {
   const std::size_t first = out.size();
+  Vec2 previousEnd;  // the previous piece's exact end tangent
   for (const PathPiece& piece : pieces) {
     const std::size_t before = out.size();
+    Vec2 startTangent, endTangent;
     const std::string segment = "segment " + std::to_string(before - first);
     if (piece.kind == PathPiece::Kind::Line) {
       Primitive p;
@@ -188,6 +190,7 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
       p.length = norm(p.b - p.a);
       if (!(p.length > 0))
         return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": zero-length segment", {source, ""});
+      startTangent = endTangent = p.tangentAt(0);
       out.push_back(p);
     } else if (piece.kind == PathPiece::Kind::Arc) {
       Primitive p;
@@ -205,6 +208,8 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
         return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": arc radius " + std::to_string(p.radius) +
                                 " is smaller than the groove's half-width " + std::to_string(minRadius),
                             {source, ""});
+      startTangent = p.tangentAt(0);
+      endTangent = p.tangentAt(1);
       out.push_back(p);
     } else {
       const Curve curve = curveOf(piece);
@@ -214,12 +219,18 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
         return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": zero-length curve", {source, ""});
       Flattener flattener{curve, tolerance, minRadius, first, label, source, out};
       BAKE_RETURN_IF_ERROR(flattener.run(0, 1, 0));
+      // The curve's own end tangents decide the joints (a Bezier may have a zero derivative at an
+      // end: the flattened piece's tangent stands in then).
+      const Vec2 d0 = curve.d1(0), d1 = curve.d1(1);
+      startTangent = norm(d0) > 0 ? (1 / norm(d0)) * d0 : out[before].tangentAt(0);
+      endTangent = norm(d1) > 0 ? (1 / norm(d1)) * d1 : out.back().tangentAt(1);
     }
     // The joint with the previous piece: a corner when the tangent turns (polyline vertices).
     if (before > first) {
-      const Vec2 t0 = out[before - 1].tangentAt(1), t1 = out[before].tangentAt(0);
+      const Vec2 t0 = previousEnd, t1 = startTangent;
       out[before].cornerAtStart = std::abs(std::atan2(cross(t0, t1), t0.u * t1.u + t0.v * t1.v)) > 1e-6;
     }
+    previousEnd = endTangent;
   }
   double s = 0;
   for (std::size_t i = first; i < out.size(); ++i) {

@@ -257,6 +257,11 @@ TEST(GrooveScene, SvgPathData) {
   for (std::size_t i = 1; i < g0.primitiveCount; ++i) smooth = smooth && !m.primitives[g0.firstPrimitive + i].cornerAtStart;
   EXPECT_TRUE(smooth);
   expectChained(m);
+  // Joints between a curve and a line follow the curve's own end tangent: along it, no corner; across, a corner.
+  const GrooveScene along = parseOk(withGroove({{"svg", "M0.1 0.1 C0.2 0.3 0.3 0.3 0.4 0.4 L0.5 0.5"}}));
+  EXPECT_FALSE(along.primitives.back().cornerAtStart);
+  const GrooveScene across = parseOk(withGroove({{"svg", "M0.1 0.1 C0.2 0.3 0.3 0.3 0.4 0.4 L0.5 0.4"}}));
+  EXPECT_TRUE(across.primitives.back().cornerAtStart);
   expectInvalid(withGroove({{"svg", "M0.1 0.1 A0.1 0.2 0 0 1 0.3 0.1"}}), {"elliptical", "command 1", "(0.1, 0.1)", "/grooves/0/path/svg"});
   expectInvalid(withGroove({{"svg", "L0.1 0.1"}}), {"must start with M"});
   expectInvalid(withGroove({{"svg", "M0.1 0.1 X 3"}}), {"unknown command"});
