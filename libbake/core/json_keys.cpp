@@ -1,0 +1,53 @@
+// JSON input helpers (core/json_keys.h).
+#include "core/json_keys.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace bake {
+
+std::string jsonPointerChild(const std::string& parent, const std::string& key) {
+  std::string escaped;
+  for (char c : key) {
+    if (c == '~') escaped += "~0";
+    else if (c == '/') escaped += "~1";
+    else escaped += c;
+  }
+  return parent + "/" + escaped;
+}
+
+std::string jsonPointerChild(const std::string& parent, std::size_t index) { return parent + "/" + std::to_string(index); }
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known) {
+  for (const auto& [key, value] : object.items()) {
+    if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) != known.end()) continue;
+    std::string best;
+    std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
+    for (const char* k : known) {
+      const std::size_t d = editDistance(key, k);
+      if (d < bestDistance) bestDistance = d, best = k;
+    }
+    std::string message = "unknown key \"" + key + "\"";
+    if (bestDistance <= std::max<std::size_t>(2, key.size() / 3)) message += " (did you mean \"" + best + "\"?)";
+    return UnknownKey{key, message};
+  }
+  return std::nullopt;
+}
+
+}  // namespace bake
