@@ -4,21 +4,11 @@
 # bench-revolution-march (--quick, --profile FILE, --resolutions, --repeats, --march-resolution, --out DIR;
 # default BUILD_DIR/results); --quick also shortens the EDT sizes.
 set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${BUILD_DIR:-$here/build-bench}"
-out="$build/results"
-args=("$@")
-out_given=0
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
+bench_setup "$@"
 quick=0
-for ((i = 0; i < ${#args[@]}; ++i)); do
-  if [[ "${args[i]}" == "--out" && $((i + 1)) -lt ${#args[@]} ]]; then out="${args[i + 1]}"; out_given=1; fi
-  if [[ "${args[i]}" == --out=* ]]; then out="${args[i]#--out=}"; out_given=1; fi
-  if [[ "${args[i]}" == "--quick" ]]; then quick=1; fi
-done
-[[ $out_given == 1 ]] || args=(--out "$out" "${args[@]}")
-cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBAKE_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" --target bench-revolution-march bench-revolution-edt --parallel "$(nproc)"
-mkdir -p "$out"
+for arg in "$@"; do if [[ "$arg" == "--quick" ]]; then quick=1; fi; done
+bench_build bench-revolution-march bench-revolution-edt
 "$build/bench/revolution/bench-revolution-march" "${args[@]}"
 if [[ $quick == 1 ]]; then edt_args=(--sizes 512,1024,2048 --repeats 3); else edt_args=(); fi
 echo "bench-revolution-edt ${edt_args[*]}" >&2
@@ -34,11 +24,7 @@ echo "bench-revolution-edt ${edt_args[*]}" >&2
   awk -F, 'NR > 1 { printf "  %5d^2  %.2f\n", $1, $4 }' "$out/edt.csv"
 } | tee "$out/summary.txt"
 
-if command -v gnuplot >/dev/null; then
-  profiles="$(awk -F, 'NR > 1 { print $1 }' "$out/march.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
-  bake_profile="$(awk -F, 'NR == 2 { print $1 }' "$out/bake.csv")"
-  gnuplot -e "dir='$out'; profiles='$profiles'; bake_profile='$bake_profile'" "$here/bench/revolution/plot.gp"
-  echo "plot: $out/revolution.png"
-else
-  echo "gnuplot not found (apt-get install gnuplot-nox): no plot" >&2
-fi
+profiles="$(awk -F, 'NR > 1 { print $1 }' "$out/march.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
+bake_profile="$(awk -F, 'NR == 2 { print $1 }' "$out/bake.csv")"
+bench_plot "$out/revolution.png" -e "dir='$out'; profiles='$profiles'; bake_profile='$bake_profile'" \
+  "$here/bench/revolution/plot.gp"

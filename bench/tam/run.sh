@@ -5,19 +5,9 @@
 # (--quick, --candidates, --resolutions, --repeats, --threads (default 2), --seed, --detail,
 # --images DIR, --out DIR; default BUILD_DIR/results).
 set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-build="${BUILD_DIR:-$here/build-bench}"
-out="$build/results"
-args=("$@")
-out_given=0
-for ((i = 0; i < ${#args[@]}; ++i)); do
-  if [[ "${args[i]}" == "--out" && $((i + 1)) -lt ${#args[@]} ]]; then out="${args[i + 1]}"; out_given=1; fi
-  if [[ "${args[i]}" == --out=* ]]; then out="${args[i]#--out=}"; out_given=1; fi
-done
-[[ $out_given == 1 ]] || args=(--out "$out" "${args[@]}")
-cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" -DBAKE_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" --target bench-tam --parallel "$(nproc)"
-mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
+bench_setup "$@"
+bench_build bench-tam
 "$build/bench/tam/bench-tam" "${args[@]}"
 
 # The headline figures: per resolution and K, the median time and the quality figures.
@@ -29,10 +19,5 @@ mkdir -p "$out"
                     $2, $1, $3, $4, $5, cv, lfp, $8, $9, $11 }' "$out/tam.csv"
 } | tee "$out/summary.txt"
 
-if command -v gnuplot >/dev/null; then
-  resolutions="$(awk -F, 'NR > 1 { print $2 }' "$out/tam.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
-  gnuplot -e "dir='$out'; resolutions='$resolutions'" "$here/bench/tam/plot.gp"
-  echo "plot: $out/tam.png"
-else
-  echo "gnuplot not found (apt-get install gnuplot-nox): no plot" >&2
-fi
+resolutions="$(awk -F, 'NR > 1 { print $2 }' "$out/tam.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
+bench_plot "$out/tam.png" -e "dir='$out'; resolutions='$resolutions'" "$here/bench/tam/plot.gp"
