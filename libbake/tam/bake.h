@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "bake_formats/tam.h"
 #include "core/cli.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
@@ -19,7 +20,7 @@ struct MaterialSettings {
   double tilesPerUnit = 1;            // hatching parameter scale: TAM tiles per object unit
   double rotationDegrees = 0;         // rotation of the hatching parameters about N
   std::array<double, 2> translation{0, 0};  // shift along T and B, in tiles
-  std::string orientation = "toward-light";  // or "across-light"
+  std::string orientation = format::tam::kOrientationTowardLight;  // or kOrientationAcrossLight
   std::array<double, 3> baseColour{1, 1, 1};  // colour material the TAM is combined with
   std::array<double, 3> position{0, 0, 0};    // node translation
   double scale = 1;                           // uniform node scale

@@ -1,5 +1,9 @@
 #include "render/renderer.h"
 
+#include <bake_formats/geodesic.h>
+#include <bake_formats/revolution.h>
+#include <bake_formats/tam.h>
+
 #include <GL/glcorearb.h>
 
 #include "render/geodesic.h"
@@ -14,9 +18,9 @@ const RendererRegistry& RendererRegistry::builtIn() {
     RendererRegistry r;
     r.add("", [] { return std::make_unique<StandardRenderer>(); });
     // Technique renderers register here: r.add("BAKE_<technique>", ...).
-    r.add("BAKE_geodesic", [] { return std::make_unique<GeodesicRenderer>(); });
-    r.add("BAKE_revolution", [] { return std::make_unique<RevolutionRenderer>(); });
-    r.add("BAKE_hatching", [] { return std::make_unique<HatchingRenderer>(); });
+    r.add(format::geodesic::kExtension, [] { return std::make_unique<GeodesicRenderer>(); });
+    r.add(format::revolution::kExtension, [] { return std::make_unique<RevolutionRenderer>(); });
+    r.add(format::tam::kExtension, [] { return std::make_unique<HatchingRenderer>(); });
     return r;
   }();
   return registry;

@@ -51,8 +51,8 @@ int main(int argc, char** argv) {
   std::string translation;
   app.add_option("--translation", translation, "Shift of the hatching along T and B, in tiles: U,V")->default_str("0,0");
   app.add_option("--orientation", material.orientation, "Strokes toward-light (along the projected light) or across-light")
-      ->check(CLI::IsMember({"toward-light", "across-light"}))
-      ->default_str("toward-light");
+      ->check(CLI::IsMember({bake::format::tam::kOrientationTowardLight, bake::format::tam::kOrientationAcrossLight}))
+      ->default_str(bake::format::tam::kOrientationTowardLight);
   std::string baseColour, position;
   app.add_option("--base-colour", baseColour, "Colour material the TAM is combined with: R,G,B in [0, 1]");
   app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation)");
@@ -64,8 +64,6 @@ int main(int argc, char** argv) {
     if (!parseTriple(baseColour, material.baseColour)) return bake::usageError("--base-colour " + baseColour + ": expected R,G,B");
     if (!parseTriple(position, material.position)) return bake::usageError("--position " + position + ": expected X,Y,Z");
     if (!parsePair(translation, material.translation)) return bake::usageError("--translation " + translation + ": expected U,V");
-    if (material.mesh.empty() != material.package.empty())
-      return bake::usageError("--apply-to and --package go together");
     if (settings.common.printInputs) {
       // The stroke image is listed, not read: a build system asks before the inputs exist.
       BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style, false));
