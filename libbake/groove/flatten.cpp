@@ -210,7 +210,18 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
                             {source, ""});
       startTangent = p.tangentAt(0);
       endTangent = p.tangentAt(1);
-      out.push_back(p);
+      // Arcs are kept exact but split into equal pieces of at most 90 degrees (G1 joints), so that a
+      // primitive's region is always bounded by the half-planes of its two end joints.
+      const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(p.sweep) / (0.5 * kPi) - 1e-9)));
+      for (int k = 0; k < pieces; ++k) {
+        Primitive part = p;
+        part.startAngle = p.startAngle + p.sweep * k / pieces;
+        part.sweep = p.sweep / pieces;
+        part.a = part.pointAt(0);
+        part.b = part.pointAt(1);
+        part.length = p.length / pieces;
+        out.push_back(part);
+      }
     } else {
       const Curve curve = curveOf(piece);
       double length = 0;  // rough length, to refuse degenerate curves

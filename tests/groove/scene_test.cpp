@@ -249,8 +249,14 @@ TEST(GrooveScene, SvgPathData) {
   EXPECT_NEAR(arc.radius, 0.1, 1e-12);
   EXPECT_NEAR(arc.centre.u, 0.6, 1e-12);
   EXPECT_NEAR(arc.centre.v, 0.6, 1e-12);
-  EXPECT_NEAR(std::abs(arc.sweep), kPi, 1e-12);
+  // The half circle is kept exact, split into two quarter arcs joined G1.
+  EXPECT_NEAR(std::abs(arc.sweep), kPi / 2, 1e-12);
   EXPECT_NEAR(arc.b.u, 0.7, 1e-12);
+  const Primitive& firstHalf = m.primitives[g1.firstPrimitive + g1.primitiveCount - 2];
+  EXPECT_EQ(firstHalf.kind, Primitive::Kind::Arc);
+  EXPECT_NEAR(firstHalf.radius, 0.1, 1e-12);
+  EXPECT_NEAR(std::abs(firstHalf.sweep), kPi / 2, 1e-12);
+  EXPECT_FALSE(arc.cornerAtStart);
   // S reflects the previous control point: the joint is smooth, not a corner.
   const Groove& g0 = m.grooves[0];
   bool smooth = true;

@@ -1,0 +1,56 @@
+// Straightening a primitive at a footprint (seed 000 §4: flat facets under a pixel): the tangent line
+// at the foot point of the footprint centre, with the perturbation frozen there.
+#include <cmath>
+#include <numbers>
+
+#include "groove/shade_local.h"
+
+namespace bake::groove {
+
+double perturbationScale(const Perturbation& perturbation, double arcLength) {
+  if (perturbation.kind != Perturbation::Kind::Scale) return 1;
+  return 1 + perturbation.amplitude *
+                 std::sin(2 * std::numbers::pi * arcLength / perturbation.wavelength + perturbation.phase);
+}
+
+double perturbationOffset(const Perturbation& perturbation, double arcLength) {
+  if (perturbation.kind != Perturbation::Kind::Offset) return 0;
+  return perturbation.amplitude *
+         std::sin(2 * std::numbers::pi * arcLength / perturbation.wavelength + perturbation.phase);
+}
+
+LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at) {
+  const Primitive& p = scene.primitives[primitive];
+  const Groove& g = scene.grooves[p.groove];
+  LocalGroove local;
+  local.primitive = primitive;
+  local.profile = &scene.profiles[g.profile];
+  local.material = g.material;
+  double along = 0;  // arc length from the primitive's start, extended beyond its ends
+  if (p.kind == Primitive::Kind::Segment) {
+    const Vec2 t{(p.b.u - p.a.u) / p.length, (p.b.v - p.a.v) / p.length};
+    along = (at.u - p.a.u) * t.u + (at.v - p.a.v) * t.v;
+    local.foot = {p.a.u + along * t.u, p.a.v + along * t.v};
+    local.tangent = t;
+  } else {
+    const double du = at.u - p.centre.u, dv = at.v - p.centre.v;
+    const double angle = std::atan2(dv, du);
+    // Signed angle from the start, in the arc's direction, wrapped to (-pi, pi] around the arc's middle.
+    double delta = angle - (p.startAngle + 0.5 * p.sweep);
+    delta = std::remainder(delta, 2 * std::numbers::pi);
+    const double fromStart = delta + 0.5 * p.sweep;  // signed, counter-clockwise
+    along = p.radius * (p.sweep >= 0 ? fromStart : -fromStart);
+    const double a = p.startAngle + fromStart;
+    local.foot = {p.centre.u + p.radius * std::cos(a), p.centre.v + p.radius * std::sin(a)};
+    const double turn = p.sweep >= 0 ? 1 : -1;
+    local.tangent = {-std::sin(a) * turn, std::cos(a) * turn};
+  }
+  local.binormal = {-local.tangent.v, local.tangent.u};
+  local.arcLength = p.arcStart + along;
+  local.scale = perturbationScale(g.perturbation, local.arcLength);
+  local.offset = perturbationOffset(g.perturbation, local.arcLength);
+  local.joints = jointsOf(scene, primitive);
+  return local;
+}
+
+}  // namespace bake::groove

@@ -1,0 +1,115 @@
+// The rendering model of formats/groove-scene.md: views, the one material model, image output and
+// image error figures, shared by the seed's method, the reference and the benchmark.
+#include "groove/render.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "io/image.h"
+
+namespace bake::groove {
+namespace {
+
+double dot(const Vec3& a, const Vec3& b) { return a.u * b.u + a.v * b.v + a.w * b.w; }
+
+Vec3 normalised(const Vec3& a) {
+  const double n = std::sqrt(dot(a, a));
+  return n > 0 ? Vec3{a.u / n, a.v / n, a.w / n} : a;
+}
+
+}  // namespace
+
+Footprint View::pixel(int x, int y) const {
+  Footprint f;
+  f.centre = {origin.u + (x + 0.5) * axisX.u + (y + 0.5) * axisY.u,
+              origin.v + (x + 0.5) * axisX.v + (y + 0.5) * axisY.v};
+  f.axis1 = axisX;
+  f.axis2 = axisY;
+  return f;
+}
+
+Vec3 directionFromAngles(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+View windowView(Vec2 lower, Vec2 upper, int width, double theta, double phi) {
+  View view;
+  view.toViewer = directionFromAngles(theta, phi);
+  const double pixel = (upper.u - lower.u) / width;
+  view.width = width;
+  view.height = std::max(1, static_cast<int>(std::lround((upper.v - lower.v) / pixel)));
+  // Image rows run down the screen: y grows towards lower v.
+  view.origin = {lower.u, upper.v};
+  view.axisX = {pixel, 0};
+  view.axisY = {0, -pixel};
+  return view;
+}
+
+Rgb RgbImage::at(int x, int y) const {
+  const std::size_t i = (std::size_t(y) * width + x) * 3;
+  return {rgb[i], rgb[i + 1], rgb[i + 2]};
+}
+
+void RgbImage::set(int x, int y, const Rgb& value) {
+  const std::size_t i = (std::size_t(y) * width + x) * 3;
+  for (int c = 0; c < 3; ++c) rgb[i + c] = static_cast<float>(value[c]);
+}
+
+Status writeRgbImage(const std::filesystem::path& path, const RgbImage& image) {
+  Image out;
+  out.width = image.width;
+  out.height = image.height;
+  out.channels = 3;
+  out.pixels = image.rgb;
+  const bool exr = path.extension() == ".exr";
+  return writeImage(path, out, exr ? PixelType::Float : PixelType::U8);
+}
+
+Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting) {
+  const double cosLight = dot(normal, lighting.toLight);
+  if (cosLight <= 0) return {0, 0, 0};
+  const Vec3 half = normalised({toViewer.u + lighting.toLight.u, toViewer.v + lighting.toLight.v,
+                                toViewer.w + lighting.toLight.w});
+  const double n = material.shininess;
+  const double lobe = (n + 2) / (8 * std::numbers::pi) * std::pow(std::max(dot(normal, half), 0.0), n);
+  Rgb out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = (material.albedo[c] / std::numbers::pi + material.specular[c] * lobe) * cosLight * lighting.radiance[c];
+  return out;
+}
+
+Vec3 reflect(const Vec3& toViewer, const Vec3& normal) {
+  const double d = 2 * dot(toViewer, normal);
+  return normalised({d * normal.u - toViewer.u, d * normal.v - toViewer.v, d * normal.w - toViewer.w});
+}
+
+ImageError compareImages(const RgbImage& image, const RgbImage& reference) {
+  ImageError e;
+  const std::size_t pixels = std::size_t(reference.width) * reference.height;
+  if (image.width != reference.width || image.height != reference.height || pixels == 0) {
+    e.rmse = e.relativeMse = e.p99 = e.max = std::numeric_limits<double>::infinity();
+    return e;
+  }
+  double squared = 0, referenceSquared = 0;
+  std::vector<double> pixelError(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    double worst = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(image.rgb[i * 3 + c]) - reference.rgb[i * 3 + c];
+      squared += d * d;
+      referenceSquared += double(reference.rgb[i * 3 + c]) * reference.rgb[i * 3 + c];
+      worst = std::max(worst, std::abs(d));
+    }
+    pixelError[i] = worst;
+  }
+  e.rmse = std::sqrt(squared / (3.0 * pixels));
+  e.relativeMse = referenceSquared > 0 ? squared / referenceSquared : 0;
+  std::sort(pixelError.begin(), pixelError.end());
+  e.p99 = pixelError[std::min(pixels - 1, static_cast<std::size_t>(std::ceil(0.99 * pixels)) - 1)];
+  e.max = pixelError.back();
+  return e;
+}
+
+}  // namespace bake::groove

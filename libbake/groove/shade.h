@@ -1,0 +1,34 @@
+// The seed's method on the CPU (seed 000 §4-§7), the oracle for the runtime shader: grooves found
+// through the grid with the enlarged footprint box (§4.1), line sampling of the footprint projected
+// on the cross-section plane for isolated grooves (§5: clipping, masking and shadowing by ordered
+// projection, Eq. 1), area sampling with polygon clipping where the box meets a special-case record
+// (§6), and mirror inter-reflections by recursion (§7).
+#pragma once
+
+#include "groove/grid.h"
+#include "groove/render.h"
+#include "groove/scene.h"
+
+namespace bake::groove {
+
+struct ShadeStats {
+  bool special = false;       // area sampling was used
+  std::uint32_t primitives = 0;  // primitives found under the enlarged box
+};
+
+class SeedShader {
+ public:
+  SeedShader(const GrooveScene& scene, const GrooveGrid& grid) : scene_(scene), grid_(grid) {}
+  // The pixel value of one footprint seen from `toViewer`.
+  Rgb shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
+            ShadeStats* stats = nullptr) const;
+
+ private:
+  const GrooveScene& scene_;
+  const GrooveGrid& grid_;
+};
+
+RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
+                    int threads);
+
+}  // namespace bake::groove

@@ -1,0 +1,47 @@
+// Internal to the seed's method (shade.cpp, line_sampling.cpp, area_sampling.cpp): a primitive near
+// a footprint, straightened at the footprint centre. Seed 000 §4 assumes the geometry under a pixel is
+// a set of flat facets: the path is replaced by its tangent line at the foot point of the footprint
+// centre, and the perturbation is frozen at that foot point.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "groove/grid.h"
+#include "groove/render.h"
+#include "groove/scene.h"
+
+namespace bake::groove {
+
+struct LocalGroove {
+  std::uint32_t primitive = 0;
+  const Profile* profile = nullptr;
+  std::size_t material = 0;
+  Vec2 foot;               // the foot point of the footprint centre on the primitive's line or circle
+  Vec2 tangent, binormal;  // unit; binormal = left normal (b > 0 to the left)
+  double offset = 0;       // perturbation frozen at the foot point: b' = (b - offset) / scale
+  double scale = 1;
+  double arcLength = 0;    // s at the foot point
+  PrimitiveJoints joints;  // where the primitive's region stops
+  // The profile point k in base-plane coordinates relative to the foot: b along binormal, h up.
+  double profileB(std::size_t k) const { return offset + scale * profile->points[k].u; }
+  double profileH(std::size_t k) const { return scale * profile->points[k].v; }
+};
+
+// `at` is the footprint centre; for a wrapping scene, the caller passes the copy of the centre
+// nearest the primitive.
+LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at);
+
+double perturbationScale(const Perturbation& perturbation, double arcLength);
+double perturbationOffset(const Perturbation& perturbation, double arcLength);
+
+// §5: line sampling for footprints without special cases (line_sampling.cpp).
+Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+               const Vec3& toViewer, const Lighting& lighting);
+
+// §6: area sampling with polygon clipping where a special-case record is under the box
+// (area_sampling.cpp).
+Rgb areaSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+               const Vec3& toViewer, const Lighting& lighting);
+
+}  // namespace bake::groove
