@@ -1,0 +1,229 @@
+// bench-groove: the seed's method on the CPU (libbake/groove/shade.h, seed 000 §4-§7) against the
+// independent ray-traced reference (reference.h) on the scene set of bench/groove/scenes, rendered
+// from the views of cases.json (view and light sweeps, footprint sizes, bounce counts). Per view:
+// the median time per frame of the method, the reference's time at --spp samples per pixel, the
+// method's error against the reference (RMSE, relative MSE, 99th percentile), and the reference's own
+// noise floor: the RMSE between two reference renders with different seeds. The criterion of the
+// method is an RMSE within 3x that floor at 50x less cost per pixel. Writes groove.csv (one row per
+// view) and, with --images, EXR images of the method and the reference; progress on stderr.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "groove/grid.h"
+#include "groove/reference.h"
+#include "groove/render.h"
+#include "groove/scene.h"
+#include "groove/shade.h"
+
+namespace {
+
+using namespace bake::groove;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  std::string cases = "bench/groove/cases.json";
+  std::string out = "build-bench/results";
+  std::string images;
+  std::string only;  // run the cases whose name contains this
+  int spp = 256;
+  int repeats = 3;
+  int threads = 2;
+  bool quick = false;  // first view of every case, 64 spp
+};
+
+// One rendering to measure: a scene, a window of it, a pixel count across, a view, a light.
+struct Job {
+  std::string caseName, sceneFile;
+  Vec2 lower, upper;
+  int width = 32;
+  double viewTheta = 0, viewPhi = 0, lightTheta = 0, lightPhi = 0;
+  int bounces = 0;
+};
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180; }
+
+std::vector<double> numbers(const nlohmann::json& j, const char* key, double fallback) {
+  if (!j.contains(key)) return {fallback};
+  if (j[key].is_number()) return {j[key].get<double>()};
+  return j[key].get<std::vector<double>>();
+}
+
+// cases.json: {"cases": [{"name", "scene", "window": [[u0, v0], [u1, v1]], "width": n or [n...],
+// "view": {"theta": deg or [...], "phi": ...}, "light": {"theta", "phi"}, "bounces": n or [...]}]}:
+// every combination of the listed values is one job.
+std::vector<Job> readJobs(const std::string& path, const std::string& only, bool quick) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read");
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  std::vector<Job> jobs;
+  for (const auto& c : doc.at("cases")) {
+    const std::string name = c.at("name");
+    if (!only.empty() && name.find(only) == std::string::npos) continue;
+    const auto& window = c.at("window");
+    const nlohmann::json view = c.value("view", nlohmann::json::object());
+    const nlohmann::json light = c.value("light", nlohmann::json::object());
+    std::size_t before = jobs.size();
+    for (double width : numbers(c, "width", 32))
+      for (double vt : numbers(view, "theta", 0))
+        for (double vp : numbers(view, "phi", 0))
+          for (double lt : numbers(light, "theta", 0))
+            for (double lp : numbers(light, "phi", 0))
+              for (double bounces : numbers(c, "bounces", 0)) {
+                if (quick && jobs.size() > before) continue;
+                Job job;
+                job.caseName = name;
+                job.sceneFile = (std::filesystem::path(path).parent_path() / "scenes" / c.at("scene").get<std::string>()).string();
+                job.lower = {window[0][0], window[0][1]};
+                job.upper = {window[1][0], window[1][1]};
+                job.width = static_cast<int>(width);
+                job.viewTheta = vt;
+                job.viewPhi = vp;
+                job.lightTheta = lt;
+                job.lightPhi = lp;
+                job.bounces = static_cast<int>(bounces);
+                jobs.push_back(job);
+              }
+  }
+  return jobs;
+}
+
+template <typename F>
+double secondsOf(F&& f) {
+  const auto start = Clock::now();
+  f();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct LoadedScene {
+  std::string file;
+  GrooveScene scene;
+  GrooveGrid grid;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  CLI::App app{"bench-groove: the seed's groove shading against the ray-traced reference, error against time"};
+  app.add_option("--cases", o.cases, "the views to render (cases.json)");
+  app.add_option("--out", o.out, "results folder (groove.csv)");
+  app.add_option("--images", o.images, "write method and reference EXR images here");
+  app.add_option("--only", o.only, "only the cases whose name contains this");
+  app.add_option("--spp", o.spp, "reference samples per pixel (a square)");
+  app.add_option("--repeats", o.repeats, "method renders per view (the median is kept)");
+  app.add_option("--threads", o.threads, "threads for both renderers");
+  app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
+  CLI11_PARSE(app, argc, argv);
+  if (o.quick) o.spp = std::min(o.spp, 64);
+
+  std::vector<Job> jobs;
+  try {
+    jobs = readJobs(o.cases, o.only, o.quick);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench-groove: %s\n", e.what());
+    return 2;
+  }
+  std::filesystem::create_directories(o.out);
+  if (!o.images.empty()) std::filesystem::create_directories(o.images);
+  std::ofstream csv(std::filesystem::path(o.out) / "groove.csv");
+  csv << "case,scene,width,pixels,view_theta,view_phi,light_theta,light_phi,bounces,footprint_over_width,"
+         "special_fraction,method_frame_s,method_ns_per_pixel,reference_frame_s,reference_ns_per_pixel,"
+         "cost_ratio,rmse,relative_mse,p99,max,noise_floor,rmse_over_floor\n";
+
+  LoadedScene loaded;
+  std::size_t index = 0;
+  for (const Job& job : jobs) {
+    ++index;
+    if (loaded.file != job.sceneFile) {
+      auto scene = readGrooveScene(job.sceneFile);
+      if (!scene.isOk()) {
+        std::fprintf(stderr, "bench-groove: %s\n", scene.status().message().c_str());
+        return 3;
+      }
+      loaded.scene = std::move(scene.value());
+      GridSettings gridSettings;
+      gridSettings.threads = o.threads;
+      auto grid = buildGrooveGrid(loaded.scene, gridSettings);
+      if (!grid.isOk()) {
+        std::fprintf(stderr, "bench-groove: %s\n", grid.status().message().c_str());
+        return 3;
+      }
+      loaded.grid = std::move(grid.value());
+      loaded.file = job.sceneFile;
+    }
+    const View view = windowView(job.lower, job.upper, job.width, radians(job.viewTheta), radians(job.viewPhi));
+    Lighting lighting;
+    lighting.toLight = directionFromAngles(radians(job.lightTheta), radians(job.lightPhi));
+    lighting.maxBounces = job.bounces;
+
+    RgbImage method;
+    std::vector<double> times;
+    for (int r = 0; r < std::max(1, o.repeats); ++r)
+      times.push_back(secondsOf([&] { method = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads); }));
+    const double methodSeconds = median(times);
+
+    // How many pixels took the special-case path.
+    std::size_t special = 0;
+    {
+      const SeedShader shader(loaded.scene, loaded.grid);
+      for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x) {
+          ShadeStats stats;
+          shader.shade(view.pixel(x, y), view.toViewer, lighting, &stats);
+          special += stats.special ? 1 : 0;
+        }
+    }
+
+    ReferenceSettings reference;
+    reference.samplesPerPixel = o.spp;
+    reference.threads = o.threads;
+    RgbImage truth, second;
+    reference.seed = 1;
+    const double referenceSeconds = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
+    reference.seed = 2;
+    second = renderReference(loaded.scene, view, lighting, reference);
+
+    const ImageError error = compareImages(method, truth);
+    const ImageError floor = compareImages(second, truth);
+    const double pixels = double(view.width) * view.height;
+    const double footprint = std::hypot(view.axisX.u, view.axisX.v);
+    const double grooveWidth = 2 * loaded.scene.wmax;
+    const std::string sceneName = std::filesystem::path(job.sceneFile).stem().string();
+    char row[1024];
+    std::snprintf(row, sizeof row,
+                  "%s,%s,%d,%.0f,%g,%g,%g,%g,%d,%.6g,%.4f,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g\n",
+                  job.caseName.c_str(), sceneName.c_str(), job.width, pixels, job.viewTheta, job.viewPhi,
+                  job.lightTheta, job.lightPhi, job.bounces, grooveWidth > 0 ? footprint / grooveWidth : 0,
+                  special / pixels, methodSeconds, 1e9 * methodSeconds / pixels, referenceSeconds,
+                  1e9 * referenceSeconds / pixels, referenceSeconds / methodSeconds, error.rmse, error.relativeMse,
+                  error.p99, error.max, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0);
+    csv << row << std::flush;
+    std::fprintf(stderr, "[%zu/%zu] %s view %g/%g light %g/%g: rmse %.3g (floor %.3g, x%.2f), %.0f ns/px vs %.0f ns/px\n",
+                 index, jobs.size(), job.caseName.c_str(), job.viewTheta, job.viewPhi, job.lightTheta, job.lightPhi,
+                 error.rmse, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0.0, 1e9 * methodSeconds / pixels,
+                 1e9 * referenceSeconds / pixels);
+    if (!o.images.empty()) {
+      char stem[256];
+      std::snprintf(stem, sizeof stem, "%s-%03zu", job.caseName.c_str(), index);
+      const std::filesystem::path dir(o.images);
+      (void)writeRgbImage(dir / (std::string(stem) + "-method.exr"), method);
+      (void)writeRgbImage(dir / (std::string(stem) + "-reference.exr"), truth);
+    }
+  }
+  return 0;
+}
