@@ -1,8 +1,204 @@
-// PLACEHOLDER (replaced by the grid build): keeps the library linking meanwhile.
-#include "groove/grid.h"
+// The groove grid (seed 000 §4.1, §4.2): a uniform grid over the domain whose cells list every
+// primitive whose region can touch them, as a CSR "compact grid", plus the special-case records.
+//
+// Cell size (§4.1: "similar to the average width of the grooves"): the mean of 2 wmax over the
+// grooves (perturbation included), rounded so the domain holds a whole number of cells per axis,
+// then grown until the grid has at most maxCells cells. References: each primitive's region polygon
+// (grid_region.cpp) is rasterised into the cells it meets, in parallel over fixed blocks of
+// primitives; a count pass, a prefix sum (cellStart) and a fill pass in primitive order then give
+// every cell its references in ascending order, whatever the thread count. Records
+// (grid_records.cpp) get the same CSR over the cells their boxes meet.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/parallel.h"
+#include "groove/grid_stages.h"
+
 namespace bake::groove {
-Result<GrooveGrid> buildGrooveGrid(const GrooveScene&, const GridSettings&) { return internalError("grid: not yet"); }
-void GrooveGrid::primitivesInBox(Vec2, Vec2, std::vector<std::uint32_t>& out) const { out.clear(); }
-void GrooveGrid::recordsInBox(Vec2, Vec2, std::vector<std::uint32_t>& out) const { out.clear(); }
-GridStats gridStats(const GrooveGrid&) { return {}; }
+namespace {
+
+using grid_detail::Lattice;
+using grid_detail::Polygon;
+
+constexpr std::size_t kPrimitiveBlock = 512;
+
+double meanGrooveWidth(const GrooveScene& scene) {
+  if (scene.grooves.empty()) return std::max(scene.domain[0], scene.domain[1]);
+  double sum = 0;
+  for (const Groove& g : scene.grooves) sum += 2 * g.wmax;
+  return sum / double(scene.grooves.size());
+}
+
+std::uint64_t cellsAlong(double extent, double size) {
+  const double count = std::round(extent / size);
+  return count < 1 ? 1 : count > 4e9 ? std::uint64_t(4e9) : std::uint64_t(count);
+}
+
+Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Lattice& lattice) {
+  if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize))
+    return invalidInput("grid: cell size " + std::to_string(settings.cellSize) + " must be finite and >= 0");
+  if (settings.maxCells < 1) return invalidInput("grid: the largest cell count must be at least 1");
+  const double U = scene.domain[0], V = scene.domain[1];
+  double size = settings.cellSize > 0 ? settings.cellSize : meanGrooveWidth(scene);
+  auto count = [&] { return double(cellsAlong(U, size)) * double(cellsAlong(V, size)); };
+  if (settings.cellSize > 0 && count() > double(settings.maxCells))
+    return invalidInput("grid: cell size " + std::to_string(settings.cellSize) + " gives " +
+                        std::to_string(count()) + " cells, more than the largest count " +
+                        std::to_string(settings.maxCells));
+  // Grow by at least 1% a step, by the square root of the excess when it is large.
+  while (count() > double(settings.maxCells)) size *= std::max(1.01, std::sqrt(count() / double(settings.maxCells)));
+  lattice.cells[0] = static_cast<std::uint32_t>(cellsAlong(U, size));
+  lattice.cells[1] = static_cast<std::uint32_t>(cellsAlong(V, size));
+  lattice.origin = {0, 0};
+  lattice.domain = {U, V};
+  lattice.cellSize = {U / lattice.cells[0], V / lattice.cells[1]};
+  lattice.wrap = scene.wrapRepeat;
+  return {};
+}
+
+Lattice latticeOf(const GrooveGrid& grid) {
+  Lattice lattice;
+  lattice.origin = grid.origin;
+  lattice.cellSize = grid.cellSize;
+  lattice.cells[0] = grid.cells[0];
+  lattice.cells[1] = grid.cells[1];
+  lattice.domain = {grid.cellSize.u * grid.cells[0], grid.cellSize.v * grid.cells[1]};
+  lattice.wrap = grid.wrapRepeat;
+  return lattice;
+}
+
+// Items' cell lists, in item order: cellsOf(item, out) appends the item's cells.
+template <class CellsOf>
+void cellListsInOrder(std::size_t count, unsigned threads, CellsOf cellsOf, std::vector<std::uint32_t>& itemStart,
+                      std::vector<std::uint32_t>& itemCells) {
+  const std::size_t blocks = (count + kPrimitiveBlock - 1) / kPrimitiveBlock;
+  std::vector<std::vector<std::uint32_t>> blockCells(blocks), blockCounts(blocks);
+  parallelForBlocks(blocks, 1, threads, [&](std::size_t b, std::size_t) {
+    const std::size_t begin = b * kPrimitiveBlock, end = std::min(count, begin + kPrimitiveBlock);
+    for (std::size_t item = begin; item < end; ++item) {
+      const std::size_t before = blockCells[b].size();
+      cellsOf(item, blockCells[b]);
+      blockCounts[b].push_back(static_cast<std::uint32_t>(blockCells[b].size() - before));
+    }
+  });
+  itemStart.assign(count + 1, 0);
+  std::size_t item = 0, total = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    for (const std::uint32_t n : blockCounts[b]) {
+      total += n;
+      itemStart[++item] = static_cast<std::uint32_t>(std::min<std::size_t>(total, UINT32_MAX));
+    }
+  }
+  itemCells.clear();
+  itemCells.reserve(total);
+  for (auto& cells : blockCells) itemCells.insert(itemCells.end(), cells.begin(), cells.end());
+}
+
+// Turns per-item cell lists into the per-cell CSR: count, prefix sum, fill in item order.
+Status buildCsr(std::uint64_t cellCount, const std::vector<std::uint32_t>& itemStart,
+                const std::vector<std::uint32_t>& itemCells, const char* what, std::vector<std::uint32_t>& cellStart,
+                std::vector<std::uint32_t>& refs) {
+  if (itemCells.size() >= UINT32_MAX)
+    return unsupported(std::string("grid: more than 2^32 ") + what + " references; use a larger cell size");
+  cellStart.assign(cellCount + 1, 0);
+  for (const std::uint32_t cell : itemCells) ++cellStart[cell + 1];
+  for (std::uint64_t c = 0; c < cellCount; ++c) cellStart[c + 1] += cellStart[c];
+  std::vector<std::uint32_t> cursor(cellStart.begin(), cellStart.end() - 1);
+  refs.assign(itemCells.size(), 0);
+  const std::size_t items = itemStart.size() - 1;
+  for (std::size_t item = 0; item < items; ++item)
+    for (std::uint32_t k = itemStart[item]; k < itemStart[item + 1]; ++k)
+      refs[cursor[itemCells[k]]++] = static_cast<std::uint32_t>(item);
+  return {};
+}
+
+void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start, const std::vector<std::uint32_t>& refs,
+                Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) {
+  out.clear();
+  if (grid.cellCount() == 0 || !(lower.u <= upper.u) || !(lower.v <= upper.v)) return;
+  std::vector<std::uint32_t> cells;
+  grid_detail::cellsOfBox(latticeOf(grid), lower, upper, cells);
+  for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+}  // namespace
+
+void GrooveGrid::primitivesInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const {
+  gatherRefs(*this, cellStart, primitiveRefs, lower, upper, out);
+}
+
+void GrooveGrid::recordsInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const {
+  gatherRefs(*this, recordStart, recordRefs, lower, upper, out);
+}
+
+GridStats gridStats(const GrooveGrid& grid) {
+  GridStats stats;
+  const std::uint64_t cells = grid.cellCount();
+  if (cells > 0) stats.meanRefsPerCell = double(grid.primitiveRefs.size()) / double(cells);
+  for (std::uint64_t c = 0; c < cells && c + 1 < grid.cellStart.size(); ++c) {
+    const std::uint32_t n = grid.cellStart[c + 1] - grid.cellStart[c];
+    stats.maxRefsPerCell = std::max(stats.maxRefsPerCell, n);
+    if (n == 0) ++stats.emptyCells;
+  }
+  for (const SpecialRecord& record : grid.records) {
+    if (record.kind == SpecialRecord::Kind::Intersection) ++stats.intersections;
+    if (record.kind == SpecialRecord::Kind::End) ++stats.ends;
+    if (record.kind == SpecialRecord::Kind::Corner) ++stats.corners;
+  }
+  return stats;
+}
+
+Result<GrooveGrid> buildGrooveGrid(const GrooveScene& scene, const GridSettings& settings) {
+  Lattice lattice;
+  BAKE_RETURN_IF_ERROR(chooseCells(scene, settings, lattice));
+  if (scene.primitives.size() >= UINT32_MAX) return unsupported("grid: more than 2^32 primitives");
+  const unsigned threads = resolveThreadCount(settings.threads < 0 ? 0u : unsigned(settings.threads));
+  const double cap = grid_detail::reachCap(scene);
+  const std::size_t count = scene.primitives.size();
+
+  std::vector<Polygon> regions(count);
+  parallelFor(count, threads, [&](std::size_t i) { regions[i] = grid_detail::regionPolygon(scene, i, cap); });
+
+  std::vector<std::uint32_t> primitiveCellStart, primitiveCells;
+  cellListsInOrder(
+      count, threads,
+      [&](std::size_t i, std::vector<std::uint32_t>& out) { grid_detail::cellsOfPolygon(lattice, regions[i], out); },
+      primitiveCellStart, primitiveCells);
+
+  GrooveGrid grid;
+  grid.origin = lattice.origin;
+  grid.cellSize = lattice.cellSize;
+  grid.cells[0] = lattice.cells[0];
+  grid.cells[1] = lattice.cells[1];
+  grid.wrapRepeat = lattice.wrap;
+  BAKE_RETURN_IF_ERROR(
+      buildCsr(grid.cellCount(), primitiveCellStart, primitiveCells, "primitive", grid.cellStart, grid.primitiveRefs));
+
+  grid_detail::RecordInputs inputs;
+  inputs.scene = &scene;
+  inputs.lattice = &lattice;
+  inputs.regions = &regions;
+  inputs.cellStart = &grid.cellStart;
+  inputs.primitiveRefs = &grid.primitiveRefs;
+  inputs.primitiveCellStart = &primitiveCellStart;
+  inputs.primitiveCells = &primitiveCells;
+  inputs.cap = cap;
+  inputs.threads = threads;
+  grid.records = grid_detail::findRecords(inputs);
+  if (grid.records.size() >= UINT32_MAX) return unsupported("grid: more than 2^32 special-case records");
+
+  std::vector<std::uint32_t> recordCellStart, recordCells;
+  cellListsInOrder(
+      grid.records.size(), threads,
+      [&](std::size_t r, std::vector<std::uint32_t>& out) {
+        grid_detail::cellsOfBox(lattice, grid.records[r].lower, grid.records[r].upper, out);
+      },
+      recordCellStart, recordCells);
+  BAKE_RETURN_IF_ERROR(buildCsr(grid.cellCount(), recordCellStart, recordCells, "record", grid.recordStart, grid.recordRefs));
+  return grid;
+}
+
 }  // namespace bake::groove

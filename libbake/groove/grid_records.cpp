@@ -1,0 +1,250 @@
+// Special-case records (seed 000 §4.2, Figure 5): the places where a footprint cannot be shaded from
+// one cross-section and needs area sampling (§6).
+//
+// - End: every open end; the box is the end point ± wmax, which holds the flat cut and its walls.
+// - Corner: every joint flagged cornerAtStart (never the G1 joints of a flattened curve); the box is
+//   the joint point ± the mitre's reach, wmax / cos(turn / 2) (twice that when an arc is involved,
+//   see grid_region.cpp), capped for near-reversals.
+// - Intersection: every pair of primitives whose region polygons overlap, of different grooves or
+//   non-adjacent in one groove, unless they are parallel (straight bands within kParallelSine, or
+//   concentric arcs: those share one cross-section plane and are shaded as one combined section).
+//   Pieces of one groove joined by G1 joints over less than a quarter turn are not paired either:
+//   their regions meet only where the curve's normals cross, at the centre of curvature, which the
+//   radius check keeps at the band's edge. Candidate pairs come from shared cells (each primitive
+//   pairs with the later primitives of its cells), never from all pairs. The point is where the paths
+//   cross inside the overlap, else the overlap's centre (the nearest approach); the box is the
+//   bounding box of the two region polygons' intersection (exact for segments, conservative for arcs).
+// In a repeating scene the second primitive is moved by whole domain periods next to the first.
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "groove/grid_stages.h"
+
+namespace bake::groove::grid_detail {
+namespace {
+
+constexpr double kParallelSine = 1e-3;      // |sin| of the crossing angle below which bands are parallel
+constexpr double kConcentric = 1e-9;        // centre distance, relative to the radii, of concentric arcs
+constexpr double kMinOverlap = 1e-5;        // overlap area, relative to wmax^2, that counts as overlap
+constexpr double kQuarterTurn = 1.5707963267948966;
+constexpr std::size_t kBlock = 256;
+
+double grooveWidth(const GrooveScene& scene, std::size_t primitive) {
+  return scene.grooves[scene.primitives[primitive].groove].wmax;
+}
+
+SpecialRecord boxRecord(SpecialRecord::Kind kind, Vec2 point, double reach, std::uint32_t first, std::uint32_t second) {
+  SpecialRecord record;
+  record.kind = kind;
+  record.point = point;
+  record.lower = {point.u - reach, point.v - reach};
+  record.upper = {point.u + reach, point.v + reach};
+  record.primitive[0] = first;
+  record.primitive[1] = second;
+  return record;
+}
+
+SpecialRecord endRecord(const GrooveScene& scene, std::size_t index, bool atStart) {
+  const Primitive& p = scene.primitives[index];
+  const double reach = grooveWidth(scene, index) * (1 + 1e-7);
+  const auto i = static_cast<std::uint32_t>(index);
+  return boxRecord(SpecialRecord::Kind::End, atStart ? p.a : p.b, reach, i, i);
+}
+
+std::size_t previousInGroove(const GrooveScene& scene, std::size_t index) {
+  const Groove& g = scene.grooves[scene.primitives[index].groove];
+  return index > g.firstPrimitive ? index - 1 : g.firstPrimitive + g.primitiveCount - 1;
+}
+
+SpecialRecord cornerRecord(const GrooveScene& scene, std::size_t index, double cap) {
+  const Primitive& p = scene.primitives[index];
+  const std::size_t before = previousInGroove(scene, index);
+  const JointLine joint = jointsOf(scene, index).start;
+  const double halfTurnCos = std::abs(dot(joint.normal, p.tangentAt(0)));
+  const bool arc = p.kind == Primitive::Kind::Arc || scene.primitives[before].kind == Primitive::Kind::Arc;
+  const double w = grooveWidth(scene, index) * (arc ? 2 : 1);
+  const double reach = std::min(w / std::max(halfTurnCos, 1e-12), cap) * (1 + 1e-7);
+  return boxRecord(SpecialRecord::Kind::Corner, p.a, reach, static_cast<std::uint32_t>(before),
+                   static_cast<std::uint32_t>(index));
+}
+
+double turnOf(const Primitive& p) { return p.kind == Primitive::Kind::Arc ? std::abs(p.sweep) : 0.0; }
+
+// Walks from `from` forward (wrapping in a closed groove) to `to` over G1 joints; true when it gets
+// there turning less than a quarter turn in between.
+bool smoothWalk(const GrooveScene& scene, const Groove& g, std::size_t from, std::size_t to) {
+  const std::size_t first = g.firstPrimitive, last = first + g.primitiveCount - 1;
+  double turn = 0;
+  std::size_t k = from;
+  while (k != to) {
+    const std::size_t next = k == last ? first : k + 1;
+    if ((k == last && !g.closed) || scene.primitives[next].cornerAtStart) return false;
+    if (next != to) turn += turnOf(scene.primitives[next]);
+    if (turn >= kQuarterTurn) return false;
+    k = next;
+  }
+  return true;
+}
+
+// Pieces of one groove that meet at a joint, or along a gently turning G1 chain, do not cross.
+bool sameGrooveNeighbours(const GrooveScene& scene, std::size_t i, std::size_t j) {
+  const Primitive& a = scene.primitives[i];
+  if (a.groove != scene.primitives[j].groove) return false;
+  const Groove& g = scene.grooves[a.groove];
+  const std::size_t first = g.firstPrimitive, last = first + g.primitiveCount - 1;
+  if (j == i + 1 || (g.closed && i == first && j == last)) return true;
+  return smoothWalk(scene, g, i, j) || (g.closed && smoothWalk(scene, g, j, i));
+}
+
+bool parallel(const Primitive& a, const Primitive& b) {
+  if (a.kind == Primitive::Kind::Segment && b.kind == Primitive::Kind::Segment)
+    return std::abs(cross(a.tangentAt(0), b.tangentAt(0))) <= kParallelSine;
+  if (a.kind == Primitive::Kind::Arc && b.kind == Primitive::Kind::Arc) {
+    const Vec2 d = sub(a.centre, b.centre);
+    return std::hypot(d.u, d.v) <= kConcentric * (a.radius + b.radius);
+  }
+  return false;
+}
+
+// Where the lines or circles carrying two primitives cross (`shift` moves the second).
+std::vector<Vec2> pathCrossings(const Primitive& a, const Primitive& b, Vec2 shift) {
+  std::vector<Vec2> points;
+  auto lineLine = [&](Vec2 p, Vec2 t, Vec2 q, Vec2 s) {
+    const double d = cross(t, s);
+    if (std::abs(d) > 1e-15) points.push_back(add(p, mul(cross(sub(q, p), s) / d, t)));
+  };
+  auto lineCircle = [&](Vec2 p, Vec2 t, Vec2 c, double r) {
+    const Vec2 f = sub(p, c);
+    const double half = dot(f, t), disc = half * half - (dot(f, f) - r * r);
+    if (disc < 0) return;
+    for (const double sign : {-1.0, 1.0}) points.push_back(add(p, mul(-half + sign * std::sqrt(disc), t)));
+  };
+  auto circleCircle = [&](Vec2 c0, double r0, Vec2 c1, double r1) {
+    const Vec2 d = sub(c1, c0);
+    const double dist = std::hypot(d.u, d.v);
+    if (dist == 0 || dist > r0 + r1 || dist < std::abs(r0 - r1)) return;
+    const double along = (dist * dist + r0 * r0 - r1 * r1) / (2 * dist), across = std::sqrt(std::max(0.0, r0 * r0 - along * along));
+    const Vec2 e = mul(1 / dist, d), mid = add(c0, mul(along, e));
+    for (const double sign : {-1.0, 1.0}) points.push_back(add(mid, mul(sign * across, leftNormal(e))));
+  };
+  const bool aLine = a.kind == Primitive::Kind::Segment, bLine = b.kind == Primitive::Kind::Segment;
+  const Vec2 bStart = add(b.a, shift), bCentre = add(b.centre, shift);
+  if (aLine && bLine) lineLine(a.a, a.tangentAt(0), bStart, b.tangentAt(0));
+  if (aLine && !bLine) lineCircle(a.a, a.tangentAt(0), bCentre, b.radius);
+  if (!aLine && bLine) lineCircle(bStart, b.tangentAt(0), a.centre, a.radius);
+  if (!aLine && !bLine) circleCircle(a.centre, a.radius, bCentre, b.radius);
+  return points;
+}
+
+Vec2 centreOf(const Polygon& polygon) {
+  Vec2 sum;
+  for (const Vec2& p : polygon.points) sum = add(sum, p);
+  return mul(1.0 / double(polygon.points.size()), sum);
+}
+
+bool inside(const Polygon& polygon, Vec2 x) {
+  const std::size_t count = polygon.points.size();
+  for (std::size_t k = 0; k < count; ++k)
+    if (cross(sub(polygon.points[(k + 1) % count], polygon.points[k]), sub(x, polygon.points[k])) < 0) return false;
+  return true;
+}
+
+// The crossing point nearest the overlap's centre among those inside it, else that centre.
+Vec2 crossingPoint(const Primitive& a, const Primitive& b, Vec2 shift, const Polygon& overlap) {
+  const Vec2 centre = centreOf(overlap);
+  Vec2 best = centre;
+  double bestDistance = INFINITY;
+  for (const Vec2& x : pathCrossings(a, b, shift)) {
+    const double distance = std::hypot(x.u - centre.u, x.v - centre.v);
+    if (inside(overlap, x) && distance < bestDistance) {
+      best = x;
+      bestDistance = distance;
+    }
+  }
+  return best;
+}
+
+// The domain periods to try moving the second primitive by: none, or in a repeating scene the
+// nearest period and its eight neighbours.
+std::vector<Vec2> periodShifts(const Lattice& lattice, const Polygon& a, const Polygon& b) {
+  if (!lattice.wrap) return {Vec2{0, 0}};
+  const double U = lattice.domain.u, V = lattice.domain.v;
+  const double ku = std::round(((a.lower.u + a.upper.u) - (b.lower.u + b.upper.u)) / (2 * U));
+  const double kv = std::round(((a.lower.v + a.upper.v) - (b.lower.v + b.upper.v)) / (2 * V));
+  std::vector<Vec2> shifts;
+  for (int dv = -1; dv <= 1; ++dv)
+    for (int du = -1; du <= 1; ++du) shifts.push_back({(ku + du) * U, (kv + dv) * V});
+  return shifts;
+}
+
+bool boxesMeet(const Polygon& a, const Polygon& b) {
+  return a.lower.u <= b.upper.u && b.lower.u <= a.upper.u && a.lower.v <= b.upper.v && b.lower.v <= a.upper.v;
+}
+
+void addIntersections(const RecordInputs& in, std::size_t i, std::size_t j, std::vector<SpecialRecord>& out) {
+  const GrooveScene& scene = *in.scene;
+  const Primitive& a = scene.primitives[i];
+  const Primitive& b = scene.primitives[j];
+  if (sameGrooveNeighbours(scene, i, j) || parallel(a, b)) return;
+  const Polygon& regionA = (*in.regions)[i];
+  const double minArea = kMinOverlap * std::pow(std::min(grooveWidth(scene, i), grooveWidth(scene, j)), 2);
+  for (const Vec2& shift : periodShifts(*in.lattice, regionA, (*in.regions)[j])) {
+    const Polygon regionB = translated((*in.regions)[j], shift);
+    if (!boxesMeet(regionA, regionB)) continue;
+    const Polygon overlap = intersect(regionA, regionB);
+    if (overlap.empty() || std::abs(area(overlap)) <= minArea) continue;
+    SpecialRecord record;
+    record.kind = SpecialRecord::Kind::Intersection;
+    record.point = crossingPoint(a, b, shift, overlap);
+    record.lower = overlap.lower;
+    record.upper = overlap.upper;
+    record.primitive[0] = static_cast<std::uint32_t>(i);
+    record.primitive[1] = static_cast<std::uint32_t>(j);
+    out.push_back(record);
+  }
+}
+
+// The later primitives sharing a cell with primitive i, ascending, each once.
+void laterNeighbours(const RecordInputs& in, std::size_t i, std::vector<std::uint32_t>& out) {
+  out.clear();
+  const auto& cellStart = *in.cellStart;
+  const auto& refs = *in.primitiveRefs;
+  for (std::uint32_t k = (*in.primitiveCellStart)[i]; k < (*in.primitiveCellStart)[i + 1]; ++k) {
+    const std::uint32_t cell = (*in.primitiveCells)[k];
+    // References are ascending within a cell: skip to the first one after i.
+    auto begin = refs.begin() + cellStart[cell], end = refs.begin() + cellStart[cell + 1];
+    out.insert(out.end(), std::upper_bound(begin, end, static_cast<std::uint32_t>(i)), end);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+void recordsOfPrimitive(const RecordInputs& in, std::size_t i, std::vector<std::uint32_t>& scratch,
+                        std::vector<SpecialRecord>& out) {
+  const GrooveScene& scene = *in.scene;
+  const Primitive& p = scene.primitives[i];
+  if (p.endAtStart) out.push_back(endRecord(scene, i, true));
+  if (p.cornerAtStart) out.push_back(cornerRecord(scene, i, in.cap));
+  laterNeighbours(in, i, scratch);
+  for (const std::uint32_t j : scratch) addIntersections(in, i, j, out);
+  if (p.endAtEnd) out.push_back(endRecord(scene, i, false));
+}
+
+}  // namespace
+
+std::vector<SpecialRecord> findRecords(const RecordInputs& inputs) {
+  const std::size_t count = inputs.scene->primitives.size();
+  const std::size_t blocks = (count + kBlock - 1) / kBlock;
+  std::vector<std::vector<SpecialRecord>> perBlock(blocks);
+  parallelForBlocks(blocks, 1, inputs.threads, [&](std::size_t b, std::size_t) {
+    std::vector<std::uint32_t> scratch;
+    const std::size_t end = std::min(count, (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) recordsOfPrimitive(inputs, i, scratch, perBlock[b]);
+  });
+  std::vector<SpecialRecord> records;
+  for (auto& block : perBlock) records.insert(records.end(), block.begin(), block.end());
+  return records;
+}
+
+}  // namespace bake::groove::grid_detail

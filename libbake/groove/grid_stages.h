@@ -1,0 +1,70 @@
+// Internal to the grid build (grid.cpp, grid_region.cpp, grid_records.cpp): the convex polygon that
+// bounds a primitive's region (seed 000 §4.1: the path ± wmax, cut by the joint lines), the cells such
+// a polygon meets, and the special-case records (§4.2).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "groove/grid.h"
+#include "groove/scene.h"
+
+namespace bake::groove::grid_detail {
+
+inline Vec2 add(Vec2 a, Vec2 b) { return {a.u + b.u, a.v + b.v}; }
+inline Vec2 sub(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
+inline Vec2 mul(double s, Vec2 a) { return {s * a.u, s * a.v}; }
+inline double dot(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
+inline double cross(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
+inline Vec2 leftNormal(Vec2 t) { return {-t.v, t.u}; }
+
+// A convex polygon, counter-clockwise, that contains the region of one primitive.
+struct Polygon {
+  std::vector<Vec2> points;
+  Vec2 lower, upper;  // bounding box
+  bool empty() const { return points.size() < 3; }
+};
+void updateBounds(Polygon& polygon);
+Polygon translated(const Polygon& polygon, Vec2 shift);
+// Sutherland-Hodgman clipping of one convex polygon by another.
+Polygon intersect(const Polygon& a, const Polygon& b);
+double area(const Polygon& polygon);
+
+// The geometry of the grid shared by the stages.
+struct Lattice {
+  Vec2 origin, cellSize, domain;
+  std::uint32_t cells[2] = {0, 0};
+  bool wrap = false;
+  // The unwrapped cell index of a coordinate along an axis.
+  std::int64_t cellOf(double x, int axis) const;
+  // The stored cell of an unwrapped index pair, or false when outside a non-wrapping grid.
+  bool storedCell(std::int64_t i, std::int64_t j, std::uint32_t& cell) const;
+};
+
+// How far the mitre at a joint may reach beyond the joint point, bounded for near-reversals.
+double reachCap(const GrooveScene& scene);
+
+// The convex polygon holding primitive `index`'s region (grid_region.cpp).
+Polygon regionPolygon(const GrooveScene& scene, std::size_t index, double cap);
+
+// Appends the stored cells that `polygon` meets (ascending, each once) to `cells` (grid_region.cpp).
+void cellsOfPolygon(const Lattice& lattice, const Polygon& polygon, std::vector<std::uint32_t>& cells);
+// Appends the stored cells that the box meets (ascending, each once).
+void cellsOfBox(const Lattice& lattice, Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& cells);
+
+// The special-case records of the scene, in a fixed order: per primitive, its start end, its start
+// corner, its intersections with later primitives, its end end (grid_records.cpp).
+struct RecordInputs {
+  const GrooveScene* scene = nullptr;
+  const Lattice* lattice = nullptr;
+  const std::vector<Polygon>* regions = nullptr;
+  const std::vector<std::uint32_t>* cellStart = nullptr;      // the primitive CSR already built
+  const std::vector<std::uint32_t>* primitiveRefs = nullptr;
+  const std::vector<std::uint32_t>* primitiveCellStart = nullptr;  // per primitive: its cells
+  const std::vector<std::uint32_t>* primitiveCells = nullptr;
+  double cap = 0;
+  unsigned threads = 1;
+};
+std::vector<SpecialRecord> findRecords(const RecordInputs& inputs);
+
+}  // namespace bake::groove::grid_detail
