@@ -1,7 +1,177 @@
-// PLACEHOLDER (replaced by the line sampling of seed §5): keeps the library linking meanwhile.
-#include "groove/shade_local.h"
+// Line sampling for footprints without special cases (seed 000 §5): the grooves under the footprint
+// are straight (LocalGroove), so the surface is a cross-section along the binormal B, and the footprint
+// becomes a density on the line B through its centre F (§5.1, line_sampling_occlusion.cpp).
+//
+//  1. Keep the grooves whose region reaches the footprint (a primitive stops at its joint lines; past a
+//     G1 joint its neighbour in the chain takes over, so the same groove is not counted twice).
+//  2. Group them into parallel classes (tangents within 1e-6 rad, or close enough that their relative
+//     drift across the footprint's reach stays below 1e-3 of a groove width: concentric arcs, the
+//     turns of a flattened spiral).
+//  3. Per class: one combined cross-section (line_sampling_section.cpp), masking and shadowing by
+//     ordered projection (§5.2), and Eq. 1: pixel = sum_i r_i f_i, r_i the footprint share of the part
+//     of facet i that is both visible and lit, measured through its projection on the base line along
+//     E; plus the mirror bounces of §7 (interreflection.cpp).
+//  4. Several classes (non-parallel grooves with no special-case record under the box, so their bands
+//     do not overlap under the footprint): each class is shaded on its own section, and the pixel is the
+//     flat base plus the sum of each class's difference from the flat base. This neglects occlusion
+//     and shadowing between grooves of different classes (and counts twice a point shadowed by two).
+#include <algorithm>
+#include <cmath>
+
+#include "groove/line_sampling_section.h"
+
 namespace bake::groove {
-Rgb lineSample(const GrooveScene&, const std::vector<LocalGroove>&, const Footprint&, const Vec3&, const Lighting&) {
-  return {0, 0, 0};
+namespace {
+
+constexpr double kParallelAngle = 1e-6;  // rad
+constexpr double kDriftFraction = 1e-3;  // of a groove width, across the footprint's reach
+constexpr double kMinViewW = 1e-12;      // E_w > 0 by the rendering model; guarded anyway
+
+double dot2(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
+double cross2(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
+
+// foot - F, the nearest copy when the scene repeats.
+Vec2 offsetFromCentre(const GrooveScene& scene, Vec2 foot, Vec2 centre) {
+  Vec2 d{foot.u - centre.u, foot.v - centre.v};
+  if (scene.wrapRepeat) {
+    d.u -= scene.domain[0] * std::round(d.u / scene.domain[0]);
+    d.v -= scene.domain[1] * std::round(d.v / scene.domain[1]);
+  }
+  return d;
 }
+
+bool inList(const std::vector<LocalGroove>& grooves, std::uint32_t primitive) {
+  for (const LocalGroove& g : grooves)
+    if (g.primitive == primitive) return true;
+  return false;
+}
+
+// The primitive across a joint of `p` (start or end), or -1 at an open end.
+long long neighbourAcross(const GrooveScene& scene, std::uint32_t p, bool atStart) {
+  const Groove& g = scene.grooves[scene.primitives[p].groove];
+  const std::size_t first = g.firstPrimitive, last = first + g.primitiveCount - 1;
+  if (atStart) return p > first ? (long long)p - 1 : (g.closed ? (long long)last : -1);
+  return p < last ? (long long)p + 1 : (g.closed ? (long long)first : -1);
+}
+
+double sideOf(const JointLine& line, Vec2 x) {
+  return (x.u - line.point.u) * line.normal.u + (x.v - line.point.v) * line.normal.v;
+}
+
+// Step 1: does this primitive's region reach the footprint?
+bool reachesFootprint(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const LocalGroove& g,
+                      const Footprint& footprint) {
+  const Vec2 d = offsetFromCentre(scene, g.foot, footprint.centre);
+  const Vec2 centre{g.foot.u - d.u, g.foot.v - d.v};  // the footprint centre's copy near the primitive
+  for (int end = 0; end < 2; ++end) {
+    const JointLine& line = end == 0 ? g.joints.start : g.joints.end;
+    if (sideOf(line, centre) >= 0) continue;
+    const long long other = neighbourAcross(scene, g.primitive, end == 0);
+    if (other >= 0 && inList(grooves, std::uint32_t(other))) return false;  // the neighbour covers it
+    bool anyInside = false;
+    for (int corner = 0; corner < 4; ++corner) {
+      const double s1 = corner & 1 ? 0.5 : -0.5, s2 = corner & 2 ? 0.5 : -0.5;
+      const Vec2 x{centre.u + s1 * footprint.axis1.u + s2 * footprint.axis2.u,
+                   centre.v + s1 * footprint.axis1.v + s2 * footprint.axis2.v};
+      anyInside = anyInside || sideOf(line, x) >= 0;
+    }
+    if (!anyInside) return false;
+  }
+  return true;
+}
+
+double grooveWidth(const LocalGroove& g) { return g.scale * g.profile->wmax; }
+
+// Step 2: parallel within 1e-6 rad, or drifting apart by less than kDriftFraction of a width.
+bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
+  const double sine = std::abs(cross2(a.tangent, b.tangent));
+  const double drift = kDriftFraction * std::min(grooveWidth(a), grooveWidth(b)) / reach;
+  return sine <= std::max(std::sin(kParallelAngle), drift);
+}
+
+Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const std::vector<std::size_t>& members,
+               const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
+  const Vec2 binormal = grooves[members.front()].binormal;
+  std::vector<SectionGroove> placed;
+  placed.reserve(members.size());
+  for (std::size_t m : members) {
+    const LocalGroove& g = grooves[m];
+    const Vec2 d = offsetFromCentre(scene, g.foot, footprint.centre);
+    const double along = dot2(binormal, g.binormal);
+    // Where the groove's centre line crosses the line F + x B (along = +-1 up to the drift).
+    placed.push_back({&g, dot2(d, g.binormal) / along, along < 0});
+  }
+  const FootprintLine line = footprintLine(footprint, binormal, density);
+  CrossSection section;
+  section.binormal = binormal;
+  buildCrossSection(scene, placed, -line.halfSupport(), line.halfSupport(), section);
+  const SectionShading s = shadeSection(scene, section, line, toViewer, lighting);
+  return {s.direct[0] + s.mirrored[0], s.direct[1] + s.mirrored[1], s.direct[2] + s.mirrored[2]};
+}
+
+}  // namespace
+
+SectionShading shadeSection(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
+                            const Vec3& toViewer, const Lighting& lighting) {
+  SectionShading out;
+  const Vec2 B = section.binormal;
+  const double eb = toViewer.u * B.u + toViewer.v * B.v, ew = std::max(toViewer.w, kMinViewW);
+  const Vec3& L = lighting.toLight;
+  const double lb = L.u * B.u + L.v * B.v, lw = L.w;
+  std::vector<FacetSpan> visible, lit;
+  visibleSpans(section, eb, ew, visible);
+  visibleSpans(section, lb, lw, lit);
+  const std::vector<SectionPoint>& pts = section.points;
+  for (std::size_t i = 0; i < section.facetCount(); ++i) {
+    const FacetSpan& v = visible[i];
+    if (v.empty()) continue;
+    // Base-line position seen through the facet point at t (projection along E').
+    const double p0 = pts[i].b - pts[i].h * (eb / ew), p1 = pts[i + 1].b - pts[i + 1].h * (eb / ew);
+    auto at = [&](double t) { return p0 + t * (p1 - p0); };
+    out.visibleShare += density.share(at(v.t0), at(v.t1));
+    const double t0 = std::max(v.t0, lit[i].t0), t1 = std::min(v.t1, lit[i].t1);
+    if (!(t1 > t0)) continue;
+    const double r = density.share(at(t0), at(t1));
+    const Rgb f = directRadiance(scene.materials[section.material[i]], facetNormal3(section, i), toViewer, lighting);
+    for (int c = 0; c < 3; ++c) out.direct[c] += r * f[c];
+  }
+  if (lighting.maxBounces > 0) out.mirrored = mirrorBounces(scene, section, density, toViewer, lighting, visible, lit);
+  return out;
+}
+
+Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+                   const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
+  const Rgb flat = directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting);
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < grooves.size(); ++i)
+    if (reachesFootprint(scene, grooves, grooves[i], footprint)) kept.push_back(i);
+  if (kept.empty()) return flat;
+
+  const double reach = 0.5 * (std::hypot(footprint.axis1.u, footprint.axis1.v) +
+                              std::hypot(footprint.axis2.u, footprint.axis2.v)) +
+                       scene.wmax + scene.hmax + scene.dmax;
+  std::vector<std::vector<std::size_t>> classes;
+  for (std::size_t i : kept) {
+    auto it = std::find_if(classes.begin(), classes.end(),
+                           [&](const auto& c) { return parallel(grooves[c.front()], grooves[i], reach); });
+    if (it == classes.end())
+      classes.push_back({i});
+    else
+      it->push_back(i);
+  }
+  if (classes.size() == 1) return shadeClass(scene, grooves, classes[0], footprint, toViewer, lighting, density);
+  Rgb sum = flat;
+  for (const auto& c : classes) {
+    const Rgb value = shadeClass(scene, grooves, c, footprint, toViewer, lighting, density);
+    for (int k = 0; k < 3; ++k) sum[k] += value[k] - flat[k];
+  }
+  for (double& x : sum) x = std::max(0.0, x);
+  return sum;
+}
+
+Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+               const Vec3& toViewer, const Lighting& lighting) {
+  return lineSampleWith(scene, grooves, footprint, toViewer, lighting, FootprintDensity::Trapezoid);
+}
+
 }  // namespace bake::groove

@@ -1,6 +1,145 @@
-// PLACEHOLDER (replaced by the seed's method): keeps the library linking meanwhile.
+// The seed's method per pixel (seed 000 §4): find the grooves that can affect the footprint, detect
+// special cases, and shade by line sampling (§5, line_sampling.cpp) or area sampling (§6,
+// area_sampling.cpp).
+//
+// Finding grooves (§4.1): the bounding box of the footprint parallelogram, enlarged by the scene's wmax
+// (bands whose path lies outside the box), and by hmax and dmax projected along the view and along the
+// light: a ridge of height hmax seen (or casting a shadow) through the footprint stands up to
+// hmax |E_uv| / E_w towards the viewer (the light), a cavity point of depth dmax up to dmax |E_uv| / E_w
+// away from it. The light's reach is capped at kMaxReach heights (a light at or below the horizon
+// would need an unbounded box; ridges further away are not found, so their shadows are missed).
+// Special cases (§4.2): a special-case record of the grid whose box meets the enlarged box sends the
+// pixel to area sampling. No groove: the flat base.
 #include "groove/shade.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/parallel.h"
+#include "groove/line_sampling_section.h"
+
 namespace bake::groove {
-Rgb SeedShader::shade(const Footprint&, const Vec3&, const Lighting&, ShadeStats*) const { return {0, 0, 0}; }
-RgbImage renderSeed(const GrooveScene&, const GrooveGrid&, const View&, const Lighting&, int) { return {}; }
+namespace {
+
+constexpr double kMaxReach = 100;  // |D_uv| / D_w at most: about 89.4 degrees from the normal
+
+struct Box {
+  Vec2 lower, upper;
+  void include(Vec2 p) {
+    lower = {std::min(lower.u, p.u), std::min(lower.v, p.v)};
+    upper = {std::max(upper.u, p.u), std::max(upper.v, p.v)};
+  }
+};
+
+// Shifts the box by the projections of a ridge (towards the direction) and a cavity (away from it).
+void enlargeAlong(Box& box, const Box& core, const Vec3& d, double hmax, double dmax) {
+  const double horizontal = std::hypot(d.u, d.v);
+  if (horizontal == 0) return;
+  const double reach = d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
+  const Vec2 unit{d.u / horizontal, d.v / horizontal};
+  for (double along : {hmax * reach, -dmax * reach}) {
+    box.include({core.lower.u + along * unit.u, core.lower.v + along * unit.v});
+    box.include({core.upper.u + along * unit.u, core.upper.v + along * unit.v});
+  }
+}
+
+Box queryBox(const GrooveScene& scene, const Footprint& f, const Vec3& toViewer, const Vec3& toLight) {
+  const double eu = 0.5 * (std::abs(f.axis1.u) + std::abs(f.axis2.u)) + scene.wmax;
+  const double ev = 0.5 * (std::abs(f.axis1.v) + std::abs(f.axis2.v)) + scene.wmax;
+  const Box core{{f.centre.u - eu, f.centre.v - ev}, {f.centre.u + eu, f.centre.v + ev}};
+  Box box = core;
+  enlargeAlong(box, core, toViewer, scene.hmax, scene.dmax);
+  enlargeAlong(box, core, toLight, scene.hmax, scene.dmax);
+  return box;
+}
+
+double distanceToPrimitive(const Primitive& p, Vec2 x) {
+  if (p.kind == Primitive::Kind::Segment) {
+    const double du = p.b.u - p.a.u, dv = p.b.v - p.a.v;
+    const double length2 = du * du + dv * dv;
+    const double t = length2 > 0 ? std::clamp(((x.u - p.a.u) * du + (x.v - p.a.v) * dv) / length2, 0.0, 1.0) : 0;
+    return std::hypot(x.u - p.a.u - t * du, x.v - p.a.v - t * dv);
+  }
+  const double angle = std::atan2(x.v - p.centre.v, x.u - p.centre.u);
+  const double fromMiddle = std::remainder(angle - (p.startAngle + 0.5 * p.sweep), 2 * std::numbers::pi);
+  if (std::abs(fromMiddle) <= 0.5 * std::abs(p.sweep))
+    return std::abs(std::hypot(x.u - p.centre.u, x.v - p.centre.v) - p.radius);
+  return std::min(std::hypot(x.u - p.a.u, x.v - p.a.v), std::hypot(x.u - p.b.u, x.v - p.b.v));
+}
+
+// The copy of the footprint centre nearest the primitive (the scene may repeat).
+Vec2 nearestCopy(const GrooveScene& scene, const Primitive& p, Vec2 centre) {
+  if (!scene.wrapRepeat) return centre;
+  Vec2 best = centre;
+  double bestDistance = distanceToPrimitive(p, centre);
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j) {
+      const Vec2 copy{centre.u + i * scene.domain[0], centre.v + j * scene.domain[1]};
+      const double d = distanceToPrimitive(p, copy);
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = copy;
+      }
+    }
+  return best;
+}
+
+bool boxesMeet(const Box& a, Vec2 lower, Vec2 upper) {
+  return a.lower.u <= upper.u && lower.u <= a.upper.u && a.lower.v <= upper.v && lower.v <= a.upper.v;
+}
+
+// Does a record's box meet the query box (or one of its copies, when the scene repeats)?
+bool meetsRecord(const GrooveScene& scene, const Box& box, const SpecialRecord& record) {
+  const int copies = scene.wrapRepeat ? 1 : 0;
+  for (int i = -copies; i <= copies; ++i)
+    for (int j = -copies; j <= copies; ++j) {
+      const Vec2 shift{i * scene.domain[0], j * scene.domain[1]};
+      const Box moved{{box.lower.u + shift.u, box.lower.v + shift.v}, {box.upper.u + shift.u, box.upper.v + shift.v}};
+      if (boxesMeet(moved, record.lower, record.upper)) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
+                      ShadeStats* stats) const {
+  const Box box = queryBox(scene_, footprint, toViewer, lighting.toLight);
+  thread_local std::vector<std::uint32_t> found;
+  thread_local std::vector<std::uint32_t> records;
+  thread_local std::vector<LocalGroove> grooves;
+  grid_.primitivesInBox(box.lower, box.upper, found);
+  if (stats) *stats = {false, std::uint32_t(found.size())};
+  if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
+
+  grooves.clear();
+  for (std::uint32_t p : found)
+    grooves.push_back(localGroove(scene_, p, nearestCopy(scene_, scene_.primitives[p], footprint.centre)));
+  grid_.recordsInBox(box.lower, box.upper, records);
+  const bool special = std::any_of(records.begin(), records.end(), [&](std::uint32_t r) {
+    return meetsRecord(scene_, box, grid_.records[r]);
+  });
+  if (stats) stats->special = special;
+  if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);
+  return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, density_);
+}
+
+RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
+                    int threads, FootprintDensity density) {
+  RgbImage image;
+  image.width = view.width;
+  image.height = view.height;
+  image.rgb.assign(std::size_t(std::max(0, view.width)) * std::max(0, view.height) * 3, 0.0f);
+  const SeedShader shader(scene, grid, density);
+  parallelFor(
+      std::size_t(std::max(0, view.height)), resolveThreadCount(unsigned(std::max(0, threads))),
+      [&](std::size_t y) {
+        for (int x = 0; x < view.width; ++x)
+          image.set(x, int(y), shader.shade(view.pixel(x, int(y)), view.toViewer, lighting));
+      },
+      1);
+  return image;
+}
+
 }  // namespace bake::groove

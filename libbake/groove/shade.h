@@ -11,6 +11,10 @@
 
 namespace bake::groove {
 
+// How line sampling weighs the footprint along the cross-section's binormal (§5.1): the exact density
+// of the parallelogram (a trapezoid) or the seed's uniform segment S = [-projmax, projmax].
+enum class FootprintDensity { Trapezoid, SeedSegment };
+
 struct ShadeStats {
   bool special = false;       // area sampling was used
   std::uint32_t primitives = 0;  // primitives found under the enlarged box
@@ -18,7 +22,9 @@ struct ShadeStats {
 
 class SeedShader {
  public:
-  SeedShader(const GrooveScene& scene, const GrooveGrid& grid) : scene_(scene), grid_(grid) {}
+  SeedShader(const GrooveScene& scene, const GrooveGrid& grid,
+             FootprintDensity density = FootprintDensity::Trapezoid)
+      : scene_(scene), grid_(grid), density_(density) {}
   // The pixel value of one footprint seen from `toViewer`.
   Rgb shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
             ShadeStats* stats = nullptr) const;
@@ -26,9 +32,10 @@ class SeedShader {
  private:
   const GrooveScene& scene_;
   const GrooveGrid& grid_;
+  FootprintDensity density_ = FootprintDensity::Trapezoid;
 };
 
 RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
-                    int threads);
+                    int threads, FootprintDensity density = FootprintDensity::Trapezoid);
 
 }  // namespace bake::groove

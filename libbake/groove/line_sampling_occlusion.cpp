@@ -1,0 +1,99 @@
+// Footprint clipping and occlusion on the cross-section (seed 000 §5.1, §5.2).
+//
+// Density (§5.1): the footprint's points F + s1 A1 + s2 A2 (s1, s2 uniform in [-1/2, 1/2]) land on B at
+// s1 (A1.B) + s2 (A2.B): the sum of two uniform variables, whose density is a trapezoid (exact for
+// straight grooves). The seed instead clips against the segment S = [-projmax, projmax] with uniform
+// weight, projmax = max(|A1.B|, |A2.B|) for the axes of its elliptic footprint, which are half-axes;
+// our parallelogram's half-edges are A/2, so the seed's segment is [-max/2, max/2] here.
+//
+// Occlusion (§5.2; the text conversion flattened the expression, reconstructed here from the prose):
+// a section point C seen along the direction D' = (D.B, D_w) lies on the line of coordinate
+// k(C) = C_b D_w - C_h D_b across D' (for D_w > 0 that is D_w times its projection onto the base line,
+// C_b - C_h D_b / D_w, without the division). When D_b > 0, C is hidden exactly when a surface point on
+// its right has a smaller k; so the points are walked from the right keeping the running minimum, and
+// a facet is visible where its k falls below the minimum of everything walked before it (hidden when
+// entirely above, partially visible when the minimum falls inside it, self-hidden when it faces away).
+// D_b < 0 is the mirror image (walk from the left, running maximum). The flat base continues to
+// infinity on both sides: below the horizon (D_w < 0) it hides everything, which the start value of
+// the running extreme says without dividing by D_w.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "groove/line_sampling_section.h"
+
+namespace bake::groove {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A box narrower than this fraction of the other is a line: its ramps are below rounding.
+constexpr double kThinBox = 1e-12;
+
+}  // namespace
+
+double FootprintLine::cdf(double x) const {
+  const double p = wide, q = segment ? 0.0 : narrow;
+  if (!(p > 0)) return x < 0 ? 0.0 : (x > 0 ? 1.0 : 0.5);  // a point sample
+  if (x <= -(p + q)) return 0;
+  if (x >= p + q) return 1;
+  if (std::abs(x) <= p - q) return 0.5 + x / (2 * p);
+  // The ramps of the trapezoid: the density rises linearly over [-(p+q), -(p-q)].
+  const double d = p + q - std::abs(x);
+  const double tail = (d / (2 * q)) * (d / (4 * p));
+  return x < 0 ? tail : 1 - tail;
+}
+
+double FootprintLine::share(double x0, double x1) const { return std::abs(cdf(x1) - cdf(x0)); }
+
+FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, FootprintDensity density) {
+  const double a = std::abs(footprint.axis1.u * binormal.u + footprint.axis1.v * binormal.v);
+  const double c = std::abs(footprint.axis2.u * binormal.u + footprint.axis2.v * binormal.v);
+  FootprintLine line;
+  line.wide = 0.5 * std::max(a, c);
+  line.narrow = 0.5 * std::min(a, c);
+  line.segment = density == FootprintDensity::SeedSegment;
+  if (line.segment || line.narrow <= kThinBox * line.wide) line.narrow = 0;
+  return line;
+}
+
+void visibleSpans(const CrossSection& section, double db, double dw, std::vector<FacetSpan>& out) {
+  const std::size_t facets = section.facetCount();
+  out.assign(facets, FacetSpan{});
+  const std::vector<SectionPoint>& pts = section.points;
+  if (db >= 0) {
+    // Occluders come from the right: running minimum of k, walking leftwards.
+    double lowest = dw < 0 ? -kInfinity : kInfinity;
+    for (std::size_t i = facets; i-- > 0;) {
+      const double k0 = acrossCoordinate(pts[i], db, dw), k1 = acrossCoordinate(pts[i + 1], db, dw);
+      if (k1 > k0 && k0 < lowest) out[i] = {0, std::min(1.0, (lowest - k0) / (k1 - k0))};
+      lowest = std::min(lowest, std::min(k0, k1));
+    }
+  } else {
+    // Occluders come from the left: running maximum of k, walking rightwards.
+    double highest = dw < 0 ? kInfinity : -kInfinity;
+    for (std::size_t i = 0; i < facets; ++i) {
+      const double k0 = acrossCoordinate(pts[i], db, dw), k1 = acrossCoordinate(pts[i + 1], db, dw);
+      if (k1 > k0 && k1 > highest) out[i] = {std::max(0.0, (highest - k0) / (k1 - k0)), 1};
+      highest = std::max(highest, std::max(k0, k1));
+    }
+  }
+}
+
+void facetNormal(const CrossSection& section, std::size_t facet, double& nb, double& nh) {
+  const SectionPoint& p = section.points[facet];
+  const SectionPoint& q = section.points[facet + 1];
+  const double db = q.b - p.b, dh = q.h - p.h;
+  const double length = std::hypot(db, dh);
+  // The material lies below the polyline (b ascending), so the outward normal is the left normal.
+  nb = length > 0 ? -dh / length : 0;
+  nh = length > 0 ? db / length : 1;
+}
+
+Vec3 facetNormal3(const CrossSection& section, std::size_t facet) {
+  double nb = 0, nh = 1;
+  facetNormal(section, facet, nb, nh);
+  return {nb * section.binormal.u, nb * section.binormal.v, nh};
+}
+
+}  // namespace bake::groove

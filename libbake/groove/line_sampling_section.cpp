@@ -1,0 +1,183 @@
+// The combined cross-section of parallel grooves (seed 000 §5; the surface rule of
+// formats/groove-scene.md): every groove under the footprint is a straight band here (LocalGroove), so
+// the surface along the common binormal B is one function of b. Each groove's profile, shifted to where
+// its centre line crosses B, is a piecewise linear function on its band; the surface is
+// H = min(0, min cuts) + max(0, max ridges). Between consecutive profile breakpoints (of all grooves)
+// every groove is linear, so H is linear except where two pieces cross (or a piece crosses 0): those
+// crossings split the interval, which makes the combination exact. Where a groove's profile has a
+// vertical segment, H jumps: the polyline gets a vertical wall there.
+//
+// Materials: a piece takes the material of the groove with the largest |h| (the earlier primitive on a
+// tie; base where every h is 0); a wall, that of its side with the larger |H|. Splitting also where
+// h_i = -h_j keeps the largest |h| constant on each piece.
+#include <algorithm>
+#include <cmath>
+
+#include "groove/line_sampling_section.h"
+
+namespace bake::groove {
+namespace {
+
+// A groove's profile in section coordinates, b ascending.
+struct PlacedProfile {
+  const SectionGroove* groove = nullptr;
+  std::size_t first = 0, count = 0;  // into the shared point list
+};
+
+// One groove's linear piece over the current interval.
+struct Piece {
+  double left = 0, right = 0;  // h at the interval's two ends
+  std::size_t material = 0;
+  std::uint32_t primitive = 0;
+  double at(double t) const { return t >= 1 ? right : left + t * (right - left); }
+};
+
+// h of segment [p, q] at x, exact at the end points (so neighbouring intervals agree bit for bit).
+double heightOn(const SectionPoint& p, const SectionPoint& q, double x) {
+  if (x <= p.b) return p.h;
+  if (x >= q.b) return q.h;
+  return p.h + (x - p.b) / (q.b - p.b) * (q.h - p.h);
+}
+
+double surfaceAt(const std::vector<Piece>& pieces, double t) {
+  double cut = 0, ridge = 0;
+  for (const Piece& piece : pieces) {
+    const double h = piece.at(t);
+    cut = std::min(cut, h);
+    ridge = std::max(ridge, h);
+  }
+  return cut + ridge;
+}
+
+std::size_t materialAt(const std::vector<Piece>& pieces, double t, std::size_t base) {
+  double largest = 0;
+  std::size_t material = base;
+  std::uint32_t primitive = 0;
+  for (const Piece& piece : pieces) {
+    const double size = std::abs(piece.at(t));
+    if (size > largest || (size == largest && size > 0 && piece.primitive < primitive)) {
+      largest = size;
+      material = piece.material;
+      primitive = piece.primitive;
+    }
+  }
+  return material;
+}
+
+// Where f(t) = a + t (b - a) and g cross strictly inside (0, 1).
+void addCrossing(double fa, double fb, double ga, double gb, std::vector<double>& splits) {
+  const double d0 = fa - ga, d1 = fb - gb;
+  if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
+    const double t = d0 / (d0 - d1);
+    if (t > 0 && t < 1) splits.push_back(t);
+  }
+}
+
+// Appends a point; a facet (with its material) joins it to the previous point unless they coincide.
+void appendPoint(CrossSection& out, double b, double h, std::size_t material) {
+  if (!out.points.empty()) {
+    const SectionPoint& last = out.points.back();
+    if (last.b == b && last.h == h) return;
+    out.material.push_back(material);
+  }
+  out.points.push_back({b, h});
+}
+
+constexpr std::size_t kWall = static_cast<std::size_t>(-1);  // resolved after the sweep
+
+// Appends H over [x0, x1] for the given pieces, split at their crossings.
+void appendInterval(CrossSection& out, const std::vector<Piece>& pieces, double x0, double x1, std::size_t base,
+                    std::vector<double>& splits) {
+  splits.clear();
+  splits.push_back(0);
+  splits.push_back(1);
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    addCrossing(pieces[i].left, pieces[i].right, 0, 0, splits);
+    for (std::size_t j = i + 1; j < pieces.size(); ++j) {
+      addCrossing(pieces[i].left, pieces[i].right, pieces[j].left, pieces[j].right, splits);
+      addCrossing(pieces[i].left, pieces[i].right, -pieces[j].left, -pieces[j].right, splits);
+    }
+  }
+  std::sort(splits.begin(), splits.end());
+  splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
+  for (std::size_t k = 0; k + 1 < splits.size(); ++k) {
+    const double ta = splits[k], tb = splits[k + 1];
+    const double xa = k == 0 ? x0 : x0 + ta * (x1 - x0);
+    const double xb = k + 2 == splits.size() ? x1 : x0 + tb * (x1 - x0);
+    const std::size_t material = materialAt(pieces, 0.5 * (ta + tb), base);
+    appendPoint(out, xa, surfaceAt(pieces, ta), kWall);  // a jump at xa is a wall
+    appendPoint(out, xb, surfaceAt(pieces, tb), material);
+  }
+}
+
+// A wall takes the material of its side with the larger |H| (the left side on a tie).
+void resolveWalls(CrossSection& out, std::size_t base) {
+  const std::size_t facets = out.material.size();
+  for (std::size_t i = 0; i < facets; ++i) {
+    if (out.material[i] != kWall) continue;
+    const bool leftDeeper = std::abs(out.points[i].h) >= std::abs(out.points[i + 1].h);
+    std::size_t side = kWall;
+    if (leftDeeper && i > 0) side = out.material[i - 1];
+    if (side == kWall && i + 1 < facets) side = out.material[i + 1];
+    if (side == kWall && i > 0) side = out.material[i - 1];
+    out.material[i] = side == kWall ? base : side;
+  }
+}
+
+}  // namespace
+
+void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove>& grooves, double lo, double hi,
+                       CrossSection& out) {
+  out.points.clear();
+  out.material.clear();
+  const std::size_t base = scene.baseMaterial;
+
+  // Every profile in section coordinates, b ascending (a reversed groove is mirrored).
+  std::vector<SectionPoint> placed;
+  std::vector<PlacedProfile> profiles;
+  std::vector<double> breaks{lo, hi};
+  for (const SectionGroove& g : grooves) {
+    const std::size_t n = g.groove->profile->points.size();
+    PlacedProfile p{&g, placed.size(), n};
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t j = g.reversed ? n - 1 - k : k;
+      const double b = g.reversed ? g.centre - g.groove->profileB(j) : g.centre + g.groove->profileB(j);
+      placed.push_back({b, g.groove->profileH(j)});
+      breaks.push_back(b);
+    }
+    profiles.push_back(p);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  // Sweep: grooves enter in order of their first b.
+  std::sort(profiles.begin(), profiles.end(), [&](const PlacedProfile& a, const PlacedProfile& b) {
+    return placed[a.first].b < placed[b.first].b;
+  });
+
+  std::vector<std::size_t> active;   // indices into profiles
+  std::vector<std::size_t> cursor(profiles.size(), 0);  // the segment of each profile under the interval
+  std::size_t next = 0;
+  std::vector<Piece> pieces;
+  std::vector<double> splits;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double x0 = breaks[k], x1 = breaks[k + 1];
+    while (next < profiles.size() && placed[profiles[next].first].b <= x0) active.push_back(next++);
+    pieces.clear();
+    std::size_t keep = 0;
+    for (std::size_t a : active) {
+      const PlacedProfile& p = profiles[a];
+      const SectionPoint* pts = &placed[p.first];
+      if (pts[p.count - 1].b <= x0) continue;  // the band ended: drop it
+      active[keep++] = a;
+      std::size_t& j = cursor[a];
+      while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
+      const LocalGroove& g = *p.groove->groove;
+      pieces.push_back({heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive});
+    }
+    active.resize(keep);
+    appendInterval(out, pieces, x0, x1, base, splits);
+  }
+  resolveWalls(out, base);
+}
+
+}  // namespace bake::groove

@@ -1,0 +1,105 @@
+// Internal to the seed's line sampling (seed 000 §5, §7): the stages shared by line_sampling*.cpp and
+// interreflection.cpp, exposed for the tests. Everything here works in one cross-section plane: the
+// binormal line B through the footprint centre F (coordinate b, relative to F) and the height h.
+//
+// Written to port to GLSL: plain arithmetic, bounded loops over the section's points and a
+// fixed-size beam stack for the mirror bounces (no recursion).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "groove/shade.h"
+#include "groove/shade_local.h"
+
+namespace bake::groove {
+
+// --- Footprint density along B (§5.1) -------------------------------------------------------------
+
+// The share of the footprint whose points project onto B in (-inf, x]. The exact density of a uniform
+// parallelogram F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) is the convolution of two boxes of widths
+// |A1.B| and |A2.B|: a trapezoid. The seed's segment S = [-projmax, projmax] is uniform (see
+// footprintLine for its half-width in our convention). A zero-width footprint is a point sample.
+struct FootprintLine {
+  double wide = 0;      // half-width of the wider box (trapezoid) or of the segment
+  double narrow = 0;    // half-width of the narrower box (trapezoid only)
+  bool segment = false;
+  double cdf(double x) const;
+  double halfSupport() const { return wide + narrow; }
+  // Share of the footprint between x0 and x1 (either order).
+  double share(double x0, double x1) const;
+};
+FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, FootprintDensity density);
+
+// --- The combined cross-section (§5, formats/groove-scene.md "The surface a scene describes") -----
+
+struct SectionPoint {
+  double b = 0, h = 0;
+};
+
+// A polyline over b (non-decreasing; vertical walls are two points at the same b) with one material
+// per facet: facet i joins points i and i + 1.
+struct CrossSection {
+  Vec2 binormal{0, 1};
+  std::vector<SectionPoint> points;
+  std::vector<std::size_t> material;
+  std::size_t facetCount() const { return points.empty() ? 0 : points.size() - 1; }
+};
+
+// One groove placed on the section: its centre line crosses B at b = centre; `reversed` when its own
+// binormal points along -B (its profile is then mirrored).
+struct SectionGroove {
+  const LocalGroove* groove = nullptr;
+  double centre = 0;
+  bool reversed = false;
+};
+
+// Combines the grooves' profiles into one polyline by the surface rule H = min(cuts) + max(ridges),
+// split where the pieces cross, extended by flat base to cover [lo, hi].
+void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove>& grooves, double lo, double hi,
+                       CrossSection& out);
+
+// --- Ordered projection (§5.2) ---------------------------------------------------------------------
+
+// A part [t0, t1] of a facet, t in [0, 1] from point i to point i + 1; empty when t1 <= t0.
+struct FacetSpan {
+  double t0 = 0, t1 = 0;
+  bool empty() const { return !(t1 > t0); }
+};
+
+// The coordinate across the direction (db, dw) in the section plane: points on one line along that
+// direction share it. No division, so grazing and downward directions stay finite.
+inline double acrossCoordinate(const SectionPoint& p, double db, double dw) { return p.b * dw - p.h * db; }
+
+// The part of each facet seen from the direction (db, dw) (masking for E, shadowing for L), the flat
+// base continuing to infinity on both sides. A direction below the horizon (dw < 0) sees nothing.
+void visibleSpans(const CrossSection& section, double db, double dw, std::vector<FacetSpan>& out);
+
+// Unit normal of facet i in the section plane (b, h) and in groove space.
+void facetNormal(const CrossSection& section, std::size_t facet, double& nb, double& nh);
+Vec3 facetNormal3(const CrossSection& section, std::size_t facet);
+
+// --- Shading a section (Eq. 1 and §7) --------------------------------------------------------------
+
+struct SectionShading {
+  Rgb direct{0, 0, 0};
+  Rgb mirrored{0, 0, 0};
+  double visibleShare = 0;  // sum of r_i: 1 up to rounding when the section covers the footprint
+};
+
+// Eq. 1 over the section, plus the mirror bounces of §7 when lighting.maxBounces > 0.
+SectionShading shadeSection(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
+                            const Vec3& toViewer, const Lighting& lighting);
+
+// §7: the radiance mirrored by the visible portions of mirror facets (interreflection.cpp).
+// `visible` and `lit` are the spans of each facet seen from E and from L.
+constexpr int kMaxBeams = 64;  // the beam stack's size: the GLSL port's fixed array
+Rgb mirrorBounces(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
+                  const Vec3& toViewer, const Lighting& lighting, const std::vector<FacetSpan>& visible,
+                  const std::vector<FacetSpan>& lit);
+
+// lineSample with a chosen footprint density (lineSample uses the trapezoid).
+Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+                   const Vec3& toViewer, const Lighting& lighting, FootprintDensity density);
+
+}  // namespace bake::groove
