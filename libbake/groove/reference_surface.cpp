@@ -370,9 +370,9 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
       c.joint1 = p.b;
       c.mitre1 = openEnd ? p.tangentAt(1) : mitreOf(p.tangentAt(1), after.tangentAt(0));
       // Bounds: the path's box grown by the width, stretched by the mitres (w / cos of half the turn).
-      const double stretch = std::min(50.0, 1 / std::max(0.02, std::min(dot(c.mitre0, p.tangentAt(0)),
-                                                                           dot(c.mitre1, p.tangentAt(1)))));
-      const double grow = 1.01 * groove.wmax * std::max(1.0, stretch);
+      // (Nearly folded-back corners reach far: bounded by the domain size, beyond which the grid ends.)
+      const double cosine = std::min(dot(c.mitre0, p.tangentAt(0)), dot(c.mitre1, p.tangentAt(1)));
+      const double grow = std::min(1.01 * groove.wmax / std::max(cosine, 1e-9), 2 * domainSize);
       Box box;
       box.take(p.a);
       box.take(p.b);

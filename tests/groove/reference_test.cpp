@@ -4,6 +4,7 @@
 // the stratified sampling error bounded: the integrand is piecewise constant across the groove, so
 // only the one column of strata a discontinuity passes through can be off, by at most jump / n.
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -299,6 +300,101 @@ TEST(GrooveReference, MirrorGrooveAddsReflectedLight) {
   // Two bounces: the second reflection goes straight up and leaves: nothing more.
   light.maxBounces = 2;
   EXPECT_NEAR(referenceRadiance(surface, scene, {0.48, 0.5}, {0, 0, 1}, light)[0], direct + 0.5 * other[0], 1e-9);
+}
+
+
+TEST(GrooveReference, PerturbedHeightFollowsScaleAndOffset) {
+  const std::string profile = R"("skew": {"points": [[-0.04, 0], [-0.02, -0.03], [0.04, 0]]})";
+  const auto profileAt = [](double b) {
+    if (b <= -0.04 || b >= 0.04) return 0.0;
+    return b < -0.02 ? -0.03 * (b + 0.04) / 0.02 : -0.03 * (0.04 - b) / 0.06;
+  };
+  // Along +u from (0.1, 0.5): s = u - 0.1, b = v - 0.5.
+  const ReferenceSurface scaled(parseOk(sceneText(profile, R"({"profile": "skew", "path": {"line": [[0.1, 0.5], [0.9, 0.5]]},
+      "perturbation": {"kind": "scale", "amplitude": 0.4, "wavelength": 0.2, "phase": 0.5}})")));
+  const ReferenceSurface offset(parseOk(sceneText(profile, R"({"profile": "skew", "path": {"line": [[0.1, 0.5], [0.9, 0.5]]},
+      "perturbation": {"kind": "offset", "amplitude": 0.01, "wavelength": 0.3}})")));
+  for (double u = 0.15; u < 0.85; u += 0.0123)
+    for (double b = -0.06; b <= 0.06; b += 0.0071) {
+      const double s = u - 0.1, f = 1 + 0.4 * std::sin(2 * kPi * s / 0.2 + 0.5), o = 0.01 * std::sin(2 * kPi * s / 0.3);
+      EXPECT_NEAR(scaled.height({u, 0.5 + b}), f * profileAt(b / f), 1e-12);
+      EXPECT_NEAR(offset.height({u, 0.5 + b}), profileAt(b - o), 1e-12);
+    }
+}
+
+// Every kind of region at once: crossings, an arc, a corner, open ends, a ridge with vertical walls
+// and perturbed grooves. For rays in many directions the hit lies on the surface (or on a wall
+// between its two sides), and no point sampled along the ray before it is below the surface.
+TEST(GrooveReference, RayHitsAgreeWithTheHeightField) {
+  const std::string profiles = R"("v": {"points": [[-0.03, 0], [0, -0.03], [0.03, 0]]},
+      "box": {"points": [[-0.02, 0], [-0.02, -0.02], [0.02, -0.02], [0.02, 0]]},
+      "ridge": {"points": [[-0.03, 0], [-0.01, 0], [-0.01, 0.02], [0.01, 0.02], [0.01, 0], [0.03, 0]]})";
+  const std::string grooves = R"({"profile": "v", "path": {"line": [[0.2, 0.5], [0.8, 0.5]]}},
+      {"profile": "box", "path": {"polyline": [[0.3, 0.2], [0.5, 0.5], [0.7, 0.3]]}},
+      {"profile": "ridge", "path": {"line": [[0.5, 0.2], [0.5, 0.8]]}},
+      {"profile": "v", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.2, "start": 20, "end": 160}}},
+      {"profile": "v", "path": {"line": [[0.2, 0.7], [0.8, 0.75]]}, "perturbation": {"kind": "scale", "amplitude": 0.5, "wavelength": 0.1}},
+      {"profile": "box", "path": {"arc": {"centre": [0.5, 0.45], "radius": 0.3, "start": 200, "end": 340}},
+       "perturbation": {"kind": "offset", "amplitude": 0.01, "wavelength": 0.15}})";
+  const GrooveScene scene = parseOk(sceneText(profiles, grooves));
+  const ReferenceSurface surface(scene);
+  std::uint64_t state = 7;
+  const auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1.0p-53;
+  };
+  int walls = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double theta = 1.4 * next(), phi = 2 * kPi * next();
+    const Vec3 e = directionFromAngles(theta, phi);
+    const Vec2 target{0.15 + 0.7 * next(), 0.15 + 0.7 * next()};
+    const Vec3 origin{target.u + 0.05 / e.w * e.u, target.v + 0.05 / e.w * e.v, 0.05};
+    const Vec3 dir{-e.u, -e.v, -e.w};
+    ReferenceSurface::Hit hit;
+    ASSERT_TRUE(surface.intersect(origin, dir, hit));
+    const Vec2 at{hit.point.u, hit.point.v};
+    if (hit.normal.w == 0) {  // a wall: its height lies between the heights on its two sides
+      ++walls;
+      const Vec2 n{hit.normal.u * 1e-7, hit.normal.v * 1e-7};
+      const double front = surface.height({at.u + n.u, at.v + n.v}), back = surface.height({at.u - n.u, at.v - n.v});
+      EXPECT_LE(front, hit.point.w + 1e-9);
+      EXPECT_GE(back, hit.point.w - 1e-9);
+    } else {
+      EXPECT_NEAR(surface.height(at), hit.point.w, 1e-9) << k;
+    }
+    for (int i = 1; i < 400; ++i) {
+      const double t = hit.t * i / 400;
+      const Vec3 p{origin.u + t * dir.u, origin.v + t * dir.v, origin.w + t * dir.w};
+      EXPECT_GT(p.w - surface.height({p.u, p.v}), -1e-9) << k << " " << i;
+    }
+  }
+  EXPECT_GT(walls, 0);
+}
+
+
+// The benchmark scene set: every scene loads, and a one-row reference render of it is finite.
+TEST(GrooveReference, BenchmarkScenesLoadAndRender) {
+  const std::filesystem::path dir = std::filesystem::path(BAKE_SOURCE_DIR) / "bench" / "groove" / "scenes";
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    Result<GrooveScene> scene = readGrooveScene(entry.path().string());
+    ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+    EXPECT_FALSE(scene->grooves.empty()) << entry.path();
+    EXPECT_TRUE(scene->warnings.empty()) << entry.path();
+    ReferenceSettings s;
+    s.samplesPerPixel = 4;
+    Lighting light = lightFrom(0.7, 0.4);
+    light.maxBounces = 2;
+    View view = windowView({0.2, 0.5}, {0.8, 0.52}, 24, 1.0, 0.3);
+    const RgbImage image = renderReference(*scene, view, light, s);
+    for (float value : image.rgb) {
+      EXPECT_TRUE(std::isfinite(value)) << entry.path();
+      EXPECT_GE(value, 0.0f) << entry.path();
+    }
+  }
+  EXPECT_GE(count, 17);
 }
 
 }  // namespace
