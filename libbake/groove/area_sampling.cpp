@@ -1,7 +1,282 @@
-// PLACEHOLDER (replaced by the area sampling of seed §6): keeps the library linking meanwhile.
-#include "groove/shade_local.h"
+// Area sampling for the special cases of seed 000 §6 (intersections, intersected ends, isolated ends,
+// corners), exact for straightened primitives. The local surface is built as planar convex pieces
+// (area_surface.cpp, area_walls.cpp: the seed's facets after intersection removal, §6.2, and the walls
+// of ends, §6.5). Then, for every piece facing the viewer:
+// - footprint clipping and masking (§6.1, §6.3): the piece is projected along the view onto the base
+//   plane (x' = x - (h / E_w) E_uv, "screen" coordinates); its visible part is its projection clipped
+//   to the footprint parallelogram, minus the projections of the pieces in front of it. Pieces of a
+//   height field do not interpenetrate, so "in front" is decided once, at one point of the overlap.
+//   Pieces facing away are hidden by the pieces in front of them and are skipped.
+// - shadowing (§6.3): every piece nearer the light is projected along L onto the piece's plane and
+//   from there along the view onto the base plane (both affine maps of the piece's plane), and
+//   subtracted from the visible part.
+// - reflection (§6.4, Eq. 1): r_i = (area of the visible, lit part on the base plane) / footprint area,
+//   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
+// Only direct light: mirror inter-reflections (§7) are not followed in special cases yet.
+// A zero-area footprint is a point sample: the radiance of the point seen along the view line.
+// Caps: kMaxSurfacePieces pieces and kMaxWalls walls per footprint, kMaxFragments convex fragments per
+// visible piece, kPolygonMaxVertices vertices per polygon; overflows are counted (AreaSampleStats) and
+// degrade gracefully (polygon.h, area_surface.h).
+#include <algorithm>
+#include <cmath>
+
+#include "groove/area_surface.h"
+
 namespace bake::groove {
-Rgb areaSample(const GrooveScene&, const std::vector<LocalGroove>&, const Footprint&, const Vec3&, const Lighting&) {
-  return {0, 0, 0};
+namespace {
+
+double dot(const Vec3& a, const Vec3& b) { return a.u * b.u + a.v * b.v + a.w * b.w; }
+
+// A piece as the sampler sees it: its projection along the view onto the base plane ("screen") and
+// along the light onto a plane perpendicular to L.
+struct Projected {
+  const SurfacePiece* piece = nullptr;
+  double facingViewer = 0;  // N . E
+  double facingLight = 0;   // N . L
+  ConvexPolygon screen;
+  Box2 screenBox;
+  ConvexPolygon lightView;
+  Box2 lightBox;
+};
+
+struct Frame {
+  Vec3 toViewer, toLight;
+  Vec3 lightAxis1, lightAxis2;  // orthonormal, perpendicular to L
+  double minArea = 0, depthTolerance = 0;
+  bool lightAllOccluders = false;  // light near or below the horizon: back faces occlude too
+};
+
+Vec2 toScreen(const Frame& f, const Vec3& p) {
+  const double k = p.w / f.toViewer.w;
+  return {p.u - k * f.toViewer.u, p.v - k * f.toViewer.v};
 }
+
+Vec2 toLightPlane(const Frame& f, const Vec3& p) { return {dot(p, f.lightAxis1), dot(p, f.lightAxis2)}; }
+
+void perpendicularAxes(const Vec3& d, Vec3& a, Vec3& b) {
+  const Vec3 helper = std::abs(d.w) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  a = {helper.v * d.w - helper.w * d.v, helper.w * d.u - helper.u * d.w, helper.u * d.v - helper.v * d.u};
+  const double n = std::sqrt(dot(a, a));
+  a = {a.u / n, a.v / n, a.w / n};
+  b = {d.v * a.w - d.w * a.v, d.w * a.u - d.u * a.w, d.u * a.v - d.v * a.u};
+}
+
+Projected project(const Frame& f, const SurfacePiece& piece) {
+  Projected p;
+  p.piece = &piece;
+  p.facingViewer = dot(piece.normal, f.toViewer);
+  p.facingLight = dot(piece.normal, f.toLight);
+  for (int i = 0; i < piece.count; ++i) {
+    p.screen.add(toScreen(f, piece.vertex[i]));
+    p.lightView.add(toLightPlane(f, piece.vertex[i]));
+  }
+  makeCounterClockwise(p.screen);
+  makeCounterClockwise(p.lightView);
+  p.screenBox = boundsOf(p.screen);
+  p.lightBox = boundsOf(p.lightView);
+  return p;
+}
+
+// Distance along the view line through screen point x (from the base plane, towards the viewer) to
+// the piece's plane.
+double viewDepth(const Projected& p, Vec2 x) {
+  const Vec3& n = p.piece->normal;
+  return (p.piece->planeOffset - n.u * x.u - n.v * x.v) / p.facingViewer;
+}
+
+// The point of piece p seen at screen point x.
+Vec3 seenPoint(const Frame& f, const Projected& p, Vec2 x) {
+  const double t = viewDepth(p, x);
+  return {x.u + t * f.toViewer.u, x.v + t * f.toViewer.v, t * f.toViewer.w};
+}
+
+// Signed distance from q along L to the plane of p (positive: the plane is towards the light).
+double lightDistance(const Projected& p, const Vec3& q) {
+  return (p.piece->planeOffset - dot(p.piece->normal, q)) / p.facingLight;
+}
+
+bool occludesLight(const Frame& f, const Projected& p) {
+  return f.lightAllOccluders ? std::abs(p.facingLight) > 1e-12 : p.facingLight > 1e-12;
+}
+
+// The visible part of piece i inside the footprint: its projection minus the pieces in front.
+void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ConvexPolygon& footprint,
+                 FragmentSet& visible) {
+  const Projected& me = all[i];
+  visible.add(intersect(me.screen, footprint));
+  for (std::size_t j = 0; j < all.size() && visible.count > 0; ++j) {
+    const Projected& other = all[j];
+    if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(visible.bounds())) continue;
+    const ConvexPolygon overlap = intersect(other.screen, me.screen);
+    if (overlap.empty() || area(overlap) <= f.minArea) continue;
+    const Vec2 c = centroid(overlap);
+    if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) visible.subtract(other.screen);
+  }
+}
+
+// Piece j's shadow on piece i's plane, seen on the screen.
+ConvexPolygon shadowOnScreen(const Frame& f, const Projected& receiver, const Projected& caster) {
+  ConvexPolygon s;
+  for (int k = 0; k < caster.piece->count; ++k) {
+    const Vec3& q = caster.piece->vertex[k];
+    const double lambda = lightDistance(receiver, q);
+    s.add(toScreen(f, {q.u + lambda * f.toLight.u, q.v + lambda * f.toLight.v, q.w + lambda * f.toLight.w}));
+  }
+  makeCounterClockwise(s);
+  return s;
+}
+
+// The lit part of `part` (visible fragments of piece i).
+void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, FragmentSet& part) {
+  const Projected& me = all[i];
+  for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
+    const Projected& other = all[j];
+    if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
+    const ConvexPolygon shadow = shadowOnScreen(f, me, other);
+    if (!shadow.empty() && !boundsOf(shadow).overlaps(part.bounds())) continue;
+    const ConvexPolygon overlap = intersect(shadow, me.screen);
+    if (overlap.empty() || area(overlap) <= f.minArea) continue;
+    const Vec3 p = seenPoint(f, me, centroid(overlap));
+    if (lightDistance(other, p) > f.depthTolerance) part.subtract(shadow);
+  }
+}
+
+bool isBlack(const Rgb& c) { return c[0] == 0 && c[1] == 0 && c[2] == 0; }
+
+// The radiance of the surface point seen along the view line through the footprint centre.
+Rgb pointSample(const GrooveScene& scene, const Frame& f, const std::vector<Projected>& all, const Lighting& lighting) {
+  const Vec2 centre{0, 0};
+  const Projected* front = nullptr;
+  double best = -1e300;
+  for (const Projected& p : all) {
+    if (p.facingViewer <= 1e-12 || !contains(p.screen, centre)) continue;
+    const double t = viewDepth(p, centre);
+    if (t > best) best = t, front = &p;
+  }
+  if (!front) return {0, 0, 0};
+  const Vec3 x = seenPoint(f, *front, centre);
+  const Rgb direct = directRadiance(scene.materials[front->piece->material], front->piece->normal, f.toViewer, lighting);
+  if (isBlack(direct)) return direct;
+  const Vec2 xl = toLightPlane(f, x);
+  for (const Projected& p : all) {
+    if (&p == front || !occludesLight(f, p) || !contains(p.lightView, xl)) continue;
+    if (lightDistance(p, x) > f.depthTolerance) return {0, 0, 0};
+  }
+  return direct;
+}
+
+// The extent of the local geometry: half-width, height above and depth below the base plane.
+struct Extent {
+  double width = 0, height = 0, depth = 0;
+};
+Extent extentOf(const std::vector<StraightGroove>& grooves) {
+  Extent e;
+  for (const StraightGroove& g : grooves)
+    for (const Vec2& p : g.profile) {
+      e.width = std::max(e.width, std::abs(p.u));
+      e.height = std::max(e.height, p.v);
+      e.depth = std::max(e.depth, -p.v);
+    }
+  return e;
+}
+
+// How far from a point its view line and its light ray travel over the grooves' height range; a light
+// near or below the horizon is followed up to a bounded distance.
+constexpr double kMaxLightSlope = 64;
+double reach(const Vec3& d, double heightRange) {
+  const double horizontal = std::hypot(d.u, d.v);
+  if (horizontal == 0) return 0;
+  const double slope = d.w > horizontal / kMaxLightSlope ? horizontal / d.w : kMaxLightSlope;
+  return heightRange * slope;
+}
+
+ConvexPolygon square(const Box2& b) {
+  ConvexPolygon p;
+  p.add(b.lower);
+  p.add({b.upper.u, b.lower.v});
+  p.add(b.upper);
+  p.add({b.lower.u, b.upper.v});
+  return p;
+}
+
+}  // namespace
+
+Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats) {
+  stats = {};
+  if (!(toViewer.w > 0)) return {0, 0, 0};
+  const std::vector<StraightGroove> straight = straighten(scene, grooves, footprint.centre);
+  const Extent extent = extentOf(straight);
+
+  // The footprint around the origin; a degenerate (segment) footprint is given a sliver of width.
+  Vec2 axis1 = footprint.axis1, axis2 = footprint.axis2;
+  const double span = std::hypot(axis1.u, axis1.v) + std::hypot(axis2.u, axis2.v);
+  const double lengthScale = std::max({span, extent.width, extent.height + extent.depth, 1e-300});
+  ConvexPolygon fp = parallelogram({0, 0}, axis1, axis2);
+  stats.pointSample = span == 0;
+  if (!stats.pointSample && area(fp) < 1e-12 * span * span) {
+    const Vec2 along = std::hypot(axis1.u, axis1.v) >= std::hypot(axis2.u, axis2.v) ? axis1 : axis2;
+    const double n = std::hypot(along.u, along.v);
+    axis2 = {-along.v / n * 1e-6 * span, along.u / n * 1e-6 * span};
+    axis1 = along;
+    fp = parallelogram({0, 0}, axis1, axis2);
+  }
+  const double footprintArea = area(fp);
+
+  Frame f;
+  f.toViewer = toViewer;
+  f.toLight = lighting.toLight;
+  perpendicularAxes(f.toLight, f.lightAxis1, f.lightAxis2);
+  const double referenceArea = stats.pointSample ? 1e-6 * lengthScale * lengthScale : footprintArea;
+  f.minArea = 1e-13 * referenceArea;
+  f.depthTolerance = 1e-12 * lengthScale;
+  f.lightAllOccluders = f.toLight.w < 0.05;
+
+  // The working region: the footprint, what its view lines cross, and what shadows that.
+  const double heightRange = extent.height + extent.depth;
+  const double margin = reach(f.toViewer, heightRange) + reach(f.toLight, heightRange) + 1e-6 * lengthScale;
+  Box2 box = boundsOf(fp);
+  box.lower = {box.lower.u - margin, box.lower.v - margin};
+  box.upper = {box.upper.u + margin, box.upper.v + margin};
+  const ConvexPolygon region = square(box);
+
+  std::vector<SurfacePiece> pieces;
+  pieces.reserve(64);
+  buildHeightPieces(straight, scene.baseMaterial, region, f.minArea, pieces, stats.surface);
+  buildWalls(straight, scene.baseMaterial, region, lengthScale, pieces, stats.surface);
+
+  std::vector<Projected> all;
+  all.reserve(pieces.size());
+  for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
+
+  if (stats.pointSample) return pointSample(scene, f, all, lighting);
+
+  const Box2 fpBox = boundsOf(fp);
+  Rgb sum{0, 0, 0};
+  FragmentSet visible;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Projected& me = all[i];
+    if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
+    const Rgb radiance = directRadiance(scene.materials[me.piece->material], me.piece->normal, f.toViewer, lighting);
+    if (isBlack(radiance)) continue;  // facing away from the light: no direct light at all
+    visible.count = 0;
+    visible.minArea = f.minArea;
+    visible.overflows = 0;
+    visiblePart(f, all, i, fp, visible);
+    if (visible.count == 0) continue;
+    ++stats.visiblePieces;
+    litPart(f, all, i, visible);
+    stats.fragmentOverflows += visible.overflows;
+    const double share = visible.weightedArea() / footprintArea;
+    for (int c = 0; c < 3; ++c) sum[c] += share * radiance[c];
+  }
+  return sum;
+}
+
+Rgb areaSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+               const Vec3& toViewer, const Lighting& lighting) {
+  AreaSampleStats stats;
+  return areaSampleWithStats(scene, grooves, footprint, toViewer, lighting, stats);
+}
+
 }  // namespace bake::groove

@@ -1,0 +1,206 @@
+// Convex polygon clipping for the area sampling of seed 000 §6 (see polygon.h): Sutherland-Hodgman
+// clipping by one half-plane at a time; convex minus convex by peeling off, edge after edge of the
+// hole, the part of the polygon outside that edge (the pieces are disjoint and convex).
+#include "groove/polygon.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bake::groove {
+
+HalfPlane leftOf(Vec2 a, Vec2 b) {
+  const Vec2 n{-(b.v - a.v), b.u - a.u};
+  return {n, n.u * a.u + n.v * a.v};
+}
+
+void ConvexPolygon::add(Vec2 x) {
+  if (count == kPolygonMaxVertices) {
+    truncated = true;
+    return;
+  }
+  vertex[count++] = x;
+}
+
+ConvexPolygon parallelogram(Vec2 centre, Vec2 axis1, Vec2 axis2) {
+  ConvexPolygon p;
+  const double h1u = 0.5 * axis1.u, h1v = 0.5 * axis1.v, h2u = 0.5 * axis2.u, h2v = 0.5 * axis2.v;
+  p.add({centre.u - h1u - h2u, centre.v - h1v - h2v});
+  p.add({centre.u + h1u - h2u, centre.v + h1v - h2v});
+  p.add({centre.u + h1u + h2u, centre.v + h1v + h2v});
+  p.add({centre.u - h1u + h2u, centre.v - h1v + h2v});
+  makeCounterClockwise(p);
+  return p;
+}
+
+double signedArea(const ConvexPolygon& p) {
+  if (p.count < 3) return 0;
+  // Relative to the first vertex, so far-off polygons keep their precision.
+  const Vec2 o = p.vertex[0];
+  double twice = 0;
+  for (int i = 1; i + 1 < p.count; ++i) {
+    const Vec2 a{p.vertex[i].u - o.u, p.vertex[i].v - o.v}, b{p.vertex[i + 1].u - o.u, p.vertex[i + 1].v - o.v};
+    twice += a.u * b.v - a.v * b.u;
+  }
+  return 0.5 * twice;
+}
+
+double area(const ConvexPolygon& p) { return std::abs(signedArea(p)); }
+
+Vec2 centroid(const ConvexPolygon& p) {
+  if (p.count == 0) return {0, 0};
+  const Vec2 o = p.vertex[0];
+  double twice = 0, cu = 0, cv = 0;
+  for (int i = 1; i + 1 < p.count; ++i) {
+    const Vec2 a{p.vertex[i].u - o.u, p.vertex[i].v - o.v}, b{p.vertex[i + 1].u - o.u, p.vertex[i + 1].v - o.v};
+    const double cross = a.u * b.v - a.v * b.u;
+    twice += cross;
+    cu += cross * (a.u + b.u);
+    cv += cross * (a.v + b.v);
+  }
+  if (twice == 0) {  // degenerate: the vertex mean
+    double su = 0, sv = 0;
+    for (int i = 0; i < p.count; ++i) su += p.vertex[i].u, sv += p.vertex[i].v;
+    return {su / p.count, sv / p.count};
+  }
+  return {o.u + cu / (3 * twice), o.v + cv / (3 * twice)};
+}
+
+void makeCounterClockwise(ConvexPolygon& p) {
+  if (signedArea(p) < 0) std::reverse(p.vertex.begin(), p.vertex.begin() + p.count);
+}
+
+Box2 boundsOf(const ConvexPolygon& p) {
+  Box2 b;
+  for (int i = 0; i < p.count; ++i) {
+    b.lower.u = std::min(b.lower.u, p.vertex[i].u);
+    b.lower.v = std::min(b.lower.v, p.vertex[i].v);
+    b.upper.u = std::max(b.upper.u, p.vertex[i].u);
+    b.upper.v = std::max(b.upper.v, p.vertex[i].v);
+  }
+  return b;
+}
+
+ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
+  ConvexPolygon out;
+  out.truncated = p.truncated;
+  if (p.count == 0) return out;
+  std::array<double, kPolygonMaxVertices> d;
+  bool allInside = true, allOutside = true;
+  for (int i = 0; i < p.count; ++i) {
+    d[i] = h.distance(p.vertex[i]);
+    allInside = allInside && d[i] >= 0;
+    allOutside = allOutside && d[i] <= 0;
+  }
+  if (allInside) return p;
+  if (allOutside) return out;
+  for (int i = 0; i < p.count; ++i) {
+    const int j = (i + 1) % p.count;
+    if (d[i] >= 0) out.add(p.vertex[i]);
+    // A crossing strictly between the two ends: interpolate from the end farther from the line.
+    if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
+      const double t = d[i] / (d[i] - d[j]);
+      const Vec2 a = p.vertex[i], b = p.vertex[j];
+      out.add({a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)});
+    }
+  }
+  if (out.count < 3) out.count = 0;
+  return out;
+}
+
+ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper) {
+  ConvexPolygon out = p;
+  for (int i = 0; i < clipper.count && !out.empty(); ++i)
+    out = clip(out, leftOf(clipper.vertex[i], clipper.vertex[(i + 1) % clipper.count]));
+  if (out.empty()) out.count = 0;
+  return out;
+}
+
+bool contains(const ConvexPolygon& p, Vec2 x) {
+  if (p.empty()) return false;
+  for (int i = 0; i < p.count; ++i)
+    if (leftOf(p.vertex[i], p.vertex[(i + 1) % p.count]).distance(x) < 0) return false;
+  return true;
+}
+
+int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
+             std::array<ConvexPolygon, kPolygonMaxVertices>& pieces) {
+  int n = 0;
+  ConvexPolygon rest = p;
+  for (int i = 0; i < hole.count && !rest.empty(); ++i) {
+    const HalfPlane inside = leftOf(hole.vertex[i], hole.vertex[(i + 1) % hole.count]);
+    const HalfPlane outside{{-inside.normal.u, -inside.normal.v}, -inside.offset};
+    const ConvexPolygon piece = clip(rest, outside);
+    if (!piece.empty() && area(piece) > minArea) pieces[n++] = piece;
+    rest = clip(rest, inside);
+  }
+  return n;
+}
+
+void FragmentSet::add(const ConvexPolygon& p, double weight) {
+  if (p.empty() || area(p) <= minArea) return;
+  if (count == kMaxFragments) {
+    ++overflows;  // no room: the piece is lost (an under-estimate of its area)
+    return;
+  }
+  fragment[count++] = {p, weight};
+  truncated = truncated || p.truncated;
+}
+
+void FragmentSet::subtract(const ConvexPolygon& hole) {
+  if (hole.empty()) return;
+  const Box2 holeBox = boundsOf(hole);
+  std::array<ConvexPolygon, kPolygonMaxVertices> pieces;
+  const int original = count;
+  for (int i = 0; i < original; ++i) {
+    Fragment& f = fragment[i];
+    if (f.polygon.empty() || !boundsOf(f.polygon).overlaps(holeBox)) continue;
+    const ConvexPolygon overlap = intersect(f.polygon, hole);
+    const double removed = area(overlap);
+    if (overlap.empty() || removed <= minArea) continue;
+    const double whole = area(f.polygon);
+    if (removed >= whole - minArea) {
+      f.polygon.count = 0;  // fully covered; compacted below
+      continue;
+    }
+    // A fragment of weight < 1 stands for itself minus holes that could not be cut out; the new hole
+    // is taken to miss those, so the fragment's weighted area drops by exactly `removed`.
+    const double remaining = std::max(0.0, f.weight * whole - removed);
+    const int n = groove::subtract(f.polygon, hole, minArea, pieces);
+    if (n == 0) {
+      f.polygon.count = 0;
+    } else if (count + n - 1 <= kMaxFragments) {
+      const double weight = f.weight == 1 ? 1 : std::min(1.0, remaining / (whole - removed));
+      f.polygon = pieces[0];
+      f.weight = weight;
+      for (int k = 1; k < n; ++k) fragment[count++] = {pieces[k], weight};
+      for (int k = 0; k < n; ++k) truncated = truncated || pieces[k].truncated;
+    } else {
+      ++overflows;
+      f.weight = remaining / whole;
+    }
+  }
+  int kept = 0;
+  for (int i = 0; i < count; ++i)
+    if (!fragment[i].polygon.empty()) fragment[kept++] = fragment[i];
+  count = kept;
+}
+
+double FragmentSet::weightedArea() const {
+  double sum = 0;
+  for (int i = 0; i < count; ++i) sum += fragment[i].weight * area(fragment[i].polygon);
+  return sum;
+}
+
+Box2 FragmentSet::bounds() const {
+  Box2 b;
+  for (int i = 0; i < count; ++i) {
+    const Box2 f = boundsOf(fragment[i].polygon);
+    b.lower.u = std::min(b.lower.u, f.lower.u);
+    b.lower.v = std::min(b.lower.v, f.lower.v);
+    b.upper.u = std::max(b.upper.u, f.upper.u);
+    b.upper.v = std::max(b.upper.v, f.upper.v);
+  }
+  return b;
+}
+
+}  // namespace bake::groove

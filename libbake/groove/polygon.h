@@ -1,0 +1,84 @@
+// Convex polygons of fixed capacity for the area sampling of seed 000 §6 (footprint clipping,
+// intersection removal and occlusion are all clips and subtractions of convex polygons): clipping by a
+// half-plane (Sutherland-Hodgman on one edge), convex-convex intersection, and convex-minus-convex as a
+// few convex pieces (the part outside each edge of the subtracted polygon in turn). Fixed capacities
+// and no allocation, so the same code ports to a fragment shader; overflows degrade gracefully and are
+// counted (below).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "groove/scene.h"
+
+namespace bake::groove {
+
+// Clipping a convex n-gon by a half-plane gives at most n + 1 vertices; a piece of the surface is cut
+// by its strip, joint lines, band lines and a few plane comparisons, far below this.
+constexpr int kPolygonMaxVertices = 24;
+
+// The half-plane normal . x >= offset.
+struct HalfPlane {
+  Vec2 normal;
+  double offset = 0;
+  double distance(Vec2 x) const { return normal.u * x.u + normal.v * x.v - offset; }
+};
+// The half-plane left of the directed line a -> b (inside of a counter-clockwise polygon's edge).
+HalfPlane leftOf(Vec2 a, Vec2 b);
+
+struct ConvexPolygon {
+  std::array<Vec2, kPolygonMaxVertices> vertex{};
+  int count = 0;
+  bool truncated = false;  // a vertex was dropped for lack of room (the polygon shrank slightly)
+
+  bool empty() const { return count < 3; }
+  void add(Vec2 x);  // drops x (and sets `truncated`) when full
+};
+
+ConvexPolygon parallelogram(Vec2 centre, Vec2 axis1, Vec2 axis2);  // centre +- axis1/2 +- axis2/2, CCW
+double signedArea(const ConvexPolygon& p);
+double area(const ConvexPolygon& p);
+Vec2 centroid(const ConvexPolygon& p);  // area centroid; the vertex mean when degenerate
+void makeCounterClockwise(ConvexPolygon& p);
+
+struct Box2 {
+  Vec2 lower{1e300, 1e300}, upper{-1e300, -1e300};
+  bool overlaps(const Box2& o) const {
+    return lower.u <= o.upper.u && o.lower.u <= upper.u && lower.v <= o.upper.v && o.lower.v <= upper.v;
+  }
+};
+Box2 boundsOf(const ConvexPolygon& p);
+
+ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h);
+// `clipper` counter-clockwise.
+ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper);
+bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary included
+
+// p minus hole (hole counter-clockwise) as at most hole.count disjoint convex pieces, written to
+// `pieces`; returns their number. Pieces of area <= minArea are left out.
+int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
+             std::array<ConvexPolygon, kPolygonMaxVertices>& pieces);
+
+// A set of disjoint convex fragments with weights (the visible, lit part of a piece). The capacity is
+// fixed; when a subtraction would need more room, the fragment is kept whole and its weight lowered
+// so that its weighted area drops by the area of the hole inside it (exact in area as long as the
+// holes that were not cut out do not overlap later holes), and `overflows` counts it.
+constexpr int kMaxFragments = 48;
+struct Fragment {
+  ConvexPolygon polygon;
+  double weight = 1;
+};
+struct FragmentSet {
+  std::array<Fragment, kMaxFragments> fragment;
+  int count = 0;
+  double minArea = 0;        // fragments at or below this area are dropped
+  std::uint32_t overflows = 0;
+  bool truncated = false;    // some polygon lost a vertex for lack of room
+
+  void add(const ConvexPolygon& p, double weight = 1);
+  void subtract(const ConvexPolygon& hole);  // hole counter-clockwise
+  double weightedArea() const;
+  Box2 bounds() const;
+};
+
+}  // namespace bake::groove
