@@ -24,6 +24,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "groove/reference.h"
 
@@ -285,6 +288,70 @@ struct Ray {
   double z(double t) const { return originW + t * dirW; }
 };
 
+// Shrinks a sign-change bracket [a, b] of a continuous f to `tolerance` by the Illinois variant of
+// regula falsi (superlinear, and the bracket always holds the root); returns the final bracket, whose
+// first end keeps f(a)'s sign.
+template <class F>
+std::pair<double, double> narrowBracket(F f, double a, double b, double fa, double fb, double tolerance) {
+  int kept = 0;  // which end stayed last time: halve its value when it stays again
+  for (int i = 0; i < 200 && b - a > tolerance; ++i) {
+    double c = fa != fb ? (fa * b - fb * a) / (fa - fb) : 0.5 * (a + b);
+    if (!(c > a && c < b)) c = 0.5 * (a + b);
+    const double fc = f(c);
+    if (fc == 0) return {std::nextafter(c, a), c};
+    if ((fc > 0) == (fa > 0)) {
+      a = c, fa = fc;
+      if (kept == 1) fb *= 0.5;
+      kept = 1;
+    } else {
+      b = c, fb = fc;
+      if (kept == -1) fa *= 0.5;
+      kept = -1;
+    }
+  }
+  return {a, b};
+}
+
+// The parts of [ta, tb] where the ray's projection is within the groove's width of the path's line
+// or circle (|b| <= grooveWidth): one interval for a line, up to two for an annulus.
+std::vector<std::pair<double, double>> bandIntervals(const Component& c, const Ray& ray, double ta, double tb) {
+  std::vector<std::pair<double, double>> out;
+  const auto keep = [&](double lo, double hi) {
+    lo = std::max(lo, ta);
+    hi = std::min(hi, tb);
+    if (hi > lo) out.push_back({lo, hi});
+  };
+  const double w = c.grooveWidth * (1 + 1e-9);
+  if (!c.arc) {
+    const double b0 = dot(sub(ray.origin, c.start), c.normal), rate = dot(ray.dir, c.normal);
+    if (rate == 0) {
+      if (std::abs(b0) <= w) keep(ta, tb);
+      return out;
+    }
+    const double t1 = (-w - b0) / rate, t2 = (w - b0) / rate;
+    keep(std::min(t1, t2), std::max(t1, t2));
+    return out;
+  }
+  // Chords of the outer and inner circles: [outer in, inner in] and [inner out, outer out].
+  const auto chord = [&](double rho, double& t1, double& t2) {
+    const Vec2 d = sub(ray.origin, c.centre);
+    const double a = dot(ray.dir, ray.dir), half = dot(d, ray.dir), disc = half * half - a * (dot(d, d) - rho * rho);
+    if (rho <= 0 || disc < 0) return false;
+    t1 = (-half - std::sqrt(disc)) / a;
+    t2 = (-half + std::sqrt(disc)) / a;
+    return true;
+  };
+  double o1 = 0, o2 = 0, i1 = 0, i2 = 0;
+  if (!chord(c.radius + w, o1, o2)) return out;
+  if (!chord(c.radius - w, i1, i2)) {
+    keep(o1, o2);
+    return out;
+  }
+  keep(o1, i1);
+  keep(i2, o2);
+  return out;
+}
+
 }  // namespace
 
 struct ReferenceSurface::Impl {
@@ -514,13 +581,13 @@ void ReferenceSurface::Impl::numericEvents(const Component& c, const Ray& ray, d
   const double horizontal = length(ray.dir);
   if (horizontal == 0) return;
   const Perturbation& p = c.perturbation;
-  const double sMin = minScale(p), rate = rateBound(p);
-  const double bReach = std::abs(frameAt(c, ray.at(ta)).b) + horizontal * (tb - ta) + p.amplitude;
-  const double qReach = bReach / sMin;
+  // Inside the band |b| <= the groove's width (outside it |q| > wmax: no vertex to cross), |q| is
+  // bounded, and so is |dq/dt|.
+  const double sMin = minScale(p), rate = rateBound(p), qReach = c.grooveWidth / sMin;
   const double gradQ = (1 + (p.kind == Perturbation::Kind::Offset ? rate : 0) * c.gradSMax) / sMin +
                        (p.kind == Perturbation::Kind::Scale ? qReach * rate * c.gradSMax / sMin : 0);
   const double feature = std::min({p.wavelength, c.grooveWidth, c.arc ? c.radius : kInf});
-  const double maxStep = 0.125 * feature / horizontal, minStep = 1e-5 * feature / horizontal;
+  const double maxStep = 0.125 * feature / horizontal, minStep = 1e-3 * feature / horizontal;
   const std::vector<double>& vertices = c.profile->b;
   const auto slot = [&](double q) { return std::upper_bound(vertices.begin(), vertices.end(), q) - vertices.begin(); };
   const auto distance = [&](double q) {
@@ -528,26 +595,37 @@ void ReferenceSurface::Impl::numericEvents(const Component& c, const Ray& ray, d
     for (double bk : vertices) best = std::min(best, std::abs(q - bk));
     return best;
   };
-  double t = ta;
-  double q = coordinateAt(c, ray.at(t)).q;
-  for (int guard = 0; guard < 1000000 && t < tb; ++guard) {
-    const double step = std::clamp(distance(q) / (horizontal * gradQ), minStep, maxStep);
-    const double tn = std::min(tb, t + step);
-    const double qn = coordinateAt(c, ray.at(tn)).q;
-    if (slot(qn) != slot(q)) {
-      double lo = t, hi = tn;
-      const auto slotLo = slot(q);
-      while (hi - lo > 1e-12 * domainSize) {
-        const double mid = 0.5 * (lo + hi);
-        (slot(coordinateAt(c, ray.at(mid)).q) == slotLo ? lo : hi) = mid;
+  for (const auto& [from, to] : bandIntervals(c, ray, ta, tb)) {
+    double t = from;
+    double q = coordinateAt(c, ray.at(t)).q;
+    for (int guard = 0; guard < 1000000 && t < to; ++guard) {
+      const double step = std::clamp(distance(q) / (horizontal * gradQ), minStep, maxStep);
+      const double tn = std::min(to, t + step);
+      const double qn = coordinateAt(c, ray.at(tn)).q;
+      const auto slotLo = slot(q), slotHi = slot(qn);
+      if (slotHi != slotLo) {
+        // The vertex crossed; several distinct ones in one step (only at the step floor) are split
+        // by bisection first.
+        const auto first = std::min(slotLo, slotHi), last = std::max(slotLo, slotHi) - 1;
+        double lo = t, hi = tn;
+        if (vertices[std::size_t(first)] != vertices[std::size_t(last)]) {
+          while (hi - lo > 1e-12 * domainSize) {
+            const double mid = 0.5 * (lo + hi);
+            (slot(coordinateAt(c, ray.at(mid)).q) == slotLo ? lo : hi) = mid;
+          }
+        } else {
+          const double vertex = vertices[std::size_t(first)];
+          const auto offsetFromVertex = [&](double at) { return coordinateAt(c, ray.at(at)).q - vertex; };
+          std::tie(lo, hi) = narrowBracket(offsetFromVertex, lo, hi, q - vertex, qn - vertex, 1e-12 * domainSize);
+        }
+        if (hi > ta && hi < tb) events.push_back({hi, unit(coordinateAt(c, ray.at(hi)).gradQ)});
+        t = hi;
+        q = coordinateAt(c, ray.at(t)).q;
+        continue;
       }
-      if (hi > ta && hi < tb) events.push_back({hi, unit(coordinateAt(c, ray.at(hi)).gradQ)});
-      t = hi;
-      q = coordinateAt(c, ray.at(t)).q;
-      continue;
+      t = tn;
+      q = qn;
     }
-    t = tn;
-    q = qn;
   }
 }
 
@@ -612,7 +690,7 @@ bool ReferenceSurface::Impl::solveMarching(const Ray& ray, const std::vector<Pie
   const double stepScale = std::min(horizontal > 0 ? feature / horizontal : kInf,
                                     ray.dirW != 0 ? depth / std::abs(ray.dirW) : kInf);
   const double maxStep = std::isfinite(stepScale) ? 0.125 * stepScale : hi - lo;
-  const double minStep = std::isfinite(stepScale) ? 1e-5 * stepScale : hi - lo;
+  const double minStep = std::isfinite(stepScale) ? 1e-3 * stepScale : hi - lo;
   const auto gap = [&](double t) { return ray.z(t) - sampleHeight(pieces, ray.at(t)).height; };
   double t = lo, g = gap(lo);
   if (g <= 0) {
@@ -623,12 +701,7 @@ bool ReferenceSurface::Impl::solveMarching(const Ray& ray, const std::vector<Pie
     const double step = std::clamp(lipschitz > 0 ? g / lipschitz : kInf, minStep, maxStep);
     const double tn = std::min(hi, t + step), gn = gap(tn);
     if (gn <= 0) {
-      double a = t, b = tn;
-      while (b - a > 1e-12 * domainSize) {
-        const double mid = 0.5 * (a + b);
-        (gap(mid) > 0 ? a : b) = mid;
-      }
-      tHit = a;  // the side above the surface
+      tHit = narrowBracket(gap, t, tn, g, gn, 1e-12 * domainSize).first;  // the side above the surface
       return true;
     }
     t = tn;

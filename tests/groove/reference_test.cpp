@@ -394,7 +394,7 @@ TEST(GrooveReference, BenchmarkScenesLoadAndRender) {
       EXPECT_GE(value, 0.0f) << entry.path();
     }
   }
-  EXPECT_GE(count, 17);
+  EXPECT_GE(count, 18);
 }
 
 }  // namespace
