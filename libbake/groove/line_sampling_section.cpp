@@ -159,6 +159,9 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
   std::size_t next = 0;
   std::vector<Piece> pieces;
   std::vector<double> splits;
+  // The polyline starts and ends on the base (h = 0), so a profile starting or ending with a vertical
+  // wall at the outermost break keeps that wall.
+  appendPoint(out, breaks.front(), 0, kWall);
   for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
     const double x0 = breaks[k], x1 = breaks[k + 1];
     while (next < profiles.size() && placed[profiles[next].first].b <= x0) active.push_back(next++);
@@ -177,6 +180,7 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
     active.resize(keep);
     appendInterval(out, pieces, x0, x1, base, splits);
   }
+  appendPoint(out, breaks.back(), 0, kWall);
   resolveWalls(out, base);
 }
 

@@ -1,0 +1,209 @@
+// The seed's method through the grid (libbake/groove/shade.cpp, seed 000 §4): the enlarged box finds
+// ridges seen or casting shadows from beyond the footprint, special cases go to area sampling, wrapping
+// scenes use the nearest copy, renderSeed is deterministic, and small views of a V-groove (with and
+// without mirror bounces) agree with the ray-traced reference within 3x its noise floor.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "groove/grid.h"
+#include "groove/line_sampling_section.h"
+#include "groove/reference.h"
+#include "groove/scene.h"
+#include "groove/shade.h"
+
+namespace bake::groove {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::string num(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+// Profiles: "v" (w 0.02, d 0.02), "ridge" (a box 0.04 wide, 0.03 high); materials: "ground" (base),
+// "paint", "chrome" (a mirror).
+GrooveScene sceneOf(const std::string& grooves, bool wrap = false) {
+  const std::string text = std::string(R"({"version": 1, "domain": {"size": [1, 1]}, "wrap": ")") +
+                           (wrap ? "repeat" : "none") + R"(",
+    "profiles": {"v": {"points": [[-0.02, 0], [0, -0.02], [0.02, 0]]},
+                 "deep": {"points": [[-0.01, 0], [0, -0.02], [0.01, 0]]},
+                 "ridge": {"points": [[-0.02, 0], [-0.02, 0.03], [0.02, 0.03], [0.02, 0]]}},
+    "materials": {"ground": {"albedo": [0.3, 0.5, 0.7]}, "paint": {"albedo": [0.8, 0.3, 0.1], "specular": [0.4, 0.4, 0.4], "shininess": 16},
+                  "chrome": {"albedo": [0.1, 0.1, 0.1], "specular": [0.5, 0.5, 0.5], "shininess": 30, "mirror": [0.9, 0.8, 0.7]}},
+    "base": "ground", "grooves": [)" + grooves + "]}";
+  Result<GrooveScene> scene = parseGrooveScene(text, "scene.json");
+  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+  return scene.isOk() ? scene.value() : GrooveScene{};
+}
+
+std::string line(const std::string& profile, const std::string& material, Vec2 a, Vec2 b) {
+  return R"({"profile": ")" + profile + R"(", "material": ")" + material + R"(", "path": {"line": [[)" + num(a.u) +
+         ", " + num(a.v) + "], [" + num(b.u) + ", " + num(b.v) + "]]}}";
+}
+
+GrooveGrid gridOf(const GrooveScene& scene) {
+  Result<GrooveGrid> grid = buildGrooveGrid(scene, GridSettings{});
+  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
+  return grid.isOk() ? grid.value() : GrooveGrid{};
+}
+
+Lighting lightTowards(Vec3 d, int bounces = 0) {
+  const double n = std::sqrt(d.u * d.u + d.v * d.v + d.w * d.w);
+  Lighting l;
+  l.toLight = {d.u / n, d.v / n, d.w / n};
+  l.maxBounces = bounces;
+  return l;
+}
+
+Footprint square(Vec2 centre, double side) { return {centre, {side, 0}, {0, side}}; }
+
+const Material& named(const GrooveScene& s, const std::string& name) {
+  for (const Material& m : s.materials)
+    if (m.name == name) return m;
+  ADD_FAILURE() << name;
+  return s.materials.front();
+}
+
+void expectRgbNear(const Rgb& a, const Rgb& b, double tolerance) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], tolerance) << "channel " << c;
+}
+
+TEST(SeedShader, NoGrooveNearIsTheFlatBase) {
+  const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}));
+  const GrooveGrid grid = gridOf(s);
+  const SeedShader shader(s, grid);
+  const Vec3 e = directionFromAngles(0.6, 1.0);
+  const Lighting l = lightTowards({0.2, 0.3, 1});
+  ShadeStats stats;
+  const Rgb value = shader.shade(square({0.5, 0.2}, 0.01), e, l, &stats);
+  EXPECT_EQ(stats.primitives, 0u);
+  EXPECT_FALSE(stats.special);
+  const double expected = 0.3 / kPi * l.toLight.w;
+  EXPECT_NEAR(value[0], expected, 1e-15);
+}
+
+TEST(SeedShader, TheEnlargedBoxFindsARidgeSeenFromBeyondTheFootprint) {
+  // A ridge 0.03 high over v in [0.48, 0.52]; seen from 80 degrees towards +v, the base points up to
+  // 0.03 tan(80) = 0.17 before its wall at v = 0.52 are hidden by it. The footprint [0.395, 0.405] is
+  // far outside the band (enlarged by wmax: up to 0.425), and it sees only that wall, at heights
+  // (0.52 - v) / tan(80) in [0.020, 0.022] < 0.03.
+  const GrooveScene s = sceneOf(line("ridge", "paint", {0.1, 0.5}, {0.9, 0.5}));
+  const GrooveGrid grid = gridOf(s);
+  const SeedShader shader(s, grid);
+  const double theta = 80 * kPi / 180;
+  const Vec3 e{0, std::sin(theta), std::cos(theta)};
+  const Lighting l = lightTowards({0, 0.3, 1});
+  const Footprint f = square({0.5, 0.40}, 0.01);
+  ShadeStats stats;
+  const Rgb value = shader.shade(f, e, l, &stats);
+  EXPECT_GE(stats.primitives, 1u);
+  EXPECT_FALSE(stats.special);
+  expectRgbNear(value, directRadiance(named(s, "paint"), {0, 1, 0}, e, l), 1e-12);
+  // Seen from above the same footprint is flat ground.
+  expectRgbNear(shader.shade(f, {0, 0, 1}, l), directRadiance(named(s, "ground"), {0, 0, 1}, {0, 0, 1}, l), 1e-15);
+}
+
+TEST(SeedShader, TheEnlargedBoxFindsARidgeCastingAShadow) {
+  // The light 80 degrees from the normal towards -v: the ridge (v in [0.48, 0.52], 0.03 high) shadows
+  // the base on its +v side up to 0.03 tan(80) = 0.17 beyond v = 0.52. Seen from above, the footprint
+  // [0.645, 0.655] is in the shadow (its shadow rays pass v = 0.52 at heights <= 0.024), the one at
+  // [0.745, 0.755] is not (>= 0.0397).
+  const GrooveScene s = sceneOf(line("ridge", "paint", {0.1, 0.5}, {0.9, 0.5}));
+  const GrooveGrid grid = gridOf(s);
+  const SeedShader shader(s, grid);
+  const double phi = 80 * kPi / 180;
+  const Lighting l = lightTowards({0, -std::sin(phi), std::cos(phi)});
+  ShadeStats stats;
+  EXPECT_EQ(shader.shade(square({0.5, 0.65}, 0.01), {0, 0, 1}, l, &stats)[0], 0);
+  EXPECT_GE(stats.primitives, 1u);
+  EXPECT_NEAR(shader.shade(square({0.5, 0.75}, 0.01), {0, 0, 1}, l)[0], 0.3 / kPi * std::cos(phi), 1e-15);
+}
+
+TEST(SeedShader, SpecialCasesGoToAreaSampling) {
+  const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}) + ", " +
+                                line("v", "paint", {0.5, 0.1}, {0.5, 0.9}));
+  const GrooveGrid grid = gridOf(s);
+  const SeedShader shader(s, grid);
+  const Vec3 e = directionFromAngles(0.5, 0.7);
+  const Lighting l = lightTowards({0.3, -0.2, 1});
+  const Footprint f = square({0.51, 0.505}, 0.02);
+  ShadeStats stats;
+  const Rgb value = shader.shade(f, e, l, &stats);
+  EXPECT_TRUE(stats.special);
+  std::vector<LocalGroove> grooves;
+  for (std::uint32_t p = 0; p < s.primitives.size(); ++p) grooves.push_back(localGroove(s, p, f.centre));
+  expectRgbNear(value, areaSample(s, grooves, f, e, l), 1e-12);
+  // Far from the crossing: line sampling, and the same value as the lone groove.
+  const Footprint g = square({0.2, 0.505}, 0.02);
+  const Rgb lone = shader.shade(g, e, l, &stats);
+  EXPECT_FALSE(stats.special);
+  std::vector<LocalGroove> one{localGroove(s, 0, g.centre)};
+  expectRgbNear(lone, lineSample(s, one, g, e, l), 1e-15);
+}
+
+TEST(SeedShader, WrappingSceneUsesTheNearestCopy) {
+  // A groove along v at u = 0.995 in a repeating unit square: footprints at u = 0.005 and u = 1.005
+  // are the same place.
+  const GrooveScene s = sceneOf(line("v", "paint", {0.995, -0.2}, {0.995, 1.2}), true);
+  const GrooveGrid grid = gridOf(s);
+  const SeedShader shader(s, grid);
+  const Vec3 e = directionFromAngles(0.7, 0.2);
+  const Lighting l = lightTowards({-0.4, 0.1, 1});
+  const Rgb a = shader.shade(square({0.005, 0.5}, 0.03), e, l);
+  const Rgb b = shader.shade(square({1.005, 0.5}, 0.03), e, l);
+  expectRgbNear(a, b, 1e-15);
+  const Rgb flat = directRadiance(named(s, "ground"), {0, 0, 1}, e, l);
+  EXPECT_GT(std::abs(a[0] - flat[0]), 1e-3);
+}
+
+TEST(SeedShader, RenderIsTheSameForAnyThreadCount) {
+  const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.45}, {0.9, 0.55}) + ", " +
+                                line("ridge", "chrome", {0.2, 0.3}, {0.8, 0.3}));
+  const GrooveGrid grid = gridOf(s);
+  const View view = windowView({0.2, 0.2}, {0.8, 0.8}, 24, 0.8, 2.0);
+  const Lighting l = lightTowards({0.3, 0.4, 1}, 2);
+  const RgbImage one = renderSeed(s, grid, view, l, 1), two = renderSeed(s, grid, view, l, 3);
+  ASSERT_EQ(one.rgb.size(), std::size_t(24 * 24 * 3));
+  EXPECT_EQ(one.rgb, two.rgb);
+}
+
+// The seed's method against the reference over a small view, within 3x the reference's noise floor
+// (the RMSE between two reference seeds).
+void expectMatchesReference(const GrooveScene& s, const View& view, const Lighting& l) {
+  const GrooveGrid grid = gridOf(s);
+  const RgbImage seed = renderSeed(s, grid, view, l, 0);
+  ReferenceSettings settings;
+  settings.samplesPerPixel = 64;
+  const RgbImage a = renderReference(s, view, l, settings);
+  settings.seed = 2;
+  const RgbImage b = renderReference(s, view, l, settings);
+  const double noise = compareImages(a, b).rmse;
+  const ImageError error = compareImages(seed, a);
+  EXPECT_LT(error.rmse, 3 * noise + 1e-9) << "noise floor " << noise;
+}
+
+TEST(SeedShader, VGrooveAgreesWithTheReference) {
+  const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.52}, {0.9, 0.48}));
+  for (const auto& [theta, phi, light] : {std::tuple{0.0, 0.0, Vec3{0, 0, 1}}, std::tuple{0.9, 1.7, Vec3{0.2, 0.6, 0.7}},
+                                          std::tuple{1.2, -1.5, Vec3{-0.1, -0.9, 0.5}}}) {
+    SCOPED_TRACE(theta);
+    expectMatchesReference(s, windowView({0.4, 0.44}, {0.6, 0.56}, 16, theta, phi), lightTowards(light));
+  }
+}
+
+TEST(SeedShader, MirrorVGrooveWithBouncesAgreesWithTheReference) {
+  const GrooveScene s = sceneOf(line("deep", "chrome", {0.1, 0.5}, {0.9, 0.5}));
+  for (int bounces : {1, 3}) {
+    SCOPED_TRACE(bounces);
+    expectMatchesReference(s, windowView({0.47, 0.47}, {0.53, 0.53}, 12, 0.5, 1.4),
+                           lightTowards({0.1, 0.3, 1}, bounces));
+  }
+}
+
+}  // namespace
+}  // namespace bake::groove
