@@ -9,6 +9,7 @@
 // every cell its references in ascending order, whatever the thread count. Records
 // (grid_records.cpp) get the same CSR over the cells their boxes meet.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -152,6 +153,16 @@ GridStats gridStats(const GrooveGrid& grid) {
 }
 
 Result<GrooveGrid> buildGrooveGrid(const GrooveScene& scene, const GridSettings& settings) {
+  grid_detail::GridStageTimes times;
+  return grid_detail::buildGrooveGridTimed(scene, settings, times);
+}
+
+Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, const GridSettings& settings,
+                                                      GridStageTimes& times) {
+  const auto start = std::chrono::steady_clock::now();
+  auto secondsSince = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   Lattice lattice;
   BAKE_RETURN_IF_ERROR(chooseCells(scene, settings, lattice));
   if (scene.primitives.size() >= UINT32_MAX) return unsupported("grid: more than 2^32 primitives");
@@ -177,6 +188,8 @@ Result<GrooveGrid> buildGrooveGrid(const GrooveScene& scene, const GridSettings&
   BAKE_RETURN_IF_ERROR(
       buildCsr(grid.cellCount(), primitiveCellStart, primitiveCells, "primitive", grid.cellStart, grid.primitiveRefs));
 
+  times.cells = secondsSince(start);
+  const auto recordsStart = std::chrono::steady_clock::now();
   grid_detail::RecordInputs inputs;
   inputs.scene = &scene;
   inputs.lattice = &lattice;
@@ -198,6 +211,7 @@ Result<GrooveGrid> buildGrooveGrid(const GrooveScene& scene, const GridSettings&
       },
       recordCellStart, recordCells);
   BAKE_RETURN_IF_ERROR(buildCsr(grid.cellCount(), recordCellStart, recordCells, "record", grid.recordStart, grid.recordRefs));
+  times.records = secondsSince(recordsStart);
   return grid;
 }
 

@@ -67,4 +67,11 @@ struct RecordInputs {
 };
 std::vector<SpecialRecord> findRecords(const RecordInputs& inputs);
 
+// buildGrooveGrid with the wall-clock seconds of its two stages, for the bake's report.
+struct GridStageTimes {
+  double cells = 0;    // cell size, region polygons, primitive CSR
+  double records = 0;  // special-case records and their CSR
+};
+Result<GrooveGrid> buildGrooveGridTimed(const GrooveScene& scene, const GridSettings& settings, GridStageTimes& times);
+
 }  // namespace bake::groove::grid_detail

@@ -1,0 +1,154 @@
+// groovebake's run (seed 000 §4.1-§4.2): read the scene (validated by the reader, exit 3 on invalid
+// input naming groove, segment and (u, v)), build the grid's cell lists, find the special-case
+// records, pack the package, decode it again and measure the stored fp32 geometry against the scene's
+// double geometry (the bake's error against its stated reference), then stage the output so it is
+// committed only when everything succeeded. Each stage is timed in the report.
+#include "groove/bake.h"
+
+#include <chrono>
+
+#include "core/path.h"
+#include "core/progress.h"
+#include "core/session.h"
+#include "groove/grid_stages.h"
+#include "groove/package.h"
+
+namespace bake::groove {
+namespace {
+
+using nlohmann::json;
+namespace fmt = format::grooves;
+
+Status checkSettings(const BakeSettings& settings) {
+  if (lowercaseExtension(settings.output) != ".glb") return usageError("-o " + settings.output + ": the package is a .glb file");
+  if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize)) return usageError("--cell-size must be a finite number >= 0");
+  if (settings.maxCells < 1) return usageError("--max-cells must be at least 1");
+  return {};
+}
+
+json optionsOf(const BakeSettings& settings) {
+  return {{"scene", settings.scene},
+          {"cellSize", settings.cellSize},
+          {"maxCells", settings.maxCells},
+          {"threads", settings.common.threads}};
+}
+
+json sceneStatistics(const GrooveScene& scene) {
+  std::size_t arcs = 0, corners = 0;
+  for (const Primitive& p : scene.primitives) {
+    arcs += p.kind == Primitive::Kind::Arc ? 1 : 0;
+    corners += p.cornerAtStart ? 1 : 0;
+  }
+  return {{"grooves", scene.grooves.size()},
+          {"primitives", scene.primitives.size()},
+          {"segments", scene.primitives.size() - arcs},
+          {"arcs", arcs},
+          {"profiles", scene.profiles.size()},
+          {"materials", scene.materials.size()},
+          {"domain", {scene.domain[0], scene.domain[1]}},
+          {"wrap", scene.wrapRepeat ? fmt::kWrapRepeat : fmt::kWrapNone},
+          {"wmax", scene.wmax},
+          {"hmax", scene.hmax},
+          {"dmax", scene.dmax},
+          {"duplicatesMerged", scene.warnings.size()}};
+}
+
+json gridStatistics(const GrooveGrid& grid) {
+  const GridStats stats = gridStats(grid);
+  return {{"cells", {grid.cells[0], grid.cells[1]}},
+          {"cellSize", {grid.cellSize.u, grid.cellSize.v}},
+          {"cellCount", grid.cellCount()},
+          {"primitiveRefs", grid.primitiveRefs.size()},
+          {"recordRefs", grid.recordRefs.size()},
+          {"meanRefsPerCell", stats.meanRefsPerCell},
+          {"maxRefsPerCell", stats.maxRefsPerCell},
+          {"emptyCells", stats.emptyCells},
+          {"records", {{"intersections", stats.intersections},
+                       {"ends", stats.ends},
+                       {"corners", stats.corners},
+                       {"total", grid.records.size()}}}};
+}
+
+json bufferBytes(const glb::Package& package, std::size_t fileBytes) {
+  json bytes = json::object();
+  for (std::size_t k = 0; k < fmt::kArrayCount && k < package.blobs.size(); ++k)
+    bytes[fmt::kArrayKeys[k]] = package.blobs[k].bytes.size();
+  bytes["file"] = fileBytes;
+  return bytes;
+}
+
+void reportError(const StoredGeometryError& error, const GrooveGrid& grid, Report& report) {
+  const double cell = std::max(grid.cellSize.u, grid.cellSize.v);
+  report.addAccuracy(
+      "largest distance between the stored geometry (fp32 offsets from each primitive's and record's anchor cell, "
+      "rebuilt in double) and the scene's geometry: end points, joint points, record points and boxes; arc centres "
+      "(far from their cell for nearly straight arcs); arc end points rebuilt from the stored centre, radius and angles; "
+      "joint normals",
+      "the scene's double-precision primitives, joints and records",
+      {{"maxPositionError", error.maxPosition},
+       {"maxPositionErrorOverCellSize", error.maxPosition / cell},
+       {"maxArcCentreError", error.maxArcCentre},
+       {"maxArcEndpointError", error.maxArcEndpoint},
+       {"maxJointNormalError", error.maxNormal}});
+}
+
+Status bake(const BakeSettings& settings, BakeSession& session) {
+  Report& report = session.report();
+  Progress progress("baking grooves", 5, progressEnabled(session.diagnostics().quiet()));
+  GrooveScene scene;
+  {
+    StageTimer timer(&report, "read");
+    BAKE_ASSIGN_OR_RETURN(scene, readGrooveScene(settings.scene));
+    session.addInput(settings.scene);
+  }
+  for (const std::string& warning : scene.warnings) session.diagnostics().warning("duplicate-groove", settings.scene + ": " + warning);
+  progress.update(1);
+
+  GridSettings gridSettings;
+  gridSettings.cellSize = settings.cellSize;
+  gridSettings.maxCells = settings.maxCells;
+  gridSettings.threads = int(session.threads());
+  grid_detail::GridStageTimes times;
+  BAKE_ASSIGN_OR_RETURN(const GrooveGrid grid, grid_detail::buildGrooveGridTimed(scene, gridSettings, times));
+  report.addStage("grid", times.cells);
+  report.addStage("records", times.records);
+  progress.update(3);
+
+  glb::Package package;
+  std::vector<std::uint8_t> bytes;
+  {
+    StageTimer timer(&report, "pack");
+    BAKE_ASSIGN_OR_RETURN(package, buildGroovePackage(scene, grid));
+    BAKE_ASSIGN_OR_RETURN(bytes, glb::encode(package));
+  }
+  {
+    // What a reader gets back, measured against the scene.
+    StageTimer timer(&report, "measure");
+    BAKE_ASSIGN_OR_RETURN(const glb::Package decoded, glb::decode(bytes, settings.output));
+    BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(decoded, settings.output));
+    reportError(storedGeometryError(scene, grid, stored), grid, report);
+  }
+  progress.update(4);
+  {
+    StageTimer timer(&report, "write");
+    BAKE_RETURN_IF_ERROR(session.stageOutput(settings.output, bytes));
+  }
+  progress.finish();
+  report.setStatistic("scene", sceneStatistics(scene));
+  report.setStatistic("grid", gridStatistics(grid));
+  report.setStatistic("bytes", bufferBytes(package, bytes.size()));
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::string> bakeInputs(const BakeSettings& settings) { return {settings.scene}; }
+
+Status runBake(const BakeSettings& settings, Diagnostics& diagnostics) {
+  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+  BakeSession session("groovebake", settings.common, diagnostics);
+  session.report().setOptions(optionsOf(settings));
+  return session.finish(bake(settings, session));
+}
+
+}  // namespace bake::groove
