@@ -199,65 +199,73 @@ ConvexPolygon square(const Box2& b) {
   return p;
 }
 
-}  // namespace
+// What every (sub-)footprint of one sample shares.
+struct Job {
+  const GrooveScene& scene;
+  const std::vector<StraightGroove>& grooves;
+  const Lighting& lighting;
+  Frame frame;
+  double heightRange = 0, lengthScale = 0;
+};
 
-Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats) {
-  stats = {};
-  if (!(toViewer.w > 0)) return {0, 0, 0};
-  const std::vector<StraightGroove> straight = straighten(scene, grooves, footprint.centre);
-  const Extent extent = extentOf(straight);
-
-  // The footprint around the origin; a degenerate (segment) footprint is given a sliver of width.
-  Vec2 axis1 = footprint.axis1, axis2 = footprint.axis2;
-  const double span = std::hypot(axis1.u, axis1.v) + std::hypot(axis2.u, axis2.v);
-  const double lengthScale = std::max({span, extent.width, extent.height + extent.depth, 1e-300});
-  ConvexPolygon fp = parallelogram({0, 0}, axis1, axis2);
-  stats.pointSample = span == 0;
-  if (!stats.pointSample && area(fp) < 1e-12 * span * span) {
-    const Vec2 along = std::hypot(axis1.u, axis1.v) >= std::hypot(axis2.u, axis2.v) ? axis1 : axis2;
-    const double n = std::hypot(along.u, along.v);
-    axis2 = {-along.v / n * 1e-6 * span, along.u / n * 1e-6 * span};
-    axis1 = along;
-    fp = parallelogram({0, 0}, axis1, axis2);
-  }
-  const double footprintArea = area(fp);
-
-  Frame f;
-  f.toViewer = toViewer;
-  f.toLight = lighting.toLight;
-  perpendicularAxes(f.toLight, f.lightAxis1, f.lightAxis2);
-  const double referenceArea = stats.pointSample ? 1e-6 * lengthScale * lengthScale : footprintArea;
-  f.minArea = 1e-13 * referenceArea;
-  f.depthTolerance = 1e-12 * lengthScale;
-  f.lightAllOccluders = f.toLight.w < 0.05;
-
-  // The working region: the footprint, what its view lines cross, and what shadows that.
-  const double heightRange = extent.height + extent.depth;
-  const double margin = reach(f.toViewer, heightRange) + reach(f.toLight, heightRange) + 1e-6 * lengthScale;
-  Box2 box = boundsOf(fp);
+// The pieces of the surface over the footprint's box enlarged by what its view lines cross and what
+// shadows that; false when a cap was reached.
+bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, std::vector<SurfacePiece>& pieces,
+                 AreaSampleStats& stats) {
+  const double margin = reach(job.frame.toViewer, job.heightRange) + reach(job.frame.toLight, job.heightRange) +
+                        1e-6 * job.lengthScale;
+  Box2 box = footprintBox;
   box.lower = {box.lower.u - margin, box.lower.v - margin};
   box.upper = {box.upper.u + margin, box.upper.v + margin};
   const ConvexPolygon region = square(box);
+  SurfaceBuildStats local;
+  buildHeightPieces(job.grooves, job.scene.baseMaterial, region, minArea, pieces, local);
+  buildWalls(job.grooves, job.scene.baseMaterial, region, job.lengthScale, pieces, local);
+  stats.surface.cells += local.cells;
+  stats.surface.walls += local.walls;
+  stats.surface.truncated = stats.surface.truncated || local.truncated;
+  if (local.overflows == 0) return true;
+  stats.surface.overflows += local.overflows;
+  return false;
+}
 
+// Splits a footprint into 2 x 2 halves at most this many times when its pieces overflow the caps
+// (at most 4^3 sub-footprints, each with fewer pieces); past that, pieces are dropped (counted).
+constexpr int kMaxSplitDepth = 3;
+
+Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int depth, AreaSampleStats& stats) {
+  const ConvexPolygon fp = parallelogram(centre, axis1, axis2);
+  const double footprintArea = area(fp);
+  Frame f = job.frame;
+  f.minArea = 1e-13 * footprintArea;
+  const Box2 fpBox = boundsOf(fp);
   std::vector<SurfacePiece> pieces;
   pieces.reserve(64);
-  buildHeightPieces(straight, scene.baseMaterial, region, f.minArea, pieces, stats.surface);
-  buildWalls(straight, scene.baseMaterial, region, lengthScale, pieces, stats.surface);
-
+  const bool complete = buildPieces(job, fpBox, f.minArea, pieces, stats);
+  if (!complete && depth == kMaxSplitDepth) ++stats.incomplete;
+  if (!complete && depth < kMaxSplitDepth) {
+    ++stats.splits;
+    const Vec2 h1{0.5 * axis1.u, 0.5 * axis1.v}, h2{0.5 * axis2.u, 0.5 * axis2.v};
+    Rgb sum{0, 0, 0};
+    for (const double s1 : {-0.5, 0.5})
+      for (const double s2 : {-0.5, 0.5}) {
+        const Vec2 c{centre.u + s1 * h1.u + s2 * h2.u, centre.v + s1 * h1.v + s2 * h2.v};
+        const Rgb quarter = sampleParallelogram(job, c, h1, h2, depth + 1, stats);
+        for (int k = 0; k < 3; ++k) sum[k] += 0.25 * quarter[k];
+      }
+    return sum;
+  }
   std::vector<Projected> all;
   all.reserve(pieces.size());
   for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
 
-  if (stats.pointSample) return pointSample(scene, f, all, lighting);
-
-  const Box2 fpBox = boundsOf(fp);
   Rgb sum{0, 0, 0};
   FragmentSet visible;
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
-    const Rgb radiance = directRadiance(scene.materials[me.piece->material], me.piece->normal, f.toViewer, lighting);
+    const Rgb radiance =
+        directRadiance(job.scene.materials[me.piece->material], me.piece->normal, f.toViewer, job.lighting);
     if (isBlack(radiance)) continue;  // facing away from the light: no direct light at all
     visible.count = 0;
     visible.minArea = f.minArea;
@@ -271,6 +279,50 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
     for (int c = 0; c < 3; ++c) sum[c] += share * radiance[c];
   }
   return sum;
+}
+
+}  // namespace
+
+Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
+                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats) {
+  stats = {};
+  if (!(toViewer.w > 0)) return {0, 0, 0};
+  const std::vector<StraightGroove> straight = straighten(scene, grooves, footprint.centre);
+  const Extent extent = extentOf(straight);
+
+  // The footprint around the origin.
+  Vec2 axis1 = footprint.axis1, axis2 = footprint.axis2;
+  const double span = std::hypot(axis1.u, axis1.v) + std::hypot(axis2.u, axis2.v);
+  stats.pointSample = span == 0;
+  if (!stats.pointSample && area(parallelogram({0, 0}, axis1, axis2)) < 1e-12 * span * span) {
+    // Parallel axes: the limit of a thin parallelogram, so the shorter axis gets a tiny perpendicular
+    // part (the density along the segment stays the one of the flattened parallelogram).
+    const bool firstLonger = std::hypot(axis1.u, axis1.v) >= std::hypot(axis2.u, axis2.v);
+    const Vec2 along = firstLonger ? axis1 : axis2;
+    const double n = std::hypot(along.u, along.v);
+    Vec2& shorter = firstLonger ? axis2 : axis1;
+    shorter = {shorter.u - along.v / n * 1e-6 * span, shorter.v + along.u / n * 1e-6 * span};
+  }
+
+  Job job{scene, straight, lighting, {}, extent.height + extent.depth,
+          std::max({span, extent.width, extent.height + extent.depth, 1e-300})};
+  Frame& f = job.frame;
+  f.toViewer = toViewer;
+  f.toLight = lighting.toLight;
+  perpendicularAxes(f.toLight, f.lightAxis1, f.lightAxis2);
+  f.depthTolerance = 1e-12 * job.lengthScale;
+  f.lightAllOccluders = f.toLight.w < 0.05;
+
+  if (!stats.pointSample) return sampleParallelogram(job, {0, 0}, axis1, axis2, 0, stats);
+  f.minArea = 1e-19 * job.lengthScale * job.lengthScale;
+  std::vector<SurfacePiece> pieces;
+  Box2 point;
+  point.lower = point.upper = {0, 0};
+  if (!buildPieces(job, point, f.minArea, pieces, stats)) ++stats.incomplete;
+  std::vector<Projected> all;
+  all.reserve(pieces.size());
+  for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
+  return pointSample(scene, f, all, lighting);
 }
 
 Rgb areaSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,

@@ -94,6 +94,8 @@ struct AreaSampleStats {
   SurfaceBuildStats surface;
   std::uint32_t visiblePieces = 0;  // pieces with a visible part in the footprint
   std::uint32_t fragmentOverflows = 0;  // subtractions that scaled a fragment's weight for lack of room
+  std::uint32_t splits = 0;  // footprints split in four because their pieces overflowed the caps
+  std::uint32_t incomplete = 0;  // (sub-)footprints sampled with pieces dropped: the value is approximate
   bool pointSample = false;
 };
 
