@@ -9,6 +9,7 @@
 #include "gl/context.h"
 #include "io/image.h"
 #include "render/geodesic.h"
+#include "render/grooves.h"
 #include "render/hatching.h"
 #include "render/renderer.h"
 #include "render/revolution.h"
@@ -197,6 +198,7 @@ Status checkPackageStructure(const glb::Package& package, const std::string& nam
   BAKE_RETURN_IF_ERROR(checkGeodesicPackage(package, name));
   BAKE_RETURN_IF_ERROR(checkRevolutionPackage(package, name));
   BAKE_RETURN_IF_ERROR(checkHatchingPackage(package, name));
+  BAKE_RETURN_IF_ERROR(checkGroovesPackage(package, name));
   return {};
 }
 

@@ -1,12 +1,14 @@
 #include "render/renderer.h"
 
 #include <bake_formats/geodesic.h>
+#include <bake_formats/grooves.h>
 #include <bake_formats/revolution.h>
 #include <bake_formats/tam.h>
 
 #include <GL/glcorearb.h>
 
 #include "render/geodesic.h"
+#include "render/grooves.h"
 #include "render/hatching.h"
 #include "render/revolution.h"
 #include "render/standard.h"
@@ -21,6 +23,7 @@ const RendererRegistry& RendererRegistry::builtIn() {
     r.add(format::geodesic::kExtension, [] { return std::make_unique<GeodesicRenderer>(); });
     r.add(format::revolution::kExtension, [] { return std::make_unique<RevolutionRenderer>(); });
     r.add(format::tam::kExtension, [] { return std::make_unique<HatchingRenderer>(); });
+    r.add(format::grooves::kExtension, [] { return std::make_unique<GroovesRenderer>(); });
     return r;
   }();
   return registry;

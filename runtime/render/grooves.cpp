@@ -1,0 +1,174 @@
+// Grooves renderer (seed 000; formats/grooves.md). Per package drawn: decode and check the
+// BAKE_grooves arrays with libbake's reader, then upload every bufferView as it is into one immutable
+// storage buffer (each at an offset aligned for GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT and the
+// format's 256 bytes) and the grid header into a 64-byte std140 uniform block. Per instance: the mesh
+// (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/ its package needs:
+// mirrors compiled in only when a material mirrors, the special-case lookup only when the grid has
+// records, arrays sized to the package's longest profile.
+#include "render/grooves.h"
+
+#include <GL/glcorearb.h>
+#include <bake_formats/grooves.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "groove/package.h"
+
+namespace bake::play {
+namespace {
+
+namespace fmt = format::grooves;
+
+constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2;
+constexpr GLuint kHeaderBinding = 0;
+
+// The std140 GrooveHeader block of shaders/grooves/package.glsl.
+struct HeaderBlock {
+  float domainCell[4];
+  float originBounds[4];
+  float bounds[4];
+  std::int32_t cells[4];
+};
+static_assert(sizeof(HeaderBlock) == 64);
+
+HeaderBlock headerBlock(const groove::GroovePackageHeader& h) {
+  HeaderBlock block{};
+  block.domainCell[0] = float(h.domain[0]);
+  block.domainCell[1] = float(h.domain[1]);
+  block.domainCell[2] = float(h.cellSize[0]);
+  block.domainCell[3] = float(h.cellSize[1]);
+  block.originBounds[0] = float(h.origin[0]);
+  block.originBounds[1] = float(h.origin[1]);
+  block.bounds[0] = float(h.wmax);
+  block.bounds[1] = float(h.hmax);
+  block.bounds[2] = float(h.dmax);
+  block.cells[0] = std::int32_t(h.cells[0]);
+  block.cells[1] = std::int32_t(h.cells[1]);
+  block.cells[2] = h.wrapRepeat ? 1 : 0;
+  block.cells[3] = std::int32_t(h.baseMaterial);
+  return block;
+}
+
+// The bufferView index of each array, in the order of fmt::kArrayKeys (decodeGroovePackage has
+// checked that they exist).
+std::array<std::size_t, fmt::kArrayCount> viewIndices(const nlohmann::json& extension) {
+  std::array<std::size_t, fmt::kArrayCount> views{};
+  for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[k] = extension["bufferViews"][fmt::kArrayKeys[k]].get<std::size_t>();
+  return views;
+}
+
+std::size_t alignUp(std::size_t x, std::size_t alignment) { return (x + alignment - 1) / alignment * alignment; }
+
+// The defines of the variant a package needs.
+std::vector<std::string> packageDefines(const groove::GroovePackage& p) {
+  std::vector<std::string> defines;
+  const bool mirrors = std::any_of(p.materials.begin(), p.materials.end(), [](const fmt::Material& m) { return m.specular[3] > 0.5f; });
+  if (mirrors) defines.push_back("HAS_MIRRORS");
+  if (!p.records.empty()) defines.push_back("HAS_SPECIAL_CASES");
+  std::uint32_t longest = 3;
+  for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
+  defines.push_back("MAX_PROFILE_POINTS " + std::to_string(longest));
+  return defines;
+}
+
+void setMatrix4(unsigned program, const char* name, const Mat4& m) {
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, m.data());
+}
+
+}  // namespace
+
+GroovesRenderer::~GroovesRenderer() {
+  for (const Upload& upload : uploads_) {
+    const GLuint buffers[] = {upload.storage, upload.header};
+    glDeleteBuffers(2, buffers);
+  }
+}
+
+Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_t>& instances,
+                                gl::ShaderLibrary& shaders) {
+  std::map<std::size_t, std::size_t> uploadOfPackage;
+  std::map<std::size_t, std::vector<std::string>> definesOfPackage;
+  GLint storageAlignment = 256;
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storageAlignment);
+  const std::size_t alignment = std::max<std::size_t>(fmt::kBufferAlignment, std::size_t(std::max(1, storageAlignment)));
+  for (std::size_t index : instances) {
+    const Instance& instance = scene.instances[index];
+    const glb::Package& package = scene.packages[instance.package];
+    const std::string file = scene.files.empty() ? "" : scene.files[instance.package];
+    const glb::Primitive& primitive = scene.primitive(instance);
+    const Location where{file, "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(instance.primitive)};
+    if (!primitive.find("TEXCOORD_0")) return invalidInput(std::string(fmt::kExtension) + " needs TEXCOORD_0 on the mesh", where);
+
+    if (!uploadOfPackage.count(instance.package)) {
+      BAKE_ASSIGN_OR_RETURN(const groove::GroovePackage decoded, groove::decodeGroovePackage(package, file));
+      const auto views = viewIndices(scene.material(instance)["extensions"][fmt::kExtension]);
+      Upload upload;
+      std::size_t total = 0;
+      for (std::size_t k = 0; k < fmt::kArrayCount; ++k) {
+        upload.offset[k] = total;
+        upload.size[k] = package.blobs[views[k]].bytes.size();
+        total = alignUp(total + upload.size[k], alignment);
+      }
+      std::vector<std::uint8_t> bytes(total, 0);
+      for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
+        std::memcpy(bytes.data() + upload.offset[k], package.blobs[views[k]].bytes.data(), upload.size[k]);
+      glCreateBuffers(1, &upload.storage);
+      glNamedBufferStorage(upload.storage, GLsizeiptr(bytes.size()), bytes.data(), 0);
+      const HeaderBlock header = headerBlock(decoded.header);
+      glCreateBuffers(1, &upload.header);
+      glNamedBufferStorage(upload.header, sizeof header, &header, 0);
+      bytes_ += bytes.size() + sizeof header;
+      uploadOfPackage[instance.package] = uploads_.size();
+      definesOfPackage[instance.package] = packageDefines(decoded);
+      uploads_.push_back(upload);
+    }
+
+    gl::Variant variant{{"grooves/grooves.vert", "grooves/grooves.frag", "", "", ""}, definesOfPackage[instance.package]};
+    std::map<std::string, int> locations = {{"POSITION", kPositionLocation}, {"TEXCOORD_0", kTexcoordLocation}};
+    if (primitive.find("NORMAL")) {
+      variant.defines.push_back("HAS_NORMALS");
+      locations["NORMAL"] = kNormalLocation;
+    }
+    if (options_.shadingInputs) variant.defines.push_back("SHADING_INPUTS");
+    Item item;
+    BAKE_ASSIGN_OR_RETURN(item.program, shaders.program(variant));
+    BAKE_ASSIGN_OR_RETURN(item.mesh, GpuPrimitive::upload(primitive, locations));
+    item.world = instance.world;
+    item.upload = uploadOfPackage[instance.package];
+    items_.push_back(std::move(item));
+  }
+  return {};
+}
+
+void GroovesRenderer::draw(const FrameContext& frame) {
+  const Mat4 viewProjection = multiply(frame.projection, frame.view);
+  for (const Item& item : items_) {
+    const unsigned program = item.program;
+    glUseProgram(program);
+    setMatrix4(program, "uModel", item.world);
+    setMatrix4(program, "uViewProj", viewProjection);
+    const Mat3 normal = normalMatrix(item.world);
+    glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, normal.data());
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, frame.light.direction.data());
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightColour"), 1, frame.light.colour.data());
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
+    glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
+    const Upload& upload = uploads_[item.upload];
+    for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
+      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(k), upload.storage, GLintptr(upload.offset[k]),
+                        GLsizeiptr(upload.size[k]));
+    glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
+    item.mesh.draw();
+  }
+  for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
+}
+
+std::size_t GroovesRenderer::gpuBytes() const {
+  std::size_t total = bytes_;
+  for (const Item& item : items_) total += item.mesh.uploadedBytes();
+  return total;
+}
+
+}  // namespace bake::play

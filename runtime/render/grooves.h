@@ -1,0 +1,62 @@
+// Grooved surfaces (seed 000, Bosch et al. 2008, §4-§7) over a BAKE_grooves package
+// (formats/grooves.md): the preview plane, or any mesh with TEXCOORD_0, drawn with a fragment shader
+// that runs the seed's method per pixel exactly as libbake's CPU oracle (libbake/groove/shade.h)
+// does. The package's arrays are decoded and checked by libbake (decodeGroovePackage) and uploaded as
+// they are, one storage buffer holding every bufferView at its 256-byte aligned offset, each bound
+// with glBindBufferRange; the grid header goes into a small uniform block.
+//
+// grooves.cpp uploads and draws; grooves_validate.cpp holds the loader checks for `bakeplay validate`.
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/glb.h"
+#include "render/gpu_mesh.h"
+#include "render/renderer.h"
+
+namespace bake::play {
+
+struct GroovesOptions {
+  int maxBounces = 2;           // mirror reflections followed (seed §7); the rendering model's maxBounces
+  bool shadingInputs = false;   // also write F, A1, A2, E, L to colour attachments 1-3 (tests)
+};
+
+// Loader checks of BAKE_grooves for `bakeplay validate`: every package whose material carries it
+// decodes (version, header, array sizes against counts and strides, CSR prefix sums, every index),
+// and the mesh drawn with it has TEXCOORD_0.
+Status checkGroovesPackage(const glb::Package& package, const std::string& name);
+
+class GroovesRenderer : public TechniqueRenderer {
+ public:
+  explicit GroovesRenderer(GroovesOptions options = {}) : options_(options) {}
+  GroovesRenderer(const GroovesRenderer&) = delete;
+  GroovesRenderer& operator=(const GroovesRenderer&) = delete;
+  ~GroovesRenderer() override;
+
+  Status prepare(const Scene& scene, const std::vector<std::size_t>& instances,
+                 gl::ShaderLibrary& shaders) override;
+  void draw(const FrameContext& frame) override;
+  std::size_t gpuBytes() const override;
+
+ private:
+  // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
+  struct Upload {
+    unsigned storage = 0, header = 0;
+    std::array<std::size_t, 10> offset{}, size{};
+  };
+  struct Item {
+    GpuPrimitive mesh;
+    unsigned program = 0;
+    Mat4 world;
+    std::size_t upload = 0;
+  };
+  GroovesOptions options_;
+  std::vector<Upload> uploads_;
+  std::vector<Item> items_;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace bake::play

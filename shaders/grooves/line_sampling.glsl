@@ -1,0 +1,132 @@
+// The seed's method per footprint (seed 000 §4-§5, §7), as libbake/groove/shade.cpp SeedShader::shade
+// and line_sampling.cpp: the enlarged box finds the primitives (§4.1); none: the flat base. Otherwise
+// each is straightened at F, the ones whose region reaches the footprint are kept (a primitive stops
+// at its joint lines; past a joint its neighbour in the chain, when found, takes over), grouped into
+// parallel classes (within 1e-6 rad, or drifting apart by less than 1e-3 of a groove width across
+// the footprint's reach), and each class is shaded on its combined cross-section (§5). Several classes:
+// the flat base plus the sum of each class's difference from it (occlusion between classes neglected,
+// as on the CPU).
+//
+// Special cases (§4.2): where a record's box meets the query box the CPU method samples the footprint
+// by area (§6, area_sampling.cpp). That path is not ported yet: such footprints are line sampled here
+// like the others (exact away from the record itself; at a crossing, the classes' sum), and
+// gSpecialCase says so.
+#ifndef BAKE_GROOVES_LINE_SAMPLING_GLSL
+#define BAKE_GROOVES_LINE_SAMPLING_GLSL
+
+#include "occlusion.glsl"
+
+#ifndef MAX_CLASSES
+#define MAX_CLASSES 4
+#endif
+
+const float kParallelSine = 1e-6;  // sin(1e-6 rad)
+const float kDriftFraction = 1e-3;
+
+bool gSpecialCase;
+int gClassOf[MAX_FOUND];  // -1: not kept
+
+// foot - F, reduced to the nearest copy when the scene repeats.
+vec2 offsetFromCentre(vec2 foot) {
+  if (!wrapRepeat()) return foot;
+  return foot - domainSize() * round(foot / domainSize());
+}
+
+bool foundPrimitive(int primitive) {
+  for (int i = 0; i < gGrooveCount; ++i)
+    if (int(gGrooves[i].primitive) == primitive) return true;
+  return false;
+}
+
+// The primitive across a joint of `g` (start or end), or -1 at an open end.
+int neighbourAcross(LocalGroove g, bool atStart) {
+  GrooveInfo info = grooves[g.groove];
+  int first = int(info.indices.z), last = first + int(info.indices.w) - 1;
+  bool closed = (info.kind.x & kGrooveClosed) != 0u;
+  int p = int(g.primitive);
+  if (atStart) return p > first ? p - 1 : (closed ? last : -1);
+  return p < last ? p + 1 : (closed ? first : -1);
+}
+
+bool reachesFootprint(LocalGroove g, vec2 axis1, vec2 axis2) {
+  vec2 centre = g.foot - offsetFromCentre(g.foot);  // F's copy near the primitive
+  for (int end = 0; end < 2; ++end) {
+    vec2 point = end == 0 ? g.startPoint : g.endPoint;
+    vec2 normal = end == 0 ? g.startNormal : g.endNormal;
+    if (dot(centre - point, normal) >= 0.0) continue;
+    int other = neighbourAcross(g, end == 0);
+    if (other >= 0 && foundPrimitive(other)) return false;  // the neighbour covers it
+    bool anyInside = false;
+    for (int corner = 0; corner < 4; ++corner) {
+      float s1 = (corner & 1) != 0 ? 0.5 : -0.5, s2 = (corner & 2) != 0 ? 0.5 : -0.5;
+      vec2 x = centre + s1 * axis1 + s2 * axis2;
+      anyInside = anyInside || dot(x - point, normal) >= 0.0;
+    }
+    if (!anyInside) return false;
+  }
+  return true;
+}
+
+bool parallelGrooves(LocalGroove a, LocalGroove b, float reach) {
+  float sine = abs(a.tangent.x * b.tangent.y - a.tangent.y * b.tangent.x);
+  float drift = kDriftFraction * min(a.width, b.width) / reach;
+  return sine <= max(kParallelSine, drift);
+}
+
+vec3 shadeClass(int cls, int front, vec2 axis1, vec2 axis2, vec3 toViewer) {
+  vec2 binormal = gGrooves[front].binormal;
+  FootprintLine line = footprintLine(axis1, axis2, binormal);
+  startSection(binormal, -halfSupport(line), halfSupport(line));
+  for (int m = 0; m < gGrooveCount; ++m) {
+    if (gClassOf[m] != cls) continue;
+    LocalGroove g = gGrooves[m];
+    vec2 d = offsetFromCentre(g.foot);
+    float along = dot(binormal, g.binormal);
+    // Where the groove's centre line crosses the line F + x B (along = +-1 up to the drift).
+    placeGroove(g, dot(d, g.binormal) / along, along < 0.0);
+  }
+  buildSection();
+  return shadeSection(line, toViewer);
+}
+
+vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
+  float reach = 0.5 * (length(axis1) + length(axis2)) + uBounds.x + uBounds.y + uBounds.z;
+  int fronts[MAX_CLASSES];
+  int classes = 0;
+  for (int i = 0; i < gGrooveCount; ++i) {
+    gClassOf[i] = -1;
+    if (!reachesFootprint(gGrooves[i], axis1, axis2)) continue;
+    int cls = 0;
+    while (cls < classes && !parallelGrooves(gGrooves[fronts[cls]], gGrooves[i], reach)) ++cls;
+    if (cls == classes) {
+      if (classes == MAX_CLASSES) continue;  // more directions than the shader keeps: dropped
+      fronts[classes++] = i;
+    }
+    gClassOf[i] = cls;
+  }
+  if (classes == 0) return flatBase;
+  if (classes == 1) return shadeClass(0, fronts[0], axis1, axis2, toViewer);
+  vec3 sum = flatBase;
+  for (int c = 0; c < classes; ++c) sum += shadeClass(c, fronts[c], axis1, axis2, toViewer) - flatBase;
+  return max(sum, vec3(0.0));
+}
+
+// The pixel value of the footprint centred at `centre` (domain units) with edges axis1, axis2, seen
+// from toViewer (groove space). gLightDir, gLightRadiance and gMaxBounces are set by the caller.
+vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
+  setFootprintCentre(centre);
+  gSpecialCase = false;
+  vec3 flatBase = directRadiance(baseMaterial(), vec3(0.0, 0.0, 1.0), toViewer);
+  vec2 lower, upper;
+  queryBox(axis1, axis2, toViewer, gLightDir, lower, upper);
+  gatherPrimitives(lower, upper);
+  if (gFoundCount == 0) return flatBase;
+  gGrooveCount = gFoundCount;
+  for (int i = 0; i < gFoundCount; ++i) gGrooves[i] = localGroove(gFound[i]);
+#ifdef HAS_SPECIAL_CASES
+  gSpecialCase = specialCaseUnder(lower, upper);
+#endif
+  return lineSample(axis1, axis2, toViewer, flatBase);
+}
+
+#endif

@@ -1,0 +1,231 @@
+// Finding the grooves that can affect a footprint (seed 000 §4.1-§4.2), as libbake/groove/shade.cpp:
+// the bounding box of the footprint parallelogram enlarged by wmax, and by hmax and dmax projected
+// along the view and the light (a ridge stands up to hmax |D_uv| / D_w towards D, a cavity point
+// reaches dmax |D_uv| / D_w away from it; the reach is capped at kMaxReach heights so a light at the
+// horizon stays finite). The cells under the box give the primitives (CSR cellStart/primitiveRefs,
+// kept sorted and unique here) and the special-case records (recordStart/recordRefs). Each primitive
+// is then straightened at the footprint centre (shade_local.h localGroove): its tangent line at the
+// foot point of F, the perturbation frozen there. Coordinates are relative to F throughout.
+#ifndef BAKE_GROOVES_LOOKUP_GLSL
+#define BAKE_GROOVES_LOOKUP_GLSL
+
+#include "package.glsl"
+
+#ifndef MAX_FOUND
+#define MAX_FOUND 24
+#endif
+
+const float kMaxReach = 100.0;
+
+struct LocalGroove {
+  uint primitive;
+  int groove;
+  int profileFirst, profileCount;
+  int material;
+  vec2 foot;                      // relative to F (the copy of the primitive nearest F)
+  vec2 tangent, binormal;
+  float offset, scale;            // frozen perturbation
+  vec2 startPoint, startNormal;   // joint lines, relative to F
+  vec2 endPoint, endNormal;
+  float width;                    // scale * profile wmax
+};
+
+LocalGroove gGrooves[MAX_FOUND];
+int gGrooveCount;
+bool gFoundOverflow;  // more primitives under the box than MAX_FOUND: the furthest in index are dropped
+
+// The query box, relative to F.
+void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 coreUpper, vec3 d) {
+  float horizontal = length(d.xy);
+  if (horizontal == 0.0) return;
+  float reach = d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
+  vec2 unit = d.xy / horizontal;
+  float alongs[2] = float[2](uBounds.y * reach, -uBounds.z * reach);
+  for (int k = 0; k < 2; ++k) {
+    lower = min(lower, min(coreLower + alongs[k] * unit, coreUpper + alongs[k] * unit));
+    upper = max(upper, max(coreLower + alongs[k] * unit, coreUpper + alongs[k] * unit));
+  }
+}
+
+void queryBox(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 toLight, out vec2 lower, out vec2 upper) {
+  vec2 extent = 0.5 * (abs(axis1) + abs(axis2)) + vec2(uBounds.x);
+  vec2 coreLower = -extent, coreUpper = extent;
+  lower = coreLower;
+  upper = coreUpper;
+  queryBoxAlong(lower, upper, coreLower, coreUpper, toViewer);
+  queryBoxAlong(lower, upper, coreLower, coreUpper, toLight);
+}
+
+// The cell range (absolute cell indices) the relative box covers, per axis; false when empty.
+bool cellRange(vec2 lower, vec2 upper, out ivec2 first, out ivec2 last) {
+  vec2 size = cellSize();
+  // Clamped in float first so that huge reaches stay representable as integers.
+  vec2 lo = clamp(floor((gFragLocal + lower) / size), vec2(-1.0e6), vec2(1.0e6));
+  vec2 hi = clamp(floor((gFragLocal + upper) / size), vec2(-1.0e6), vec2(1.0e6));
+  first = gFragCell + ivec2(lo);
+  last = gFragCell + ivec2(hi);
+  ivec2 counts = cellCounts();
+  if (wrapRepeat()) {
+    last = min(last, first + counts - 1);  // every stored cell once is enough
+    return true;
+  }
+  first = max(first, ivec2(0));
+  last = min(last, counts - 1);
+  return all(lessThanEqual(first, last));
+}
+
+int storedCell(ivec2 cell) {
+  ivec2 counts = cellCounts();
+  if (wrapRepeat()) cell = ((cell % counts) + counts) % counts;
+  return cell.y * counts.x + cell.x;
+}
+
+uint gFound[MAX_FOUND];
+int gFoundCount;
+
+void insertFound(uint primitive) {
+  int at = gFoundCount;
+  while (at > 0 && gFound[at - 1] > primitive) --at;
+  if (at > 0 && gFound[at - 1] == primitive) return;
+  if (gFoundCount == MAX_FOUND) {
+    gFoundOverflow = true;
+    if (at == MAX_FOUND) return;
+  } else {
+    ++gFoundCount;
+  }
+  for (int k = gFoundCount - 1; k > at; --k) gFound[k] = gFound[k - 1];
+  gFound[at] = primitive;
+}
+
+void gatherPrimitives(vec2 lower, vec2 upper) {
+  gFoundCount = 0;
+  gFoundOverflow = false;
+  ivec2 first, last;
+  if (!cellRange(lower, upper, first, last)) return;
+  for (int j = first.y; j <= last.y; ++j)
+    for (int i = first.x; i <= last.x; ++i) {
+      int cell = storedCell(ivec2(i, j));
+      for (uint k = cellStart[cell]; k < cellStart[cell + 1]; ++k) insertFound(primitiveRefs[k]);
+    }
+}
+
+bool boxesMeet(vec2 lowerA, vec2 upperA, vec2 lowerB, vec2 upperB) {
+  return all(lessThanEqual(lowerA, upperB)) && all(lessThanEqual(lowerB, upperA));
+}
+
+// §4.2: does a special-case record under the box meet it (or one of its copies, when the scene
+// repeats)? Then the CPU method samples the footprint by area (§6).
+bool specialCaseUnder(vec2 lower, vec2 upper) {
+  ivec2 first, last;
+  if (!cellRange(lower, upper, first, last)) return false;
+  int copies = wrapRepeat() ? 1 : 0;
+  for (int j = first.y; j <= last.y; ++j)
+    for (int i = first.x; i <= last.x; ++i) {
+      int cell = storedCell(ivec2(i, j));
+      for (uint k = recordStart[cell]; k < recordStart[cell + 1]; ++k) {
+        GrooveRecord r = records[recordRefs[k]];
+        for (int ci = -copies; ci <= copies; ++ci)
+          for (int cj = -copies; cj <= copies; ++cj) {
+            // The box moved by +copy domains is the record moved by -copy domains.
+            ivec2 shift = -ivec2(ci, cj) * cellCounts();
+            vec2 recordLower = relativeToCentre(r.anchor.xy, shift, r.box.xy);
+            vec2 recordUpper = relativeToCentre(r.anchor.xy, shift, r.box.zw);
+            if (boxesMeet(lower, upper, recordLower, recordUpper)) return true;
+          }
+      }
+    }
+  return false;
+}
+
+// IEEE remainder by 2 pi (std::remainder): the quotient rounded to even.
+float remainderTurn(float x) { return x - 2.0 * kPi * roundEven(x / (2.0 * kPi)); }
+
+// Distance from F (the origin) to a primitive moved by `shift` cells (shade.cpp distanceToPrimitive).
+float distanceToPrimitive(GroovePrimitive p, ivec2 shift) {
+  vec2 a = relativeToCentre(p.header.xy, shift, p.ends.xy);
+  vec2 b = relativeToCentre(p.header.xy, shift, p.ends.zw);
+  if ((uint(p.header.w) & kPrimitiveArc) == 0u) {
+    vec2 d = b - a;
+    float length2 = dot(d, d);
+    float t = length2 > 0.0 ? clamp(dot(-a, d) / length2, 0.0, 1.0) : 0.0;
+    return length(-a - t * d);
+  }
+  vec2 centre = relativeToCentre(p.header.xy, shift, p.arc.xy);
+  float angle = atan(-centre.y, -centre.x);
+  float sweep = p.measure.x;
+  float fromMiddle = remainderTurn(angle - (p.arc.w + 0.5 * sweep));
+  if (abs(fromMiddle) <= 0.5 * abs(sweep)) return abs(length(centre) - p.arc.z);
+  return min(length(a), length(b));
+}
+
+// The copy of the primitive nearest F when the scene repeats (shade.cpp nearestCopy, which moves F
+// instead: the same copy, in the same order of preference).
+ivec2 nearestShift(GroovePrimitive p) {
+  if (!wrapRepeat()) return ivec2(0);
+  ivec2 best = ivec2(0);
+  float bestDistance = distanceToPrimitive(p, best);
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j) {
+      ivec2 shift = -ivec2(i, j) * cellCounts();
+      float d = distanceToPrimitive(p, shift);
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = shift;
+      }
+    }
+  return best;
+}
+
+// a sin(2 pi s / wavelength + phase): the perturbation's sine at arc length s.
+float perturbationAt(GrooveInfo g, float arcLength) {
+  return g.perturbation.x * sin(2.0 * kPi * arcLength / g.perturbation.y + g.perturbation.z);
+}
+
+// shade_local.h localGroove, relative to F.
+LocalGroove localGroove(uint index) {
+  GroovePrimitive p = primitives[index];
+  ivec2 shift = nearestShift(p);
+  GrooveInfo g = grooves[p.header.z];
+  GrooveProfile profile = profiles[g.indices.x];
+  LocalGroove local;
+  local.primitive = index;
+  local.groove = p.header.z;
+  local.profileFirst = int(profile.points.x);
+  local.profileCount = int(profile.points.y);
+  local.material = int(g.indices.y);
+  vec2 a = relativeToCentre(p.header.xy, shift, p.ends.xy);
+  float along;
+  if ((uint(p.header.w) & kPrimitiveArc) == 0u) {
+    vec2 b = relativeToCentre(p.header.xy, shift, p.ends.zw);
+    vec2 t = (b - a) / p.measure.z;
+    along = dot(-a, t);
+    local.foot = a + along * t;
+    local.tangent = t;
+  } else {
+    vec2 centre = relativeToCentre(p.header.xy, shift, p.arc.xy);
+    float sweep = p.measure.x;
+    float angle = atan(-centre.y, -centre.x);
+    float fromStart = remainderTurn(angle - (p.arc.w + 0.5 * sweep)) + 0.5 * sweep;
+    along = p.arc.z * (sweep >= 0.0 ? fromStart : -fromStart);
+    float theta = p.arc.w + fromStart;
+    local.foot = centre + p.arc.z * vec2(cos(theta), sin(theta));
+    float turn = sweep >= 0.0 ? 1.0 : -1.0;
+    local.tangent = vec2(-sin(theta), cos(theta)) * turn;
+  }
+  local.binormal = vec2(-local.tangent.y, local.tangent.x);
+  float arcLength = p.measure.y + along;
+  local.scale = g.kind.y == kPerturbationScale ? 1.0 + perturbationAt(g, arcLength) : 1.0;
+  local.offset = g.kind.y == kPerturbationOffset ? perturbationAt(g, arcLength) : 0.0;
+  local.startPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.xy);
+  local.endPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.zw);
+  local.startNormal = p.jointNormals.xy;
+  local.endNormal = p.jointNormals.zw;
+  local.width = local.scale * profile.bounds.x;
+  return local;
+}
+
+// Profile point k of a groove in base-plane terms: b along its binormal (from its centre line), h up.
+float profileB(LocalGroove g, int k) { return g.offset + g.scale * profilePoints[g.profileFirst + k].x; }
+float profileH(LocalGroove g, int k) { return g.scale * profilePoints[g.profileFirst + k].y; }
+
+#endif

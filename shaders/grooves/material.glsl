@@ -1,0 +1,36 @@
+// The one material model of formats/groove-scene.md ("Rendering model"), as libbake/groove/render.cpp
+// directRadiance: normalised Blinn-Phong, f = albedo / pi + specular (n + 2) / (8 pi) max(N.H, 0)^n,
+// times max(N.L, 0) and the light's radiance. All vectors in groove space (u, v, w up).
+#ifndef BAKE_GROOVES_MATERIAL_GLSL
+#define BAKE_GROOVES_MATERIAL_GLSL
+
+#include "package.glsl"
+
+vec3 gLightDir;       // towards the light, groove space, unit
+vec3 gLightRadiance;
+int gMaxBounces;
+
+vec3 normalisedOrSame(vec3 a) {
+  float n = length(a);
+  return n > 0.0 ? a / n : a;
+}
+
+vec3 directRadiance(int material, vec3 normal, vec3 toViewer) {
+  float cosLight = dot(normal, gLightDir);
+  if (cosLight <= 0.0) return vec3(0.0);
+  vec3 halfway = normalisedOrSame(toViewer + gLightDir);
+  GrooveMaterial m = materials[material];
+  float n = m.albedo.w;
+  float lobe = (n + 2.0) / (8.0 * kPi) * pow(max(dot(normal, halfway), 0.0), n);
+  return (m.albedo.rgb / kPi + m.specular.rgb * lobe) * cosLight * gLightRadiance;
+}
+
+bool hasMirror(int material) { return materials[material].specular.w > 0.5; }
+
+// The mirrored view direction, unit (render.cpp reflect).
+vec3 reflectView(vec3 toViewer, vec3 normal) {
+  float d = 2.0 * dot(toViewer, normal);
+  return normalisedOrSame(d * normal - toViewer);
+}
+
+#endif

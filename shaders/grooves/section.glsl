@@ -1,0 +1,276 @@
+// The combined cross-section of parallel grooves and the footprint's density along it (seed 000 §5,
+// §5.1), as libbake/groove/line_sampling_section.cpp and line_sampling_occlusion.cpp, in fixed-size
+// arrays. Along the common binormal B through F, each groove's profile is placed where its centre
+// line crosses B (mirrored when its binormal points along -B); between consecutive profile breakpoints
+// every groove is linear, and the surface is H = min(0, cuts) + max(0, ridges), split where two pieces
+// (or a piece and the mirror of another) cross, so it stays exact. A jump in H is a vertical wall that
+// takes the material of its side with the larger |H|. A facet takes the material of the groove with
+// the largest |h| (the lower primitive index on a tie; base where every h is 0).
+//
+// Density (§5.1): the footprint's points F + s1 A1 + s2 A2 land on B at s1 (A1.B) + s2 (A2.B), the sum
+// of two uniform variables: a trapezoid (the CPU method's default). A zero-width footprint is a point.
+#ifndef BAKE_GROOVES_SECTION_GLSL
+#define BAKE_GROOVES_SECTION_GLSL
+
+#include "lookup.glsl"
+
+#ifndef MAX_PROFILE_POINTS
+#define MAX_PROFILE_POINTS 8
+#endif
+#ifndef MAX_SECTION_GROOVES
+#define MAX_SECTION_GROOVES MAX_FOUND
+#endif
+#define MAX_PLACED (MAX_SECTION_GROOVES * MAX_PROFILE_POINTS)
+#define MAX_BREAKS (MAX_PLACED + 2)
+#ifndef MAX_SECTION_POINTS
+#define MAX_SECTION_POINTS (2 * MAX_BREAKS + 16)
+#endif
+#define MAX_SPLITS 24
+
+const int kWall = -1;  // a facet whose material is resolved after the sweep
+
+// --- Footprint density along B ---------------------------------------------------------------
+
+struct FootprintLine {
+  float wide, narrow;  // half-widths of the two boxes
+};
+
+FootprintLine footprintLine(vec2 axis1, vec2 axis2, vec2 binormal) {
+  float a = abs(dot(axis1, binormal)), c = abs(dot(axis2, binormal));
+  FootprintLine line;
+  line.wide = 0.5 * max(a, c);
+  line.narrow = 0.5 * min(a, c);
+  if (line.narrow <= 1e-12 * line.wide) line.narrow = 0.0;  // a line: its ramps are below rounding
+  return line;
+}
+
+float halfSupport(FootprintLine line) { return line.wide + line.narrow; }
+
+// The share of the footprint projecting onto (-inf, x].
+float footprintCdf(FootprintLine line, float x) {
+  float p = line.wide, q = line.narrow;
+  if (!(p > 0.0)) return x < 0.0 ? 0.0 : (x > 0.0 ? 1.0 : 0.5);
+  if (x <= -(p + q)) return 0.0;
+  if (x >= p + q) return 1.0;
+  if (abs(x) <= p - q) return 0.5 + x / (2.0 * p);
+  float d = p + q - abs(x);
+  float tail = (d / (2.0 * q)) * (d / (4.0 * p));
+  return x < 0.0 ? tail : 1.0 - tail;
+}
+
+float footprintShare(FootprintLine line, float x0, float x1) {
+  return abs(footprintCdf(line, x1) - footprintCdf(line, x0));
+}
+
+// --- The section -------------------------------------------------------------------------------
+
+vec2 gSectionBinormal;
+float gSectionB[MAX_SECTION_POINTS], gSectionH[MAX_SECTION_POINTS];
+int gFacetMaterial[MAX_SECTION_POINTS];  // facet i joins points i and i + 1
+int gSectionPoints;
+bool gSectionOverflow;
+
+int facetCount() { return gSectionPoints > 0 ? gSectionPoints - 1 : 0; }
+
+// The placed profiles: points in section coordinates, b ascending.
+float gPlacedB[MAX_PLACED], gPlacedH[MAX_PLACED];
+int gPlacedFirst[MAX_SECTION_GROOVES], gPlacedCount[MAX_SECTION_GROOVES];
+int gPlacedMaterial[MAX_SECTION_GROOVES];
+uint gPlacedPrimitive[MAX_SECTION_GROOVES];
+int gPlacedGrooves;
+float gBreaks[MAX_BREAKS];
+int gBreakCount;
+
+void addBreak(float x) {
+  int at = gBreakCount;
+  while (at > 0 && gBreaks[at - 1] > x) --at;
+  if (at > 0 && gBreaks[at - 1] == x) return;
+  if (gBreakCount == MAX_BREAKS) return;  // cannot happen: sized for every point
+  for (int k = gBreakCount; k > at; --k) gBreaks[k] = gBreaks[k - 1];
+  gBreaks[at] = x;
+  ++gBreakCount;
+}
+
+// Places groove g with its centre line at b = centre (reversed: mirrored profile).
+void placeGroove(LocalGroove g, float centre, bool reversed) {
+  if (gPlacedGrooves == MAX_SECTION_GROOVES) {
+    gSectionOverflow = true;
+    return;
+  }
+  int n = min(g.profileCount, MAX_PROFILE_POINTS);
+  int first = gPlacedGrooves * MAX_PROFILE_POINTS;
+  for (int k = 0; k < n; ++k) {
+    int j = reversed ? n - 1 - k : k;
+    float b = reversed ? centre - profileB(g, j) : centre + profileB(g, j);
+    gPlacedB[first + k] = b;
+    gPlacedH[first + k] = profileH(g, j);
+    addBreak(b);
+  }
+  gPlacedFirst[gPlacedGrooves] = first;
+  gPlacedCount[gPlacedGrooves] = n;
+  gPlacedMaterial[gPlacedGrooves] = g.material;
+  gPlacedPrimitive[gPlacedGrooves] = g.primitive;
+  ++gPlacedGrooves;
+}
+
+void startSection(vec2 binormal, float lo, float hi) {
+  gSectionBinormal = binormal;
+  gSectionPoints = 0;
+  gSectionOverflow = false;
+  gPlacedGrooves = 0;
+  gBreakCount = 0;
+  addBreak(lo);
+  addBreak(hi);
+}
+
+// h of the segment (pb, ph)-(qb, qh) at x, exact at the end points.
+float heightOn(float pb, float ph, float qb, float qh, float x) {
+  if (x <= pb) return ph;
+  if (x >= qb) return qh;
+  return ph + (x - pb) / (qb - pb) * (qh - ph);
+}
+
+// The pieces over the current interval.
+float gPieceLeft[MAX_SECTION_GROOVES], gPieceRight[MAX_SECTION_GROOVES];
+int gPieceMaterial[MAX_SECTION_GROOVES];
+uint gPiecePrimitive[MAX_SECTION_GROOVES];
+int gPieceCount;
+
+float pieceAt(int i, float t) { return t >= 1.0 ? gPieceRight[i] : gPieceLeft[i] + t * (gPieceRight[i] - gPieceLeft[i]); }
+
+float surfaceAt(float t) {
+  float cut = 0.0, ridge = 0.0;
+  for (int i = 0; i < gPieceCount; ++i) {
+    float h = pieceAt(i, t);
+    cut = min(cut, h);
+    ridge = max(ridge, h);
+  }
+  return cut + ridge;
+}
+
+int materialAt(float t) {
+  float largest = 0.0;
+  int material = baseMaterial();
+  uint primitive = 0u;
+  for (int i = 0; i < gPieceCount; ++i) {
+    float size = abs(pieceAt(i, t));
+    if (size > largest || (size == largest && size > 0.0 && gPiecePrimitive[i] < primitive)) {
+      largest = size;
+      material = gPieceMaterial[i];
+      primitive = gPiecePrimitive[i];
+    }
+  }
+  return material;
+}
+
+float gSplits[MAX_SPLITS];
+int gSplitCount;
+
+void addSplit(float t) {
+  int at = gSplitCount;
+  while (at > 0 && gSplits[at - 1] > t) --at;
+  if (at > 0 && gSplits[at - 1] == t) return;
+  if (gSplitCount == MAX_SPLITS) {
+    gSectionOverflow = true;
+    return;
+  }
+  for (int k = gSplitCount; k > at; --k) gSplits[k] = gSplits[k - 1];
+  gSplits[at] = t;
+  ++gSplitCount;
+}
+
+// Where f(t) = fa + t (fb - fa) and g cross strictly inside (0, 1).
+void addCrossing(float fa, float fb, float ga, float gb) {
+  float d0 = fa - ga, d1 = fb - gb;
+  if ((d0 < 0.0 && d1 > 0.0) || (d0 > 0.0 && d1 < 0.0)) {
+    float t = d0 / (d0 - d1);
+    if (t > 0.0 && t < 1.0) addSplit(t);
+  }
+}
+
+// Appends a point; a facet with `material` joins it to the previous one unless they coincide.
+void appendPoint(float b, float h, int material) {
+  if (gSectionPoints > 0) {
+    if (gSectionB[gSectionPoints - 1] == b && gSectionH[gSectionPoints - 1] == h) return;
+    if (gSectionPoints == MAX_SECTION_POINTS) {
+      gSectionOverflow = true;
+      return;
+    }
+    gFacetMaterial[gSectionPoints - 1] = material;
+  }
+  gSectionB[gSectionPoints] = b;
+  gSectionH[gSectionPoints] = h;
+  ++gSectionPoints;
+}
+
+void appendInterval(float x0, float x1) {
+  gSplitCount = 0;
+  addSplit(0.0);
+  addSplit(1.0);
+  for (int i = 0; i < gPieceCount; ++i) {
+    addCrossing(gPieceLeft[i], gPieceRight[i], 0.0, 0.0);
+    for (int j = i + 1; j < gPieceCount; ++j) {
+      addCrossing(gPieceLeft[i], gPieceRight[i], gPieceLeft[j], gPieceRight[j]);
+      addCrossing(gPieceLeft[i], gPieceRight[i], -gPieceLeft[j], -gPieceRight[j]);
+    }
+  }
+  for (int k = 0; k + 1 < gSplitCount; ++k) {
+    float ta = gSplits[k], tb = gSplits[k + 1];
+    float xa = k == 0 ? x0 : x0 + ta * (x1 - x0);
+    float xb = k + 2 == gSplitCount ? x1 : x0 + tb * (x1 - x0);
+    int material = materialAt(0.5 * (ta + tb));
+    appendPoint(xa, surfaceAt(ta), kWall);  // a jump at xa is a wall
+    appendPoint(xb, surfaceAt(tb), material);
+  }
+}
+
+// A wall takes the material of its side with the larger |H| (the left side on a tie).
+void resolveWalls() {
+  int facets = facetCount();
+  for (int i = 0; i < facets; ++i) {
+    if (gFacetMaterial[i] != kWall) continue;
+    bool leftDeeper = abs(gSectionH[i]) >= abs(gSectionH[i + 1]);
+    int side = kWall;
+    if (leftDeeper && i > 0) side = gFacetMaterial[i - 1];
+    if (side == kWall && i + 1 < facets) side = gFacetMaterial[i + 1];
+    if (side == kWall && i > 0) side = gFacetMaterial[i - 1];
+    gFacetMaterial[i] = side == kWall ? baseMaterial() : side;
+  }
+}
+
+// Sweeps the breakpoints: over each interval, every band that covers it contributes its linear piece.
+void buildSection() {
+  for (int k = 0; k + 1 < gBreakCount; ++k) {
+    float x0 = gBreaks[k], x1 = gBreaks[k + 1];
+    gPieceCount = 0;
+    for (int g = 0; g < gPlacedGrooves; ++g) {
+      int first = gPlacedFirst[g], count = gPlacedCount[g];
+      if (!(gPlacedB[first] <= x0) || gPlacedB[first + count - 1] <= x0) continue;  // not yet, or ended
+      int j = 0;
+      while (j + 2 < count && gPlacedB[first + j + 1] <= x0) ++j;  // skips vertical segments too
+      float pb = gPlacedB[first + j], ph = gPlacedH[first + j];
+      float qb = gPlacedB[first + j + 1], qh = gPlacedH[first + j + 1];
+      gPieceLeft[gPieceCount] = heightOn(pb, ph, qb, qh, x0);
+      gPieceRight[gPieceCount] = heightOn(pb, ph, qb, qh, x1);
+      gPieceMaterial[gPieceCount] = gPlacedMaterial[g];
+      gPiecePrimitive[gPieceCount] = gPlacedPrimitive[g];
+      ++gPieceCount;
+    }
+    appendInterval(x0, x1);
+  }
+  resolveWalls();
+}
+
+// Unit outward normal of facet i: (b, h) in the section plane and in groove space.
+vec2 facetNormal2(int i) {
+  float db = gSectionB[i + 1] - gSectionB[i], dh = gSectionH[i + 1] - gSectionH[i];
+  float len = length(vec2(db, dh));
+  return len > 0.0 ? vec2(-dh, db) / len : vec2(0.0, 1.0);
+}
+
+vec3 facetNormal3(int i) {
+  vec2 n = facetNormal2(i);
+  return vec3(n.x * gSectionBinormal, n.y);
+}
+
+#endif

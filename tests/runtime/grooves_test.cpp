@@ -1,0 +1,276 @@
+// Grooved surfaces (seed 000 §4-§7) in the runtime, checked against libbake's CPU method, the oracle
+// (libbake/groove/shade.h SeedShader::shade). Each scene is baked here (parseGrooveScene ->
+// buildGrooveGrid -> buildGroovePackage), drawn headless by the grooves renderer into 32-bit float
+// attachments with the shader's SHADING_INPUTS variant, which also writes every pixel's shading inputs
+// (footprint centre F, edges A1 and A2, E and L in the tangent frame). The CPU method shades each
+// pixel from exactly those inputs; after 8-bit quantisation (round(255 clamp(x)), the rendering
+// model's output) no channel may differ by more than 2 levels. The RMSE and the largest difference
+// are recorded as test properties. Also: the bakeplay registration and package checks.
+#include <gtest/gtest.h>
+
+#include <GL/glcorearb.h>
+#include <bake_formats/grooves.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "groove/grid.h"
+#include "groove/package.h"
+#include "groove/scene.h"
+#include "groove/shade.h"
+#include "io/glb.h"
+#include "play/validate.h"
+#include "render/grooves.h"
+#include "runtime/gl_test.h"
+#include "scene/scene.h"
+#include "support/golden.h"
+
+namespace bake::play {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr int kSize = 96;
+constexpr int kAttachments = 4;  // radiance, then the three shading-input outputs
+
+struct Baked {
+  groove::GrooveScene scene;
+  groove::GrooveGrid grid;
+  fs::path file;
+};
+
+Baked bake(const std::string& json, const std::string& name) {
+  Baked out;
+  auto scene = groove::parseGrooveScene(json, name + ".json");
+  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+  if (!scene.isOk()) return out;
+  out.scene = std::move(scene).value();
+  auto grid = groove::buildGrooveGrid(out.scene, {});
+  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
+  if (!grid.isOk()) return out;
+  out.grid = std::move(grid).value();
+  auto package = groove::buildGroovePackage(out.scene, out.grid);
+  EXPECT_TRUE(package.isOk()) << package.status().describe();
+  if (!package.isOk()) return out;
+  out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
+  const Status written = glb::write(out.file, *package);
+  EXPECT_TRUE(written.isOk()) << written.describe();
+  return out;
+}
+
+// Straight lines across the domain and beyond it (so no open end lies near the viewed region).
+std::string linesAlongU(const std::vector<double>& vs, double length, const std::string& profile) {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    s << (i ? ", " : "") << R"({"profile": ")" << profile << R"(", "path": {"line": [[-0.5, )" << vs[i] << "], ["
+      << length + 0.5 << ", " << vs[i] << "]]}}";
+  return s.str();
+}
+
+std::string sceneJson(double domain, const std::string& profiles, const std::string& materials, const std::string& base,
+                      const std::string& grooves) {
+  return R"({"version": 1, "domain": {"size": [)" + std::to_string(domain) + ", " + std::to_string(domain) +
+         R"(]}, "profiles": {)" + profiles + R"(}, "materials": {)" + materials + R"(}, "base": ")" + base +
+         R"(", "grooves": [)" + grooves + "]}";
+}
+
+// An offscreen framebuffer with four RGBA32F colour attachments.
+class FloatTarget {
+ public:
+  FloatTarget() {
+    glCreateFramebuffers(1, &framebuffer_);
+    glCreateTextures(GL_TEXTURE_2D, kAttachments, textures_);
+    GLenum buffers[kAttachments];
+    for (int k = 0; k < kAttachments; ++k) {
+      glTextureStorage2D(textures_[k], 1, GL_RGBA32F, kSize, kSize);
+      glNamedFramebufferTexture(framebuffer_, GLenum(GL_COLOR_ATTACHMENT0 + k), textures_[k], 0);
+      buffers[k] = GLenum(GL_COLOR_ATTACHMENT0 + k);
+    }
+    glNamedFramebufferDrawBuffers(framebuffer_, kAttachments, buffers);
+  }
+  ~FloatTarget() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteTextures(kAttachments, textures_);
+  }
+  void bindAndClear() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, kSize, kSize);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int k = 0; k < kAttachments; ++k) glClearNamedFramebufferfv(framebuffer_, GL_COLOR, k, zero);
+  }
+  std::vector<float> read(int attachment) const {
+    std::vector<float> pixels(std::size_t(kSize) * kSize * 4);
+    glGetTextureImage(textures_[attachment], 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    return pixels;
+  }
+
+ private:
+  GLuint framebuffer_ = 0;
+  GLuint textures_[kAttachments] = {};
+};
+
+struct OracleFigures {
+  std::size_t pixels = 0, special = 0;
+  int maxLevels = 0;   // largest 8-bit difference
+  double rmse = 0;     // linear, over channels
+  double maxLinear = 0;
+  double meanRadiance = 0;
+};
+
+int quantised(double x) { return int(std::lround(255.0 * std::clamp(x, 0.0, 1.0))); }
+
+class GroovesOracle : public test::GlTest {
+ protected:
+  // Renders the baked scene from `eye` (looking at `target`) lit from `light`, shades every covered
+  // pixel on the CPU from the shader's own inputs, and returns the comparison.
+  OracleFigures compare(const Baked& baked, const Vec3& eye, const Vec3& target, const Vec3& light, int maxBounces) {
+    OracleFigures figures;
+    Diagnostics diagnostics("bakeplay", true);
+    auto scene = loadScene({baked.file}, diagnostics, [](const std::string&) { return true; });
+    EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+    if (!scene.isOk()) return figures;
+    gl::ShaderLibrary shaders;
+    GroovesRenderer renderer({maxBounces, true});
+    const Status prepared = renderer.prepare(*scene, {0}, shaders);
+    EXPECT_TRUE(prepared.isOk()) << prepared.describe();
+    if (!prepared.isOk()) return figures;
+    EXPECT_GT(renderer.gpuBytes(), 0u);
+
+    const Camera camera{eye, target, {0, 0, 1}, 0.7f, 0.01f, 100.0f};
+    const Light lighting{normalize(light), {1, 1, 1}};
+    const FrameContext frame{*scene, camera, lighting, lookAt(camera.eye, camera.target, camera.up),
+                             perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
+    FloatTarget targetBuffers;
+    targetBuffers.bindAndClear();
+    glDisable(GL_DEPTH_TEST);
+    renderer.draw(frame);
+    glFinish();
+    const std::vector<float> radiance = targetBuffers.read(0), in0 = targetBuffers.read(1), in1 = targetBuffers.read(2),
+                             in2 = targetBuffers.read(3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    const groove::SeedShader oracle(baked.scene, baked.grid);
+    double squared = 0, sum = 0;
+    for (std::size_t p = 0; p < std::size_t(kSize) * kSize; ++p) {
+      const float* a = &in0[p * 4];
+      const float* b = &in1[p * 4];
+      const float* c = &in2[p * 4];
+      if (!(c[0] > 0)) continue;  // not covered by the plane
+      groove::Footprint footprint{{a[0], a[1]}, {a[2], a[3]}, {b[0], b[1]}};
+      const groove::Vec3 toViewer{b[2], b[3], c[0]};
+      groove::Lighting light3;
+      light3.toLight = {c[1], c[2], c[3]};
+      light3.maxBounces = maxBounces;
+      groove::ShadeStats stats;
+      const groove::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
+      ++figures.pixels;
+      figures.special += stats.special ? 1 : 0;
+      for (int k = 0; k < 3; ++k) {
+        const double got = radiance[p * 4 + std::size_t(k)];
+        const double d = got - expected[std::size_t(k)];
+        squared += d * d;
+        sum += expected[std::size_t(k)];
+        figures.maxLinear = std::max(figures.maxLinear, std::abs(d));
+        figures.maxLevels = std::max(figures.maxLevels, std::abs(quantised(got) - quantised(expected[std::size_t(k)])));
+      }
+    }
+    if (figures.pixels > 0) {
+      figures.rmse = std::sqrt(squared / (3.0 * double(figures.pixels)));
+      figures.meanRadiance = sum / (3.0 * double(figures.pixels));
+    }
+    return figures;
+  }
+
+  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name) {
+    RecordProperty(name + "_rmse", std::to_string(f.rmse));
+    RecordProperty(name + "_max_levels", f.maxLevels);
+    std::printf("[ grooves ] %s: %zu pixels (%zu special), RMSE %.3g, max |diff| %.3g linear = %d/255, mean %.3f\n",
+                name.c_str(), f.pixels, f.special, f.rmse, f.maxLinear, f.maxLevels, f.meanRadiance);
+    EXPECT_GT(f.pixels, std::size_t(kSize * kSize / 8)) << "the plane covers too little of the image";
+    EXPECT_EQ(f.special, 0u) << "special-case footprints are not line sampled by the CPU method";
+    EXPECT_LE(f.maxLevels, 2);
+    EXPECT_GT(f.meanRadiance, 0.01) << "an all-black image proves nothing";
+  }
+};
+
+const std::string kGrey = R"("grey": {"albedo": [0.6, 0.6, 0.6], "specular": [0.3, 0.3, 0.3], "shininess": 20})";
+
+TEST_F(GroovesOracle, SingleVeeGrooveSeenObliquely) {
+  const Baked baked = bake(sceneJson(1, R"("vee": {"points": [[-0.06, 0], [0, -0.05], [0.06, 0]]})", kGrey, "grey",
+                                     linesAlongU({0.5}, 1, "vee")),
+                           "single_vee");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.55f, -0.35f, 0.75f}, {0.5f, 0.5f, 0.0f}, {0.2f, 0.6f, 0.7f}, 0);
+  expectWithinTwoLevels(f, "single_vee");
+}
+
+TEST_F(GroovesOracle, ParallelSetFarAway) {
+  std::vector<double> vs;
+  for (int k = 0; k < 200; ++k) vs.push_back(0.01 + 0.02 * k);
+  const Baked baked = bake(sceneJson(4, R"("fine": {"points": [[-0.006, 0], [0, -0.008], [0.006, 0]]})", kGrey, "grey",
+                                     linesAlongU(vs, 4, "fine")),
+                           "parallel_far");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {2.0f, -2.0f, 3.0f}, {2.0f, 2.0f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
+  expectWithinTwoLevels(f, "parallel_far");
+}
+
+TEST_F(GroovesOracle, RidgesCastShadows) {
+  const Baked baked = bake(sceneJson(1, R"("ridge": {"points": [[-0.03, 0], [0, 0.05], [0.03, 0]]})", kGrey, "grey",
+                                     linesAlongU({0.3, 0.5, 0.7}, 1, "ridge")),
+                           "ridges");
+  ASSERT_FALSE(baked.file.empty());
+  // A low light across the ridges: each throws a long shadow on the base beside it.
+  const OracleFigures f = compare(baked, {0.45f, -0.3f, 0.9f}, {0.5f, 0.5f, 0.0f}, {0.05f, 0.95f, 0.3f}, 0);
+  expectWithinTwoLevels(f, "ridges");
+}
+
+TEST_F(GroovesOracle, MirrorGrooveWithBounces) {
+  const std::string materials =
+      kGrey + R"(, "mirror": {"albedo": [0.1, 0.1, 0.1], "specular": [0, 0, 0], "shininess": 1, "mirror": [0.9, 0.8, 0.7]})";
+  const Baked baked = bake(sceneJson(1, R"("deep": {"points": [[-0.05, 0], [0, -0.09], [0.05, 0]]})", materials, "grey",
+                                     R"({"profile": "deep", "material": "mirror", "path": {"line": [[-0.5, 0.5], [1.5, 0.5]]}})"),
+                           "mirror");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, -0.2f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.1f, -0.4f, 0.9f}, 3);
+  expectWithinTwoLevels(f, "mirror");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Registration and package checks
+
+TEST(GroovesPackage, RegisteredForTheExtension) {
+  EXPECT_TRUE(RendererRegistry::builtIn().has(format::grooves::kExtension));
+}
+
+TEST(GroovesPackage, ValidateAcceptsAGoodPackageAndRejectsDamage) {
+  auto scene = groove::parseGrooveScene(
+      sceneJson(1, R"("vee": {"points": [[-0.06, 0], [0, -0.05], [0.06, 0]]})", kGrey, "grey", linesAlongU({0.5}, 1, "vee")),
+      "check.json");
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  auto grid = groove::buildGrooveGrid(*scene, {});
+  ASSERT_TRUE(grid.isOk());
+  auto package = groove::buildGroovePackage(*scene, *grid);
+  ASSERT_TRUE(package.isOk());
+  EXPECT_TRUE(checkPackageStructure(*package, "good.glb").isOk());
+
+  glb::Package wrongVersion = *package;
+  wrongVersion.materials[0]["extensions"][format::grooves::kExtension]["version"] = 2;
+  const Status version = checkPackageStructure(wrongVersion, "version.glb");
+  ASSERT_FALSE(version.isOk());
+  EXPECT_NE(version.describe().find("version 2"), std::string::npos) << version.describe();
+
+  glb::Package badIndex = *package;
+  const std::size_t refs = (*package).materials[0]["extensions"][format::grooves::kExtension]["bufferViews"]
+                                                 [format::grooves::kPrimitiveRefs].get<std::size_t>();
+  ASSERT_GE(badIndex.blobs[refs].bytes.size(), 4u);
+  const std::uint32_t outOfRange = 1000;
+  std::memcpy(badIndex.blobs[refs].bytes.data(), &outOfRange, 4);
+  const Status index = checkPackageStructure(badIndex, "index.glb");
+  ASSERT_FALSE(index.isOk());
+  EXPECT_NE(index.describe().find(format::grooves::kExtension), std::string::npos) << index.describe();
+}
+
+}  // namespace
+}  // namespace bake::play
