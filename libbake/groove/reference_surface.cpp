@@ -377,7 +377,6 @@ struct ReferenceSurface::Impl {
     Ray ray;
     double leftHeight = std::numeric_limits<double>::quiet_NaN();
     std::size_t leftMaterial = 0;
-    double maxStepT = kInf;
   };
   bool walkRange(Walk& walk, double t0, double t1, Hit& hit) const;
   bool solveCell(Walk& walk, const std::vector<const Component*>& candidates, double ta, double tb, Hit& hit) const;
@@ -484,7 +483,12 @@ void ReferenceSurface::Impl::buildGrid() {
     }
   }
   const double width = bounds.hi.u - bounds.lo.u, height = bounds.hi.v - bounds.lo.v;
-  const double cell = std::sqrt(width * height / (4.0 * components.size() + 1));
+  double maxWidth = 0;
+  for (const Component& c : components) maxWidth = std::max(maxWidth, c.grooveWidth);
+  if (!(maxWidth > 0)) maxWidth = kInf;
+  // About four components per cell when they are small; long paths (each crossing many cells) ask
+  // for cells of a few groove widths instead. At most 256 x 256 cells.
+  const double cell = std::min(std::sqrt(width * height / (4.0 * components.size() + 1)), 8 * maxWidth);
   grid.origin = bounds.lo;
   grid.nu = std::clamp(static_cast<long>(std::ceil(width / cell)), 1L, 256L);
   grid.nv = std::clamp(static_cast<long>(std::ceil(height / cell)), 1L, 256L);
@@ -530,7 +534,7 @@ double ReferenceSurface::Impl::height(Vec2 x) const {
 void ReferenceSurface::Impl::eventsOf(const Component& c, const Ray& ray, double ta, double tb,
                                       std::vector<Event>& events) const {
   const auto push = [&](double t, Vec2 normal) {
-    if (t > ta && t < tb) events.push_back({t, normal});
+    if (t >= ta && t < tb) events.push_back({t, normal});  // one at ta names a wall met there
   };
   for (int end = 0; end < 2; ++end) {
     const Vec2 joint = end ? c.joint1 : c.joint0, mitre = end ? c.mitre1 : c.mitre0;

@@ -397,5 +397,34 @@ TEST(GrooveReference, BenchmarkScenesLoadAndRender) {
   EXPECT_GE(count, 18);
 }
 
+
+// The material rule: the largest |h| wins (the deeper cut at a crossing), base where nothing cuts,
+// and a wall takes the side with the larger |H| (the cavity's side at an open end).
+TEST(GrooveReference, MaterialsFollowTheLargestCut) {
+  const std::string text = R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"shallow": {"points": [[-0.05, 0], [0, -0.02], [0.05, 0]]}, "deep": {"points": [[-0.04, 0], [0, -0.06], [0.04, 0]]}},
+    "materials": {"base": {}, "a": {"albedo": [1, 0, 0]}, "b": {"albedo": [0, 1, 0]}}, "base": "base",
+    "grooves": [{"profile": "shallow", "material": "a", "path": {"line": [[0.1, 0.5], [0.9, 0.5]]}},
+                {"profile": "deep", "material": "b", "path": {"line": [[0.5, 0.1], [0.5, 0.7]]}}]})";
+  const GrooveScene scene = parseOk(text);
+  const ReferenceSurface surface(scene);
+  const auto materialBelow = [&](Vec2 x) {
+    ReferenceSurface::Hit hit;
+    EXPECT_TRUE(surface.intersect({x.u, x.v, 1}, {0, 0, -1}, hit));
+    return scene.materials[hit.material].name;
+  };
+  EXPECT_EQ(materialBelow({0.5, 0.5}), "b");
+  EXPECT_EQ(materialBelow({0.3, 0.51}), "a");
+  EXPECT_EQ(materialBelow({0.3, 0.3}), "base");
+  EXPECT_EQ(materialBelow({0.51, 0.3}), "b");
+  // Where the shallow groove's facet is deeper than the deep groove's rim region, "a" wins.
+  EXPECT_EQ(materialBelow({0.539, 0.5}), "a");
+  // The deep groove's open end at v = 0.7, seen from inside the cavity: the wall is "b"'s.
+  ReferenceSurface::Hit hit;
+  ASSERT_TRUE(surface.intersect({0.5, 0.6, -0.03}, {0, 1, 0}, hit));
+  EXPECT_NEAR(hit.point.v, 0.7, 1e-12);
+  EXPECT_EQ(scene.materials[hit.material].name, "b");
+}
+
 }  // namespace
 }  // namespace bake::groove
