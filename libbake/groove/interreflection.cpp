@@ -14,7 +14,8 @@
 // A beam carries the footprint measure of its rays: the base-line position p seen through each ray's
 // start is affine in k, so a caught range of k maps to a share of the footprint exactly. The beams
 // live on an explicit stack of kMaxBeams entries (the shader has no recursion); a child that does not
-// fit is dropped (its radiance lost).
+// fit, or carries less than 1e-12 of the pixel, is dropped (its radiance lost), and at most
+// kMaxBeamSteps beams are walked per section, so deep mirror cavities stay bounded.
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +25,11 @@ namespace bake::groove {
 namespace {
 
 double dot3(const Vec3& a, const Vec3& b) { return a.u * b.u + a.v * b.v + a.w * b.w; }
+
+// Bounds of the work per section (the shader's loops must be bounded): beams walked in all, and the
+// share x reflectance below which a beam is not followed further.
+constexpr int kMaxBeamSteps = 4 * kMaxBeams;
+constexpr double kNegligible = 1e-12;
 
 struct Beam {
   std::size_t facet = 0;
@@ -80,7 +86,9 @@ void catchOnFacet(const Walk& w, const Beam& beam, std::size_t j, double x, doub
     const Rgb f = directRadiance(material, facetNormal3(w.section, j), w.back, w.lighting);
     w.add(w.density.share(positionAt(l0), positionAt(l1)), f, sum);
   }
-  if (material.hasMirror && beam.bounce + 1 < w.lighting.maxBounces) {
+  const double childShare = w.density.share(positionAt(s0), positionAt(s1));
+  const double strongest = std::max({w.weight[0], w.weight[1], w.weight[2]});
+  if (material.hasMirror && beam.bounce + 1 < w.lighting.maxBounces && childShare * strongest > kNegligible) {
     Beam child;
     child.facet = j;
     child.t0 = s0;
@@ -186,7 +194,7 @@ Rgb mirrorBounces(const GrooveScene& scene, const CrossSection& section, const F
     beam.toViewer = toViewer;
     stack.push(beam);
   }
-  while (stack.size > 0) {
+  for (int step = 0; step < kMaxBeamSteps && stack.size > 0; ++step) {
     const Beam beam = stack.items[--stack.size];
     traceBeam(scene, section, density, lighting, lit, beam, sum, stack);
   }
