@@ -215,6 +215,25 @@ TEST(GrooveAreaStiff, ZeroAreaFootprintIsAPointSample) {
   }
 }
 
+TEST(GrooveAreaStiff, TinyFootprintTendsToThePointSample) {
+  // A footprint a millionth of the groove width inside one visible, lit piece of a crossing: its mean
+  // is the point sample, to rounding.
+  const GrooveScene s = sceneWith(line("v", "red", {0.1, 0.5}, {0.9, 0.5}) + ", " + line("box", "shiny", {0.5, 0.1}, {0.5, 0.9}));
+  const double theta = 60 * kPi / 180;
+  const Vec3 e{std::sin(theta) * 0.6, std::sin(theta) * 0.8, std::cos(theta)};
+  const Lighting l = lightTowards({-0.2, 0.3, 0.9});
+  std::vector<double> seen;
+  for (const Vec2 c : {Vec2{0.503, 0.502}, Vec2{0.53, 0.505}, Vec2{0.53, 0.53}}) {
+    const Rgb point = sample(s, Footprint{c, {0, 0}, {0, 0}}, e, l);
+    const Rgb tiny = sample(s, Footprint{c, {2e-8, 0}, {0, 2e-8}}, e, l);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(tiny[k], point[k], 1e-9);
+    seen.push_back(point[0]);
+  }
+  EXPECT_NE(seen[0], seen[1]);  // the box floor, a V facet, the ground
+  EXPECT_NE(seen[1], seen[2]);
+  EXPECT_NE(seen[0], seen[2]);
+}
+
 TEST(GrooveAreaStiff, SegmentFootprintIsTheMeanAlongTheSegment) {
   // A footprint with parallel axes A1 = (a, 0), A2 = (a/2, 0) has no area: it is the limit of thin
   // parallelograms, a density along the segment flat at 1/a over |x| <= a/4, where the V-groove lies:
