@@ -92,8 +92,9 @@ bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
 Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const std::vector<std::size_t>& members,
                const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
   const Vec2 binormal = grooves[members.front()].binormal;
-  std::vector<SectionGroove> placed;
-  placed.reserve(members.size());
+  thread_local std::vector<SectionGroove> placed;
+  thread_local CrossSection section;
+  placed.clear();
   for (std::size_t m : members) {
     const LocalGroove& g = grooves[m];
     const Vec2 d = offsetFromCentre(scene, g.foot, footprint.centre);
@@ -102,7 +103,6 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
     placed.push_back({&g, dot2(d, g.binormal) / along, along < 0});
   }
   const FootprintLine line = footprintLine(footprint, binormal, density);
-  CrossSection section;
   section.binormal = binormal;
   buildCrossSection(scene, placed, -line.halfSupport(), line.halfSupport(), section);
   const SectionShading s = shadeSection(scene, section, line, toViewer, lighting);
@@ -118,7 +118,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   const double eb = toViewer.u * B.u + toViewer.v * B.v, ew = std::max(toViewer.w, kMinViewW);
   const Vec3& L = lighting.toLight;
   const double lb = L.u * B.u + L.v * B.v, lw = L.w;
-  std::vector<FacetSpan> visible, lit;
+  thread_local std::vector<FacetSpan> visible, lit;
   visibleSpans(section, eb, ew, visible);
   visibleSpans(section, lb, lw, lit);
   const std::vector<SectionPoint>& pts = section.points;
@@ -142,7 +142,8 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                    const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
   const Rgb flat = directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting);
-  std::vector<std::size_t> kept;
+  thread_local std::vector<std::size_t> kept;
+  kept.clear();
   for (std::size_t i = 0; i < grooves.size(); ++i)
     if (reachesFootprint(scene, grooves, grooves[i], footprint)) kept.push_back(i);
   if (kept.empty()) return flat;
@@ -150,19 +151,25 @@ Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& gro
   const double reach = 0.5 * (std::hypot(footprint.axis1.u, footprint.axis1.v) +
                               std::hypot(footprint.axis2.u, footprint.axis2.v)) +
                        scene.wmax + scene.hmax + scene.dmax;
-  std::vector<std::vector<std::size_t>> classes;
+  thread_local std::vector<std::size_t> representatives, classOf, members;
+  representatives.clear();
+  classOf.clear();
   for (std::size_t i : kept) {
-    auto it = std::find_if(classes.begin(), classes.end(),
-                           [&](const auto& c) { return parallel(grooves[c.front()], grooves[i], reach); });
-    if (it == classes.end())
-      classes.push_back({i});
-    else
-      it->push_back(i);
+    std::size_t c = 0;
+    while (c < representatives.size() && !parallel(grooves[representatives[c]], grooves[i], reach)) ++c;
+    if (c == representatives.size()) representatives.push_back(i);
+    classOf.push_back(c);
   }
-  if (classes.size() == 1) return shadeClass(scene, grooves, classes[0], footprint, toViewer, lighting, density);
+  auto shadeClassNumber = [&](std::size_t c) {
+    members.clear();
+    for (std::size_t k = 0; k < kept.size(); ++k)
+      if (classOf[k] == c) members.push_back(kept[k]);
+    return shadeClass(scene, grooves, members, footprint, toViewer, lighting, density);
+  };
+  if (representatives.size() == 1) return shadeClassNumber(0);
   Rgb sum = flat;
-  for (const auto& c : classes) {
-    const Rgb value = shadeClass(scene, grooves, c, footprint, toViewer, lighting, density);
+  for (std::size_t c = 0; c < representatives.size(); ++c) {
+    const Rgb value = shadeClassNumber(c);
     for (int k = 0; k < 3; ++k) sum[k] += value[k] - flat[k];
   }
   for (double& x : sum) x = std::max(0.0, x);

@@ -84,7 +84,7 @@ void facetNormal(const CrossSection& section, std::size_t facet, double& nb, dou
   const SectionPoint& p = section.points[facet];
   const SectionPoint& q = section.points[facet + 1];
   const double db = q.b - p.b, dh = q.h - p.h;
-  const double length = std::hypot(db, dh);
+  const double length = std::sqrt(db * db + dh * dh);
   // The material lies below the polyline (b ascending), so the outward normal is the left normal.
   nb = length > 0 ? -dh / length : 0;
   nh = length > 0 ? db / length : 1;

@@ -133,9 +133,13 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
   const std::size_t base = scene.baseMaterial;
 
   // Every profile in section coordinates, b ascending (a reversed groove is mirrored).
-  std::vector<SectionPoint> placed;
-  std::vector<PlacedProfile> profiles;
-  std::vector<double> breaks{lo, hi};
+  // Working arrays, reused between calls on a thread (the shader's are fixed-size).
+  thread_local std::vector<SectionPoint> placed;
+  thread_local std::vector<PlacedProfile> profiles;
+  thread_local std::vector<double> breaks;
+  placed.clear();
+  profiles.clear();
+  breaks.assign({lo, hi});
   for (const SectionGroove& g : grooves) {
     const std::size_t n = g.groove->profile->points.size();
     PlacedProfile p{&g, placed.size(), n};
@@ -154,11 +158,13 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
     return placed[a.first].b < placed[b.first].b;
   });
 
-  std::vector<std::size_t> active;   // indices into profiles
-  std::vector<std::size_t> cursor(profiles.size(), 0);  // the segment of each profile under the interval
+  thread_local std::vector<std::size_t> active;  // indices into profiles
+  thread_local std::vector<std::size_t> cursor;  // the segment of each profile under the interval
+  thread_local std::vector<Piece> pieces;
+  thread_local std::vector<double> splits;
+  active.clear();
+  cursor.assign(profiles.size(), 0);
   std::size_t next = 0;
-  std::vector<Piece> pieces;
-  std::vector<double> splits;
   // The polyline starts and ends on the base (h = 0), so a profile starting or ending with a vertical
   // wall at the outermost break keeps that wall.
   appendPoint(out, breaks.front(), 0, kWall);

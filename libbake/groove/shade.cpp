@@ -54,29 +54,33 @@ Box queryBox(const GrooveScene& scene, const Footprint& f, const Vec3& toViewer,
   return box;
 }
 
-double distanceToPrimitive(const Primitive& p, Vec2 x) {
+// Squared distance from x to the primitive (to compare copies of x).
+double squaredDistanceToPrimitive(const Primitive& p, Vec2 x) {
+  auto squared = [](double du, double dv) { return du * du + dv * dv; };
   if (p.kind == Primitive::Kind::Segment) {
     const double du = p.b.u - p.a.u, dv = p.b.v - p.a.v;
     const double length2 = du * du + dv * dv;
     const double t = length2 > 0 ? std::clamp(((x.u - p.a.u) * du + (x.v - p.a.v) * dv) / length2, 0.0, 1.0) : 0;
-    return std::hypot(x.u - p.a.u - t * du, x.v - p.a.v - t * dv);
+    return squared(x.u - p.a.u - t * du, x.v - p.a.v - t * dv);
   }
   const double angle = std::atan2(x.v - p.centre.v, x.u - p.centre.u);
   const double fromMiddle = std::remainder(angle - (p.startAngle + 0.5 * p.sweep), 2 * std::numbers::pi);
-  if (std::abs(fromMiddle) <= 0.5 * std::abs(p.sweep))
-    return std::abs(std::hypot(x.u - p.centre.u, x.v - p.centre.v) - p.radius);
-  return std::min(std::hypot(x.u - p.a.u, x.v - p.a.v), std::hypot(x.u - p.b.u, x.v - p.b.v));
+  if (std::abs(fromMiddle) <= 0.5 * std::abs(p.sweep)) {
+    const double off = std::sqrt(squared(x.u - p.centre.u, x.v - p.centre.v)) - p.radius;
+    return off * off;
+  }
+  return std::min(squared(x.u - p.a.u, x.v - p.a.v), squared(x.u - p.b.u, x.v - p.b.v));
 }
 
 // The copy of the footprint centre nearest the primitive (the scene may repeat).
 Vec2 nearestCopy(const GrooveScene& scene, const Primitive& p, Vec2 centre) {
   if (!scene.wrapRepeat) return centre;
   Vec2 best = centre;
-  double bestDistance = distanceToPrimitive(p, centre);
+  double bestDistance = squaredDistanceToPrimitive(p, centre);
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j) {
       const Vec2 copy{centre.u + i * scene.domain[0], centre.v + j * scene.domain[1]};
-      const double d = distanceToPrimitive(p, copy);
+      const double d = squaredDistanceToPrimitive(p, copy);
       if (d < bestDistance) {
         bestDistance = d;
         best = copy;

@@ -305,5 +305,28 @@ TEST(LineSample, SharesSumToOneForAnyView) {
   }
 }
 
+TEST(LineSample, NonParallelCutsWithoutOverlapAgreeWithAreaSampling) {
+  // A V along u and a V at 20 degrees whose bands do not meet under the footprint. Cuts cannot occlude
+  // each other across flat ground, so shading each on its own section and adding their differences
+  // from the flat base is exact here: it must match area sampling (exact polygons) at oblique angles.
+  const double angle = 20 * kPi / 180;
+  json j = sceneWith(vee(), {{"albedo", {0.6, 0.5, 0.4}}, {"specular", {0.4, 0.4, 0.4}}, {"shininess", 12}});
+  const double cu = 0.5 - 0.4 * std::cos(angle), cv = 0.535 - 0.4 * std::sin(angle);
+  j["grooves"].push_back(
+      {{"profile", "p"}, {"path", {{"line", {{cu, cv}, {0.5 + 0.4 * std::cos(angle), 0.535 + 0.4 * std::sin(angle)}}}}}});
+  const GrooveScene s = parseOk(j);
+  const Footprint f{{0.5, 0.5}, {0.06, 0}, {0, 0.06}};
+  std::vector<LocalGroove> grooves{localGroove(s, 0, f.centre), localGroove(s, 1, f.centre)};
+  for (const auto& [e, l] : {std::pair{directionFromAngles(0.6, 1.9), directionFromAngles(0.5, -1.0)},
+                             std::pair{directionFromAngles(1.1, -0.4), directionFromAngles(0.9, 2.6)}}) {
+    Lighting lighting;
+    lighting.toLight = l;
+    const Rgb line = lineSample(s, grooves, f, e, lighting), area = areaSample(s, grooves, f, e, lighting);
+    const Rgb flat = directRadiance(s.materials[0], {0, 0, 1}, e, lighting);
+    EXPECT_GT(std::abs(line[0] - flat[0]), 1e-3);  // both grooves matter
+    expectRgbNear(line, area, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace bake::groove
