@@ -98,11 +98,16 @@ bool sameGrooveNeighbours(const GrooveScene& scene, std::size_t i, std::size_t j
 }
 
 bool parallel(const Primitive& a, const Primitive& b) {
-  if (a.kind == Primitive::Kind::Segment && b.kind == Primitive::Kind::Segment)
-    return std::abs(cross(a.tangentAt(0), b.tangentAt(0))) <= kParallelSine;
+  if (a.kind == Primitive::Kind::Segment && b.kind == Primitive::Kind::Segment) {
+    // |sin| of the angle between the directions, without square roots.
+    const Vec2 da = sub(a.b, a.a), db = sub(b.b, b.a);
+    const double c = cross(da, db);
+    return c * c <= kParallelSine * kParallelSine * dot(da, da) * dot(db, db);
+  }
   if (a.kind == Primitive::Kind::Arc && b.kind == Primitive::Kind::Arc) {
     const Vec2 d = sub(a.centre, b.centre);
-    return std::hypot(d.u, d.v) <= kConcentric * (a.radius + b.radius);
+    const double limit = kConcentric * (a.radius + b.radius);
+    return dot(d, d) <= limit * limit;
   }
   return false;
 }
@@ -137,72 +142,64 @@ std::vector<Vec2> pathCrossings(const Primitive& a, const Primitive& b, Vec2 shi
   return points;
 }
 
-Vec2 centreOf(const Polygon& polygon) {
-  Vec2 sum;
-  for (const Vec2& p : polygon.points) sum = add(sum, p);
-  return mul(1.0 / double(polygon.points.size()), sum);
-}
-
-bool inside(const Polygon& polygon, Vec2 x) {
-  const std::size_t count = polygon.points.size();
-  for (std::size_t k = 0; k < count; ++k)
-    if (cross(sub(polygon.points[(k + 1) % count], polygon.points[k]), sub(x, polygon.points[k])) < 0) return false;
-  return true;
-}
-
 // The crossing point nearest the overlap's centre among those inside it, else that centre.
-Vec2 crossingPoint(const Primitive& a, const Primitive& b, Vec2 shift, const Polygon& overlap) {
-  const Vec2 centre = centreOf(overlap);
+Vec2 crossingPoint(const Primitive& a, const Primitive& b, Vec2 shift, const Overlap& overlap) {
+  const Vec2 centre = overlap.centre();
   Vec2 best = centre;
   double bestDistance = INFINITY;
   for (const Vec2& x : pathCrossings(a, b, shift)) {
-    const double distance = std::hypot(x.u - centre.u, x.v - centre.v);
-    if (inside(overlap, x) && distance < bestDistance) {
+    const Vec2 d = sub(x, centre);
+    if (dot(d, d) < bestDistance && overlap.contains(x)) {
       best = x;
-      bestDistance = distance;
+      bestDistance = dot(d, d);
     }
   }
   return best;
 }
 
-// The domain periods to try moving the second primitive by: none, or in a repeating scene the
-// nearest period and its eight neighbours.
-std::vector<Vec2> periodShifts(const Lattice& lattice, const Polygon& a, const Polygon& b) {
-  if (!lattice.wrap) return {Vec2{0, 0}};
+// The domain period nearest to moving the second box next to the first (none without wrap).
+Vec2 nearestPeriod(const Lattice& lattice, const Polygon& a, const Polygon& b) {
+  if (!lattice.wrap) return {0, 0};
   const double U = lattice.domain.u, V = lattice.domain.v;
-  const double ku = std::round(((a.lower.u + a.upper.u) - (b.lower.u + b.upper.u)) / (2 * U));
-  const double kv = std::round(((a.lower.v + a.upper.v) - (b.lower.v + b.upper.v)) / (2 * V));
-  std::vector<Vec2> shifts;
-  for (int dv = -1; dv <= 1; ++dv)
-    for (int du = -1; du <= 1; ++du) shifts.push_back({(ku + du) * U, (kv + dv) * V});
-  return shifts;
+  return {U * std::round(((a.lower.u + a.upper.u) - (b.lower.u + b.upper.u)) / (2 * U)),
+          V * std::round(((a.lower.v + a.upper.v) - (b.lower.v + b.upper.v)) / (2 * V))};
 }
 
-bool boxesMeet(const Polygon& a, const Polygon& b) {
-  return a.lower.u <= b.upper.u && b.lower.u <= a.upper.u && a.lower.v <= b.upper.v && b.lower.v <= a.upper.v;
+bool boxesMeet(const Polygon& a, const Polygon& b, Vec2 shift) {
+  return a.lower.u <= b.upper.u + shift.u && b.lower.u + shift.u <= a.upper.u && a.lower.v <= b.upper.v + shift.v &&
+         b.lower.v + shift.v <= a.upper.v;
 }
 
-void addIntersections(const RecordInputs& in, std::size_t i, std::size_t j, std::vector<SpecialRecord>& out) {
+void addIntersection(const RecordInputs& in, std::size_t i, std::size_t j, Vec2 shift, Overlap& overlap,
+                     std::vector<SpecialRecord>& out) {
   const GrooveScene& scene = *in.scene;
-  const Primitive& a = scene.primitives[i];
-  const Primitive& b = scene.primitives[j];
-  if (sameGrooveNeighbours(scene, i, j) || parallel(a, b)) return;
   const Polygon& regionA = (*in.regions)[i];
-  const double minArea = kMinOverlap * std::pow(std::min(grooveWidth(scene, i), grooveWidth(scene, j)), 2);
-  for (const Vec2& shift : periodShifts(*in.lattice, regionA, (*in.regions)[j])) {
-    const Polygon regionB = translated((*in.regions)[j], shift);
-    if (!boxesMeet(regionA, regionB)) continue;
-    const Polygon overlap = intersect(regionA, regionB);
-    if (overlap.empty() || std::abs(area(overlap)) <= minArea) continue;
-    SpecialRecord record;
-    record.kind = SpecialRecord::Kind::Intersection;
-    record.point = crossingPoint(a, b, shift, overlap);
-    record.lower = overlap.lower;
-    record.upper = overlap.upper;
-    record.primitive[0] = static_cast<std::uint32_t>(i);
-    record.primitive[1] = static_cast<std::uint32_t>(j);
-    out.push_back(record);
-  }
+  const Polygon& regionB = (*in.regions)[j];
+  if (!boxesMeet(regionA, regionB, shift)) return;
+  intersect(regionA, regionB, shift, overlap);
+  const double w = std::min(grooveWidth(scene, i), grooveWidth(scene, j));
+  if (overlap.count < 3 || std::abs(overlap.area()) <= kMinOverlap * w * w) return;
+  SpecialRecord record;
+  record.kind = SpecialRecord::Kind::Intersection;
+  record.point = crossingPoint(scene.primitives[i], scene.primitives[j], shift, overlap);
+  record.lower = overlap.lower;
+  record.upper = overlap.upper;
+  record.primitive[0] = static_cast<std::uint32_t>(i);
+  record.primitive[1] = static_cast<std::uint32_t>(j);
+  out.push_back(record);
+}
+
+// In a repeating scene the second primitive is tried at the nearest period and its eight neighbours.
+void addIntersections(const RecordInputs& in, std::size_t i, std::size_t j, Overlap& overlap,
+                      std::vector<SpecialRecord>& out) {
+  const GrooveScene& scene = *in.scene;
+  if (!in.lattice->wrap && !boxesMeet((*in.regions)[i], (*in.regions)[j], {0, 0})) return;
+  if (sameGrooveNeighbours(scene, i, j) || parallel(scene.primitives[i], scene.primitives[j])) return;
+  const Vec2 nearest = nearestPeriod(*in.lattice, (*in.regions)[i], (*in.regions)[j]);
+  if (!in.lattice->wrap) return addIntersection(in, i, j, nearest, overlap, out);
+  for (int dv = -1; dv <= 1; ++dv)
+    for (int du = -1; du <= 1; ++du)
+      addIntersection(in, i, j, add(nearest, {du * in.lattice->domain.u, dv * in.lattice->domain.v}), overlap, out);
 }
 
 // The later primitives sharing a cell with primitive i, ascending, each once.
@@ -220,14 +217,14 @@ void laterNeighbours(const RecordInputs& in, std::size_t i, std::vector<std::uin
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
-void recordsOfPrimitive(const RecordInputs& in, std::size_t i, std::vector<std::uint32_t>& scratch,
+void recordsOfPrimitive(const RecordInputs& in, std::size_t i, std::vector<std::uint32_t>& scratch, Overlap& overlap,
                         std::vector<SpecialRecord>& out) {
   const GrooveScene& scene = *in.scene;
   const Primitive& p = scene.primitives[i];
   if (p.endAtStart) out.push_back(endRecord(scene, i, true));
   if (p.cornerAtStart) out.push_back(cornerRecord(scene, i, in.cap));
   laterNeighbours(in, i, scratch);
-  for (const std::uint32_t j : scratch) addIntersections(in, i, j, out);
+  for (const std::uint32_t j : scratch) addIntersections(in, i, j, overlap, out);
   if (p.endAtEnd) out.push_back(endRecord(scene, i, false));
 }
 
@@ -239,8 +236,9 @@ std::vector<SpecialRecord> findRecords(const RecordInputs& inputs) {
   std::vector<std::vector<SpecialRecord>> perBlock(blocks);
   parallelForBlocks(blocks, 1, inputs.threads, [&](std::size_t b, std::size_t) {
     std::vector<std::uint32_t> scratch;
+    Overlap overlap;
     const std::size_t end = std::min(count, (b + 1) * kBlock);
-    for (std::size_t i = b * kBlock; i < end; ++i) recordsOfPrimitive(inputs, i, scratch, perBlock[b]);
+    for (std::size_t i = b * kBlock; i < end; ++i) recordsOfPrimitive(inputs, i, scratch, overlap, perBlock[b]);
   });
   std::vector<SpecialRecord> records;
   for (auto& block : perBlock) records.insert(records.end(), block.begin(), block.end());

@@ -173,39 +173,51 @@ void updateBounds(Polygon& polygon) {
   }
 }
 
-Polygon translated(const Polygon& polygon, Vec2 shift) {
-  Polygon moved = polygon;
-  for (Vec2& p : moved.points) p = add(p, shift);
-  moved.lower = add(moved.lower, shift);
-  moved.upper = add(moved.upper, shift);
-  return moved;
-}
-
-Polygon intersect(const Polygon& a, const Polygon& b) {
-  std::vector<Vec2> current = a.points;
-  const std::size_t count = b.points.size();
-  for (std::size_t k = 0; k < count && !current.empty(); ++k) {
-    const Vec2 e0 = b.points[k], e1 = b.points[(k + 1) % count], edge = sub(e1, e0);
-    std::vector<Vec2> next;
-    for (std::size_t i = 0; i < current.size(); ++i) {
-      const Vec2 p = current[i], q = current[(i + 1) % current.size()];
+void intersect(const Polygon& a, const Polygon& b, Vec2 shift, Overlap& out) {
+  Vec2 buffer[Overlap::kCapacity];
+  Vec2* current = out.points;
+  Vec2* next = buffer;
+  int count = 0;
+  for (const Vec2& p : a.points) current[count++] = p;
+  const std::size_t edges = b.points.size();
+  for (std::size_t k = 0; k < edges && count > 0; ++k) {
+    const Vec2 e0 = add(b.points[k], shift), edge = sub(add(b.points[(k + 1) % edges], shift), e0);
+    int kept = 0;
+    for (int i = 0; i < count && kept + 2 <= Overlap::kCapacity; ++i) {
+      const Vec2 p = current[i], q = current[(i + 1) % count];
       const double sp = cross(edge, sub(p, e0)), sq = cross(edge, sub(q, e0));
-      if (sp >= 0) next.push_back(p);
-      if ((sp >= 0) != (sq >= 0)) next.push_back(add(p, mul(sp / (sp - sq), sub(q, p))));
+      if (sp >= 0) next[kept++] = p;
+      if ((sp >= 0) != (sq >= 0)) next[kept++] = add(p, mul(sp / (sp - sq), sub(q, p)));
     }
-    current = std::move(next);
+    std::swap(current, next);
+    count = kept;
   }
-  Polygon clipped;
-  clipped.points = std::move(current);
-  updateBounds(clipped);
-  return clipped;
+  if (current != out.points) std::copy(current, current + count, out.points);
+  out.count = count;
+  out.lower = {INFINITY, INFINITY};
+  out.upper = {-INFINITY, -INFINITY};
+  for (int i = 0; i < count; ++i) {
+    out.lower = {std::min(out.lower.u, out.points[i].u), std::min(out.lower.v, out.points[i].v)};
+    out.upper = {std::max(out.upper.u, out.points[i].u), std::max(out.upper.v, out.points[i].v)};
+  }
 }
 
-double area(const Polygon& polygon) {
+double Overlap::area() const {
   double twice = 0;
-  const std::size_t count = polygon.points.size();
-  for (std::size_t k = 0; k < count; ++k) twice += cross(polygon.points[k], polygon.points[(k + 1) % count]);
+  for (int k = 0; k < count; ++k) twice += cross(points[k], points[(k + 1) % count]);
   return 0.5 * twice;
+}
+
+Vec2 Overlap::centre() const {
+  Vec2 sum;
+  for (int k = 0; k < count; ++k) sum = add(sum, points[k]);
+  return count ? mul(1.0 / count, sum) : sum;
+}
+
+bool Overlap::contains(Vec2 x) const {
+  for (int k = 0; k < count; ++k)
+    if (cross(sub(points[(k + 1) % count], points[k]), sub(x, points[k])) < 0) return false;
+  return count >= 3;
 }
 
 std::int64_t Lattice::cellOf(double x, int axis) const {

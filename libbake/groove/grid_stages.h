@@ -25,10 +25,18 @@ struct Polygon {
   bool empty() const { return points.size() < 3; }
 };
 void updateBounds(Polygon& polygon);
-Polygon translated(const Polygon& polygon, Vec2 shift);
-// Sutherland-Hodgman clipping of one convex polygon by another.
-Polygon intersect(const Polygon& a, const Polygon& b);
-double area(const Polygon& polygon);
+// The intersection of two convex polygons (the second moved by `shift`), by Sutherland-Hodgman
+// clipping in fixed buffers: region polygons have at most 23 corners, so 64 always suffice.
+struct Overlap {
+  static constexpr int kCapacity = 64;
+  Vec2 points[kCapacity];
+  int count = 0;
+  Vec2 lower, upper;
+  double area() const;
+  Vec2 centre() const;
+  bool contains(Vec2 x) const;
+};
+void intersect(const Polygon& a, const Polygon& b, Vec2 shift, Overlap& out);
 
 // The geometry of the grid shared by the stages.
 struct Lattice {

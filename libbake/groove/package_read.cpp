@@ -14,6 +14,11 @@ namespace {
 using nlohmann::json;
 namespace fmt = format::grooves;
 
+// A JSON integer >= 0 (written unsigned, but a hand-edited file may hold a signed one).
+bool isIndex(const json& value) {
+  return value.is_number_unsigned() || (value.is_number_integer() && value.get<std::int64_t>() >= 0);
+}
+
 struct Reader {
   const glb::Package& package;
   const std::string& name;
@@ -31,14 +36,14 @@ struct Reader {
 
   Result<std::uint64_t> count(const char* key) const {
     const json& counts = extension.value("counts", json::object());
-    if (!counts.contains(key) || !counts[key].is_number_unsigned()) return fail(std::string("counts/") + key, "missing count");
+    if (!counts.contains(key) || !isIndex(counts[key])) return fail(std::string("counts/") + key, "missing count");
     return counts[key].get<std::uint64_t>();
   }
 
   template <class T>
   Status array(const char* key, std::uint64_t items, std::size_t stride, std::vector<T>& out) const {
     const json& views = extension.value("bufferViews", json::object());
-    if (!views.contains(key) || !views[key].is_number_unsigned()) return fail(std::string("bufferViews/") + key, "missing bufferView");
+    if (!views.contains(key) || !isIndex(views[key])) return fail(std::string("bufferViews/") + key, "missing bufferView");
     const std::uint64_t view = views[key].get<std::uint64_t>();
     if (view >= package.blobs.size()) return fail(std::string("bufferViews/") + key, "bufferView " + std::to_string(view) + " does not exist");
     const std::vector<std::uint8_t>& bytes = package.blobs[view].bytes;
@@ -72,7 +77,7 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
              origin = grid.value("origin", json::array());
   if (cells.size() != 2 || size.size() != 2 || origin.size() != 2) return reader.fail("grid", "expected cells, cellSize and origin pairs");
   for (int k = 0; k < 2; ++k) {
-    if (!cells[k].is_number_unsigned() || cells[k].get<std::uint64_t>() < 1 || cells[k].get<std::uint64_t>() > UINT32_MAX)
+    if (!isIndex(cells[k]) || cells[k].get<std::uint64_t>() < 1 || cells[k].get<std::uint64_t>() > UINT32_MAX)
       return reader.fail("grid/cells", "expected a count >= 1");
     header.cells[k] = cells[k].get<std::uint32_t>();
     BAKE_ASSIGN_OR_RETURN(header.cellSize[k], reader.positive(size[k], "grid/cellSize"));
@@ -83,7 +88,7 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
     if (!e.contains(key) || !e[key].is_number() || !(e[key].get<double>() >= 0)) return reader.fail(key, "expected a number >= 0");
     *target = e[key].get<double>();
   }
-  if (!e.contains("baseMaterial") || !e["baseMaterial"].is_number_unsigned()) return reader.fail("baseMaterial", "missing index");
+  if (!e.contains("baseMaterial") || !isIndex(e["baseMaterial"])) return reader.fail("baseMaterial", "missing index");
   header.baseMaterial = e["baseMaterial"].get<std::uint32_t>();
   for (const json& n : e.value("profileNames", json::array())) header.profileNames.push_back(n.is_string() ? n.get<std::string>() : "");
   for (const json& n : e.value("materialNames", json::array())) header.materialNames.push_back(n.is_string() ? n.get<std::string>() : "");
