@@ -32,7 +32,8 @@ GrooveScene sceneOf(const std::string& grooves, bool wrap = false) {
                            (wrap ? "repeat" : "none") + R"(",
     "profiles": {"v": {"points": [[-0.02, 0], [0, -0.02], [0.02, 0]]},
                  "deep": {"points": [[-0.01, 0], [0, -0.02], [0.01, 0]]},
-                 "ridge": {"points": [[-0.02, 0], [-0.02, 0.03], [0.02, 0.03], [0.02, 0]]}},
+                 "ridge": {"points": [[-0.02, 0], [-0.02, 0.03], [0.02, 0.03], [0.02, 0]]},
+                 "scratch": {"points": [[-0.03, 0], [-0.02, 0.01], [-0.01, 0], [0, -0.015], [0.015, 0], [0.025, 0.006], [0.03, 0]]}},
     "materials": {"ground": {"albedo": [0.3, 0.5, 0.7]}, "paint": {"albedo": [0.8, 0.3, 0.1], "specular": [0.4, 0.4, 0.4], "shininess": 16},
                   "chrome": {"albedo": [0.1, 0.1, 0.1], "specular": [0.5, 0.5, 0.5], "shininess": 30, "mirror": [0.9, 0.8, 0.7]}},
     "base": "ground", "grooves": [)" + grooves + "]}";
@@ -202,6 +203,28 @@ TEST(SeedShader, MirrorVGrooveWithBouncesAgreesWithTheReference) {
     SCOPED_TRACE(bounces);
     expectMatchesReference(s, windowView({0.47, 0.47}, {0.53, 0.53}, 12, 0.5, 1.4),
                            lightTowards({0.1, 0.3, 1}, bounces));
+  }
+}
+
+TEST(SeedShader, ScratchWithPileUpRidgesAgreesWithTheReference) {
+  // Ridges beside the cut mask and shadow the flat ground and the cut at oblique angles.
+  const GrooveScene s = sceneOf(line("scratch", "paint", {0.1, 0.47}, {0.9, 0.53}));
+  for (const auto& [theta, phi, light] : {std::tuple{1.0, 1.3, Vec3{0.1, -0.8, 0.4}}, std::tuple{1.3, -1.6, Vec3{0.3, 0.9, 0.3}}}) {
+    SCOPED_TRACE(theta);
+    expectMatchesReference(s, windowView({0.42, 0.44}, {0.58, 0.56}, 16, theta, phi), lightTowards(light));
+  }
+}
+
+TEST(SeedShader, ParallelSetUnderWideFootprintsAgreesWithTheReference) {
+  // Eight V-grooves 0.05 apart seen through pixels about three periods wide, at grazing angles across
+  // them: one combined section per pixel with masking and shadowing between neighbours.
+  std::string grooves;
+  for (int k = 0; k < 8; ++k)
+    grooves += (k ? ", " : "") + line("v", "paint", {0.1, 0.325 + 0.05 * k}, {0.9, 0.325 + 0.05 * k});
+  const GrooveScene s = sceneOf(grooves);
+  for (const auto& [theta, phi, light] : {std::tuple{1.2, 1.5, Vec3{0, 0.8, 0.5}}, std::tuple{0.8, -1.2, Vec3{0.2, -0.7, 0.4}}}) {
+    SCOPED_TRACE(theta);
+    expectMatchesReference(s, windowView({0.3, 0.35}, {0.6, 0.65}, 2, theta, phi), lightTowards(light));
   }
 }
 
