@@ -433,7 +433,9 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
       const Primitive& after = scene.primitives[first + (i + 1) % count];
       c.joint0 = p.a;
       c.mitre0 = openStart ? p.tangentAt(0) : mitreOf(before.tangentAt(1), p.tangentAt(0));
-      c.joint1 = p.b;
+      // Both sides of a joint use the same line, bit for bit (the next piece's start point), so the
+      // regions neither overlap nor leave a sliver of flat surface between them (a false wall).
+      c.joint1 = openEnd ? p.b : after.a;
       c.mitre1 = openEnd ? p.tangentAt(1) : mitreOf(p.tangentAt(1), after.tangentAt(0));
       // Bounds: the path's box grown by the width, stretched by the mitres (w / cos of half the turn).
       // (Nearly folded-back corners reach far: bounded by the domain size, beyond which the grid ends.)

@@ -426,5 +426,54 @@ TEST(GrooveReference, MaterialsFollowTheLargestCut) {
   EXPECT_EQ(scene.materials[hit.material].name, "b");
 }
 
+
+// A closed circle's first and last arcs meet on one line: no sliver of flat surface between them
+// (which would stand as a wall), so shadow rays cross the closing joint freely.
+TEST(GrooveReference, ClosedCircleHasNoSeamAtItsClosingJoint) {
+  const std::string profile = R"("v": {"points": [[-0.05, 0], [0, -0.03], [0.05, 0]]})";
+  const GrooveScene scene = parseOk(sceneText(
+      profile, R"({"profile": "v", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.25, "start": 0, "end": 360}}})"));
+  ASSERT_TRUE(scene.grooves[0].closed);
+  const ReferenceSurface surface(scene);
+  const Lighting light = lightFrom(40 * kPi / 180, kPi / 2);  // shadow rays run across the joint (along +v)
+  for (double u = 0.71; u < 0.79; u += 0.0071) {
+    const Rgb below = referenceRadiance(surface, scene, {u, 0.5 - 1e-7}, {0, 0, 1}, light);
+    const Rgb above = referenceRadiance(surface, scene, {u, 0.5 + 1e-7}, {0, 0, 1}, light);
+    EXPECT_NEAR(below[0], above[0], 1e-5) << u;
+    EXPECT_GT(below[0], 0) << u;
+  }
+}
+
+// Hit normals are the normalised (-grad H, 1): checked against central differences of height() on
+// perturbed grooves (where the depth varies along the path too) and an arc.
+TEST(GrooveReference, NormalsAreTheHeightGradient) {
+  const std::string profiles = R"("v": {"points": [[-0.05, 0], [0, -0.03], [0.05, 0]]},
+      "skew": {"points": [[-0.04, 0], [-0.02, -0.03], [0.04, 0]]})";
+  const GrooveScene scene = parseOk(sceneText(profiles,
+      R"({"profile": "v", "path": {"line": [[0.1, 0.3], [0.9, 0.3]]}, "perturbation": {"kind": "scale", "amplitude": 0.4, "wavelength": 0.2}},
+         {"profile": "skew", "path": {"line": [[0.1, 0.6], [0.9, 0.65]]}, "perturbation": {"kind": "offset", "amplitude": 0.02, "wavelength": 0.25}},
+         {"profile": "skew", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.1, "start": 200, "end": 340}}})"));
+  const ReferenceSurface surface(scene);
+  int checked = 0;
+  for (double u = 0.15; u < 0.85; u += 0.0173)
+    for (double v = 0.22; v < 0.7; v += 0.0071) {
+      const double e = 1e-7;
+      const double hu = (surface.height({u + e, v}) - surface.height({u - e, v})) / (2 * e);
+      const double hv = (surface.height({u, v + e}) - surface.height({u, v - e})) / (2 * e);
+      ReferenceSurface::Hit hit;
+      ASSERT_TRUE(surface.intersect({u, v, 1}, {0, 0, -1}, hit));
+      if (hit.point.w == 0 || hit.normal.w == 0) continue;
+      const double n = std::sqrt(1 + hu * hu + hv * hv);
+      // Skip points within a difference step of a kink (profile vertex, crossing, joint).
+      const double hu2 = (surface.height({u + 2 * e, v}) - surface.height({u - 2 * e, v})) / (4 * e);
+      if (std::abs(hu2 - hu) > 1e-6) continue;
+      EXPECT_NEAR(hit.normal.u, -hu / n, 1e-5) << u << " " << v;
+      EXPECT_NEAR(hit.normal.v, -hv / n, 1e-5) << u << " " << v;
+      EXPECT_NEAR(hit.normal.w, 1 / n, 1e-5) << u << " " << v;
+      ++checked;
+    }
+  EXPECT_GT(checked, 200);
+}
+
 }  // namespace
 }  // namespace bake::groove
