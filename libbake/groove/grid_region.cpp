@@ -203,8 +203,9 @@ void intersect(const Polygon& a, const Polygon& b, Vec2 shift, Overlap& out) {
 }
 
 double Overlap::area() const {
+  // Relative to the first corner: absolute coordinates far from the origin would cancel.
   double twice = 0;
-  for (int k = 0; k < count; ++k) twice += cross(points[k], points[(k + 1) % count]);
+  for (int k = 1; k + 1 < count; ++k) twice += cross(sub(points[k], points[0]), sub(points[k + 1], points[0]));
   return 0.5 * twice;
 }
 
