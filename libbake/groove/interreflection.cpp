@@ -61,7 +61,8 @@ struct Walk {
   // Footprint position as an affine function of the ray coordinate k.
   double kAt0 = 0, kAt1 = 0, p0 = 0, p1 = 0;
 
-  double key(const SectionPoint& p) const { return dir * acrossCoordinate(p, rb, rw); }
+  SectionDirection ray{};           // R in the section's frame
+  double key(const SectionPoint& p) const { return dir * acrossCoordinate(section, p, ray); }
   double positionOf(double k) const {
     const double s = std::clamp((k - kAt0) / (kAt1 - kAt0), 0.0, 1.0);
     return p0 + s * (p1 - p0);
@@ -106,15 +107,15 @@ void catchOnFacet(const Walk& w, const Beam& beam, std::size_t j, double x, doub
 void catchOnFarBase(const Walk& w, double x, double y, Rgb& sum) {
   const Vec3& L = w.lighting.toLight;
   if (!(L.w > 0)) return;
-  const Vec2 B = w.section.binormal;
-  const double lb = L.u * B.u + L.v * B.v, lw = L.w;
+  const SectionDirection light = inSection(w.section, L);
+  const double lb = light.b, lw = light.w;
   // On the far side, a base point at b is shadowed only by the section, when the light comes from the
   // section's side: lit for b beyond the section's shadow line b = extreme / lw.
   double limit = y;
   if (w.dir * lb < 0) {
     double extreme = w.dir > 0 ? -INFINITY : INFINITY;
     for (const SectionPoint& p : w.section.points) {
-      const double k = acrossCoordinate(p, lb, lw);
+      const double k = acrossCoordinate(w.section, p, light);
       extreme = w.dir > 0 ? std::max(extreme, k) : std::min(extreme, k);
     }
     // The ray with coordinate k meets h = 0 at b = dir k / rw; lit where dir b >= dir extreme / lw,
@@ -135,8 +136,9 @@ void traceBeam(const GrooveScene& scene, const CrossSection& section, const Foot
   if (!(dot3(beam.toViewer, normal) > 0)) return;
   const Vec3 R = reflect(beam.toViewer, normal);
   Walk w{scene, section, density, lighting, lit};
-  w.rb = R.u * section.binormal.u + R.v * section.binormal.v;
-  w.rw = R.w;
+  w.ray = inSection(section, R);
+  w.rb = w.ray.b;
+  w.rw = w.ray.w;
   if (w.rb == 0) return;  // straight up: it leaves the surface
   w.dir = w.rb > 0 ? 1 : -1;
   w.back = {-R.u, -R.v, -R.w};
@@ -177,14 +179,14 @@ Rgb mirrorBounces(const GrooveScene& scene, const CrossSection& section, const F
                   const std::vector<FacetSpan>& lit) {
   Rgb sum{0, 0, 0};
   if (lighting.maxBounces <= 0) return sum;
-  const Vec2 B = section.binormal;
-  const double eb = toViewer.u * B.u + toViewer.v * B.v, ew = std::max(toViewer.w, 1e-12);
+  SectionDirection e = inSection(section, toViewer);
+  e.w = std::max(e.w, 1e-12);
   BeamStack stack;
   const std::vector<SectionPoint>& pts = section.points;
   // The first beams: the visible portions of the mirror facets, in reverse so that facets pop in order.
   for (std::size_t i = section.facetCount(); i-- > 0;) {
     if (visible[i].empty() || !scene.materials[section.material[i]].hasMirror) continue;
-    const double q0 = pts[i].b - pts[i].h * (eb / ew), q1 = pts[i + 1].b - pts[i + 1].h * (eb / ew);
+    const double q0 = acrossCoordinate(section, pts[i], e) / e.w, q1 = acrossCoordinate(section, pts[i + 1], e) / e.w;
     Beam beam;
     beam.facet = i;
     beam.t0 = visible[i].t0;

@@ -17,6 +17,7 @@
 //     and shadowing between grooves of different classes (and counts twice a point shadowed by two).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "groove/line_sampling_section.h"
 
@@ -26,6 +27,8 @@ namespace {
 constexpr double kParallelAngle = 1e-6;  // rad
 constexpr double kDriftFraction = 1e-3;  // of a groove width, across the footprint's reach
 constexpr double kMinViewW = 1e-12;      // E_w > 0 by the rendering model; guarded anyway
+constexpr int kCurvedPieces = 4;         // facets of a curved section are split so (its moved
+                                         // positions, quadratic in h, are interpolated within 1/64)
 
 double dot2(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
 double cross2(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
@@ -90,7 +93,8 @@ bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
 }
 
 Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const std::vector<std::size_t>& members,
-               const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
+               const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
+               const SeedSettings& settings) {
   const Vec2 binormal = grooves[members.front()].binormal;
   thread_local std::vector<SectionGroove> placed;
   thread_local CrossSection section;
@@ -102,9 +106,18 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
     // Where the groove's centre line crosses the line F + x B (along = +-1 up to the drift).
     placed.push_back({&g, dot2(d, g.binormal) / along, along < 0});
   }
-  const FootprintLine line = footprintLine(footprint, binormal, density);
+  const FootprintLine line = footprintLine(footprint, binormal, settings.density);
   section.binormal = binormal;
   buildCrossSection(scene, placed, -line.halfSupport(), line.halfSupport(), section);
+  section.centre = std::numeric_limits<double>::infinity();
+  const LocalGroove& first = grooves[members.front()];
+  const Primitive& primitive = scene.primitives[first.primitive];
+  if (settings.curvedSections && primitive.kind == Primitive::Kind::Arc) {
+    // The arc's centre lies on the radial line through the foot, which is F + x B.
+    const Vec2 d = offsetFromCentre(scene, first.foot, footprint.centre);
+    section.centre = dot2({primitive.centre.u - first.foot.u + d.u, primitive.centre.v - first.foot.v + d.v}, binormal);
+    subdivideFacets(section, kCurvedPieces);
+  }
   const SectionShading s = shadeSection(scene, section, line, toViewer, lighting);
   return {s.direct[0] + s.mirrored[0], s.direct[1] + s.mirrored[1], s.direct[2] + s.mirrored[2]};
 }
@@ -114,25 +127,25 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
 SectionShading shadeSection(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
                             const Vec3& toViewer, const Lighting& lighting) {
   SectionShading out;
-  const Vec2 B = section.binormal;
-  const double eb = toViewer.u * B.u + toViewer.v * B.v, ew = std::max(toViewer.w, kMinViewW);
-  const Vec3& L = lighting.toLight;
-  const double lb = L.u * B.u + L.v * B.v, lw = L.w;
+  SectionDirection e = inSection(section, toViewer);
+  e.w = std::max(e.w, kMinViewW);
   thread_local std::vector<FacetSpan> visible, lit;
-  visibleSpans(section, eb, ew, visible);
-  visibleSpans(section, lb, lw, lit);
+  visibleSpans(section, e, visible);
+  visibleSpans(section, inSection(section, lighting.toLight), lit);
   const std::vector<SectionPoint>& pts = section.points;
   for (std::size_t i = 0; i < section.facetCount(); ++i) {
     const FacetSpan& v = visible[i];
     if (v.empty()) continue;
     // Base-line position seen through the facet point at t (projection along E').
-    const double p0 = pts[i].b - pts[i].h * (eb / ew), p1 = pts[i + 1].b - pts[i + 1].h * (eb / ew);
+    const double p0 = acrossCoordinate(section, pts[i], e) / e.w, p1 = acrossCoordinate(section, pts[i + 1], e) / e.w;
     auto at = [&](double t) { return p0 + t * (p1 - p0); };
     out.visibleShare += density.share(at(v.t0), at(v.t1));
     const double t0 = std::max(v.t0, lit[i].t0), t1 = std::min(v.t1, lit[i].t1);
     if (!(t1 > t0)) continue;
     const double r = density.share(at(t0), at(t1));
-    const Rgb f = directRadiance(scene.materials[section.material[i]], facetNormal3(section, i), toViewer, lighting);
+    const double middle = pts[i].h + 0.5 * (t0 + t1) * (pts[i + 1].h - pts[i].h);
+    const Vec3 normal = facetNormalSeen(section, i, e, middle);
+    const Rgb f = directRadiance(scene.materials[section.material[i]], normal, toViewer, lighting);
     for (int c = 0; c < 3; ++c) out.direct[c] += r * f[c];
   }
   if (lighting.maxBounces > 0) out.mirrored = mirrorBounces(scene, section, density, toViewer, lighting, visible, lit);
@@ -140,7 +153,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
 }
 
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-                   const Vec3& toViewer, const Lighting& lighting, FootprintDensity density) {
+                   const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings) {
   const Rgb flat = directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting);
   thread_local std::vector<std::size_t> kept;
   kept.clear();
@@ -164,7 +177,7 @@ Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& gro
     members.clear();
     for (std::size_t k = 0; k < kept.size(); ++k)
       if (classOf[k] == c) members.push_back(kept[k]);
-    return shadeClass(scene, grooves, members, footprint, toViewer, lighting, density);
+    return shadeClass(scene, grooves, members, footprint, toViewer, lighting, settings);
   };
   if (representatives.size() == 1) return shadeClassNumber(0);
   Rgb sum = flat;
@@ -178,7 +191,7 @@ Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& gro
 
 Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                const Vec3& toViewer, const Lighting& lighting) {
-  return lineSampleWith(scene, grooves, footprint, toViewer, lighting, FootprintDensity::Trapezoid);
+  return lineSampleWith(scene, grooves, footprint, toViewer, lighting, SeedSettings{});
 }
 
 }  // namespace bake::groove

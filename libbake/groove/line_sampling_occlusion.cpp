@@ -57,7 +57,45 @@ FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, Footprint
   return line;
 }
 
-void visibleSpans(const CrossSection& section, double db, double dw, std::vector<FacetSpan>& out) {
+SectionDirection inSection(const CrossSection& section, const Vec3& d) {
+  const Vec2 B = section.binormal;
+  return {d.u * B.u + d.v * B.v, d.u * B.v - d.v * B.u, d.w};
+}
+
+double acrossCoordinate(const CrossSection& section, const SectionPoint& p, const SectionDirection& d) {
+  double b = p.b;
+  if (std::isfinite(section.centre) && p.h != 0) {
+    // The line along d through the base point F + x B meets height h after a tangential travel
+    // s = h d.t / d.w; on a groove curved about the centre, the point of offset b there sits where its
+    // circle (radius centre - b) has turned by asin(s / (centre - b)): further along B by
+    // (centre - b)(1 - cos). Past a quarter turn the line has left the circle's side: capped.
+    const double radius = section.centre - p.b;
+    const double travel = p.h * d.t, span = d.w * radius;
+    const double sine = travel == 0 ? 0.0 : (std::abs(travel) >= std::abs(span) ? 1.0 : travel / span);
+    b += radius * (1 - std::sqrt(std::max(0.0, 1 - sine * sine)));
+  }
+  return b * d.w - p.h * d.b;
+}
+
+void subdivideFacets(CrossSection& section, int pieces) {
+  std::vector<SectionPoint> points;
+  std::vector<std::size_t> material;
+  points.push_back(section.points.front());
+  for (std::size_t i = 0; i < section.facetCount(); ++i) {
+    const SectionPoint a = section.points[i], b = section.points[i + 1];
+    const int n = a.h == b.h ? 1 : pieces;
+    for (int k = 1; k <= n; ++k) {
+      const double t = double(k) / n;
+      points.push_back(k == n ? b : SectionPoint{a.b + t * (b.b - a.b), a.h + t * (b.h - a.h)});
+      material.push_back(section.material[i]);
+    }
+  }
+  section.points.swap(points);
+  section.material.swap(material);
+}
+
+void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out) {
+  const double db = d.b, dw = d.w;
   const std::size_t facets = section.facetCount();
   out.assign(facets, FacetSpan{});
   const std::vector<SectionPoint>& pts = section.points;
@@ -65,7 +103,7 @@ void visibleSpans(const CrossSection& section, double db, double dw, std::vector
     // Occluders come from the right: running minimum of k, walking leftwards.
     double lowest = dw < 0 ? -kInfinity : kInfinity;
     for (std::size_t i = facets; i-- > 0;) {
-      const double k0 = acrossCoordinate(pts[i], db, dw), k1 = acrossCoordinate(pts[i + 1], db, dw);
+      const double k0 = acrossCoordinate(section, pts[i], d), k1 = acrossCoordinate(section, pts[i + 1], d);
       if (k1 > k0 && k0 < lowest) out[i] = {0, std::min(1.0, (lowest - k0) / (k1 - k0))};
       lowest = std::min(lowest, std::min(k0, k1));
     }
@@ -73,7 +111,7 @@ void visibleSpans(const CrossSection& section, double db, double dw, std::vector
     // Occluders come from the left: running maximum of k, walking rightwards.
     double highest = dw < 0 ? kInfinity : -kInfinity;
     for (std::size_t i = 0; i < facets; ++i) {
-      const double k0 = acrossCoordinate(pts[i], db, dw), k1 = acrossCoordinate(pts[i + 1], db, dw);
+      const double k0 = acrossCoordinate(section, pts[i], d), k1 = acrossCoordinate(section, pts[i + 1], d);
       if (k1 > k0 && k1 > highest) out[i] = {std::max(0.0, (highest - k0) / (k1 - k0)), 1};
       highest = std::max(highest, std::max(k0, k1));
     }
@@ -88,6 +126,23 @@ void facetNormal(const CrossSection& section, std::size_t facet, double& nb, dou
   // The material lies below the polyline (b ascending), so the outward normal is the left normal.
   nb = length > 0 ? -dh / length : 0;
   nh = length > 0 ? db / length : 1;
+}
+
+Vec3 facetNormalSeen(const CrossSection& section, std::size_t facet, const SectionDirection& d, double h) {
+  if (!std::isfinite(section.centre) || h == 0 || d.w <= 0) return facetNormal3(section, facet);
+  double nb = 0, nh = 1;
+  facetNormal(section, facet, nb, nh);
+  const SectionPoint& p = section.points[facet];
+  const SectionPoint& q = section.points[facet + 1];
+  const double b = 0.5 * (p.b + q.b);
+  // The point sits at tangential travel s = h d.t / d.w, where the binormal has turned to
+  // cos(a) B + sin(a) T with sin(a) = s / (b - centre).
+  const double offset = b - section.centre;
+  const double travel = h * d.t, span = d.w * offset;
+  const double sine = std::clamp(span == 0 ? 0.0 : travel / span, -1.0, 1.0);
+  const double cosine = std::sqrt(1 - sine * sine);
+  const Vec2 B = section.binormal, T{B.v, -B.u};
+  return {nb * (cosine * B.u + sine * T.u), nb * (cosine * B.v + sine * T.v), nh};
 }
 
 Vec3 facetNormal3(const CrossSection& section, std::size_t facet) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "groove/shade.h"
@@ -41,6 +42,9 @@ struct SectionPoint {
 // per facet: facet i joins points i and i + 1.
 struct CrossSection {
   Vec2 binormal{0, 1};
+  // Curved sections (SeedSettings::curvedSections): the b of the grooves' common centre of curvature
+  // (their arcs' centre lies on the line F + b B); infinite for straight grooves.
+  double centre = std::numeric_limits<double>::infinity();
   std::vector<SectionPoint> points;
   std::vector<std::size_t> material;
   std::size_t facetCount() const { return points.empty() ? 0 : points.size() - 1; }
@@ -67,17 +71,32 @@ struct FacetSpan {
   bool empty() const { return !(t1 > t0); }
 };
 
-// The coordinate across the direction (db, dw) in the section plane: points on one line along that
-// direction share it. No division, so grazing and downward directions stay finite.
-inline double acrossCoordinate(const SectionPoint& p, double db, double dw) { return p.b * dw - p.h * db; }
+// A direction in the section's frame: along B, along the tangent T (B = left normal of T), up.
+struct SectionDirection {
+  double b = 0, t = 0, w = 1;
+};
+SectionDirection inSection(const CrossSection& section, const Vec3& d);
 
-// The part of each facet seen from the direction (db, dw) (masking for E, shadowing for L), the flat
-// base continuing to infinity on both sides. A direction below the horizon (dw < 0) sees nothing.
-void visibleSpans(const CrossSection& section, double db, double dw, std::vector<FacetSpan>& out);
+// The coordinate across the direction d in the section plane: points on one line along (d.b, d.w)
+// share it (dw times the base-line position the line reaches). No division, so grazing and
+// downward directions stay finite. On a curved section the point is first moved along its circle by
+// the tangential travel h d.t / d.w of that line (line_sampling_occlusion.cpp).
+double acrossCoordinate(const CrossSection& section, const SectionPoint& p, const SectionDirection& d);
+
+// The part of each facet seen from the direction d (masking for E, shadowing for L), the flat base
+// continuing to infinity on both sides. A direction below the horizon (d.w < 0) sees nothing.
+void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out);
+
+// Curved sections: splits every facet that changes height into `pieces` (the moved positions are
+// interpolated linearly between points).
+void subdivideFacets(CrossSection& section, int pieces);
 
 // Unit normal of facet i in the section plane (b, h) and in groove space.
 void facetNormal(const CrossSection& section, std::size_t facet, double& nb, double& nh);
 Vec3 facetNormal3(const CrossSection& section, std::size_t facet);
+// On a curved section, the normal where the line along d meets the facet at height h: the section's
+// normal turned with the circle through that point; otherwise facetNormal3.
+Vec3 facetNormalSeen(const CrossSection& section, std::size_t facet, const SectionDirection& d, double h);
 
 // --- Shading a section (Eq. 1 and §7) --------------------------------------------------------------
 
@@ -100,6 +119,6 @@ Rgb mirrorBounces(const GrooveScene& scene, const CrossSection& section, const F
 
 // lineSample with a chosen footprint density (lineSample uses the trapezoid).
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-                   const Vec3& toViewer, const Lighting& lighting, FootprintDensity density);
+                   const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings);
 
 }  // namespace bake::groove

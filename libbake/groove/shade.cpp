@@ -126,16 +126,16 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   });
   if (stats) stats->special = special;
   if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);
-  return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, density_);
+  return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);
 }
 
 RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
-                    int threads, FootprintDensity density) {
+                    int threads, const SeedSettings& settings) {
   RgbImage image;
   image.width = view.width;
   image.height = view.height;
   image.rgb.assign(std::size_t(std::max(0, view.width)) * std::max(0, view.height) * 3, 0.0f);
-  const SeedShader shader(scene, grid, density);
+  const SeedShader shader(scene, grid, settings);
   parallelFor(
       std::size_t(std::max(0, view.height)), resolveThreadCount(unsigned(std::max(0, threads))),
       [&](std::size_t y) {

@@ -15,6 +15,15 @@ namespace bake::groove {
 // of the parallelogram (a trapezoid) or the seed's uniform segment S = [-projmax, projmax].
 enum class FootprintDensity { Trapezoid, SeedSegment };
 
+struct SeedSettings {
+  FootprintDensity density = FootprintDensity::Trapezoid;
+  // Not in the seed: for arcs, each cross-section point is moved along its circle to where the view
+  // (light, mirrored) line through the footprint's centre line meets it, instead of straightening the
+  // groove at the footprint (exact for arcs; the seed's flat-facet assumption fails for views along
+  // tightly curved grooves).
+  bool curvedSections = false;
+};
+
 struct ShadeStats {
   bool special = false;       // area sampling was used
   std::uint32_t primitives = 0;  // primitives found under the enlarged box
@@ -22,9 +31,8 @@ struct ShadeStats {
 
 class SeedShader {
  public:
-  SeedShader(const GrooveScene& scene, const GrooveGrid& grid,
-             FootprintDensity density = FootprintDensity::Trapezoid)
-      : scene_(scene), grid_(grid), density_(density) {}
+  SeedShader(const GrooveScene& scene, const GrooveGrid& grid, const SeedSettings& settings = {})
+      : scene_(scene), grid_(grid), settings_(settings) {}
   // The pixel value of one footprint seen from `toViewer`.
   Rgb shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
             ShadeStats* stats = nullptr) const;
@@ -32,10 +40,10 @@ class SeedShader {
  private:
   const GrooveScene& scene_;
   const GrooveGrid& grid_;
-  FootprintDensity density_ = FootprintDensity::Trapezoid;
+  SeedSettings settings_;
 };
 
 RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
-                    int threads, FootprintDensity density = FootprintDensity::Trapezoid);
+                    int threads, const SeedSettings& settings = {});
 
 }  // namespace bake::groove

@@ -56,7 +56,9 @@ Rgb sample(const GrooveScene& s, const Footprint& f, Vec3 e, Vec3 l, int bounces
   Lighting lighting;
   lighting.toLight = l;
   lighting.maxBounces = bounces;
-  return lineSampleWith(s, grooves, f, e, lighting, density);
+  SeedSettings settings;
+  settings.density = density;
+  return lineSampleWith(s, grooves, f, e, lighting, settings);
 }
 
 void expectRgbNear(const Rgb& a, const Rgb& b, double tolerance) {
@@ -180,7 +182,7 @@ TEST(LineSample, ObliqueViewMasksTheFarWall) {
   section.binormal = {0, 1};
   buildCrossSection(s, {{&g, 0.0, false}}, -0.02, 0.02, section);
   std::vector<FacetSpan> spans;
-  visibleSpans(section, e.v, e.w, spans);
+  visibleSpans(section, inSection(section, e), spans);
   ASSERT_EQ(spans.size(), 4u);
   EXPECT_NEAR(spans[1].t0, 0, 1e-15);
   EXPECT_NEAR(spans[1].t1, 2.0 / 3, 1e-14);

@@ -175,9 +175,10 @@ TEST(SeedShader, RenderIsTheSameForAnyThreadCount) {
 
 // The seed's method against the reference over a small view, within 3x the reference's noise floor
 // (the RMSE between two reference seeds).
-void expectMatchesReference(const GrooveScene& s, const View& view, const Lighting& l) {
+double expectMatchesReference(const GrooveScene& s, const View& view, const Lighting& l,
+                              const SeedSettings& method = {}) {
   const GrooveGrid grid = gridOf(s);
-  const RgbImage seed = renderSeed(s, grid, view, l, 0);
+  const RgbImage seed = renderSeed(s, grid, view, l, 0, method);
   ReferenceSettings settings;
   settings.samplesPerPixel = 64;
   const RgbImage a = renderReference(s, view, l, settings);
@@ -186,6 +187,7 @@ void expectMatchesReference(const GrooveScene& s, const View& view, const Lighti
   const double noise = compareImages(a, b).rmse;
   const ImageError error = compareImages(seed, a);
   EXPECT_LT(error.rmse, 3 * noise + 1e-9) << "noise floor " << noise;
+  return error.rmse;
 }
 
 TEST(SeedShader, VGrooveAgreesWithTheReference) {
@@ -226,6 +228,24 @@ TEST(SeedShader, ParallelSetUnderWideFootprintsAgreesWithTheReference) {
     SCOPED_TRACE(theta);
     expectMatchesReference(s, windowView({0.3, 0.35}, {0.6, 0.65}, 2, theta, phi), lightTowards(light));
   }
+}
+
+TEST(SeedShader, ConcentricArcsAndAPerturbedGrooveAgreeWithTheReference) {
+  // Two concentric arcs (radii 0.3 and 0.35, one combined section per pixel: their tangents are
+  // parallel at every footprint) and a groove whose scale varies along it (frozen per pixel, §4).
+  const std::string arcs =
+      R"({"profile": "v", "material": "paint", "path": {"arc": {"centre": [0.2, 0.2], "radius": 0.3, "start": 10, "end": 80}}},
+         {"profile": "v", "material": "paint", "path": {"arc": {"centre": [0.2, 0.2], "radius": 0.35, "start": 10, "end": 80}}})";
+  const GrooveScene concentric = sceneOf(arcs);
+  SeedSettings curved;
+  curved.curvedSections = true;
+  expectMatchesReference(concentric, windowView({0.37, 0.37}, {0.5, 0.5}, 12, 1.0, 2.4),
+                         lightTowards({0.5, 0.2, 0.6}), curved);
+  const std::string perturbed =
+      R"({"profile": "scratch", "material": "paint", "perturbation": {"kind": "scale", "amplitude": 0.3, "wavelength": 0.5},
+          "path": {"line": [[0.1, 0.5], [0.9, 0.5]]}})";
+  expectMatchesReference(sceneOf(perturbed), windowView({0.4, 0.44}, {0.56, 0.56}, 12, 0.9, 1.2),
+                         lightTowards({-0.2, -0.6, 0.6}));
 }
 
 }  // namespace
