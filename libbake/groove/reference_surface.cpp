@@ -15,10 +15,12 @@
 // marching and bisection for perturbed ones). Between events every active component is smooth, so
 // H can jump (vertical walls) only at events. On a sub-interval where all active components are
 // straight and unperturbed each height is linear in t: it is split again where two of them (or one
-// and 0) cross, H is then linear and the first root of z(t) - H(t) is exact. Elsewhere (arcs,
-// perturbations) the root is bracketed by Lipschitz-bounded steps (never stepping past a root a
-// bound of |dH/dt| can hide, plus a floor and a ceiling on the step: dense bracketing) and bisected to
-// 1e-12 of the domain size. A sub-interval that starts below the ray after a jump of H is a vertical
+// and 0) cross, H is then linear and the first root of z(t) - H(t) is exact. Where one unperturbed
+// arc alone is active its surface is a cone about the arc's axis: the root of a quadratic, also exact.
+// Elsewhere (several arcs at once, perturbations) the root is bracketed by Lipschitz-bounded steps
+// (never past a root a bound of |dH/dt| can hide, with a ceiling on the step and a floor of 1e-3 of the
+// feature size: dense bracketing, so only tangential touches narrower than that floor can be missed)
+// and narrowed by regula falsi (Illinois) to 1e-12 of the domain size. A sub-interval that starts below the ray after a jump of H is a vertical
 // wall: the hit normal is the horizontal normal of the event's line, turned to face the ray.
 #include <algorithm>
 #include <cmath>
@@ -384,6 +386,7 @@ struct ReferenceSurface::Impl {
   void numericEvents(const Component& c, const Ray& ray, double ta, double tb, std::vector<Event>& events) const;
   bool solveLinear(const Ray& ray, const std::vector<Piece>& pieces, double lo, double hi, double& tHit) const;
   bool solveMarching(const Ray& ray, const std::vector<Piece>& pieces, double lo, double hi, double& tHit) const;
+  bool solveCone(const Ray& ray, const Piece& piece, double lo, double hi, double& tHit, bool& found) const;
   void finishHit(const Walk& walk, const std::vector<Piece>& pieces, double t, Hit& hit) const;
 };
 
@@ -679,6 +682,50 @@ bool ReferenceSurface::Impl::solveLinear(const Ray& ray, const std::vector<Piece
   return false;
 }
 
+// One unperturbed arc piece alone: its surface is a cone about the arc's axis, h = slope b + intercept
+// with b = turn (radius - r). z(t) = h(t) means r(t) = rho0 + rho1 t, a quadratic in t once squared:
+// exact roots. Returns false (undecided: march instead) when the roots do not check out numerically.
+bool ReferenceSurface::Impl::solveCone(const Ray& ray, const Piece& piece, double lo, double hi, double& tHit,
+                                       bool& found) const {
+  const Component& c = *piece.c;
+  const double slope = c.profile->slope[piece.segment], intercept = c.profile->intercept[piece.segment];
+  const auto gap = [&](double t) { return ray.z(t) - pieceHeight(piece, ray.at(t)); };
+  const double scale = hmax + dmax + featureSize, tolerance = 1e-9 * scale;
+  std::vector<double> roots;
+  if (slope == 0) {  // a flat floor at height intercept
+    if (ray.dirW != 0) roots.push_back((intercept - ray.originW) / ray.dirW);
+  } else {
+    // r = radius - (z - intercept) / (turn slope) = rho0 + rho1 t.
+    const double k = 1 / (c.turn * slope);
+    const double rho0 = c.radius - (ray.originW - intercept) * k, rho1 = -ray.dirW * k;
+    const Vec2 d = sub(ray.origin, c.centre);
+    const double a = dot(ray.dir, ray.dir) - rho1 * rho1, half = dot(d, ray.dir) - rho0 * rho1;
+    const double constant = dot(d, d) - rho0 * rho0;
+    if (std::abs(a) <= 1e-12 * (dot(ray.dir, ray.dir) + rho1 * rho1)) {
+      if (half != 0) roots.push_back(-constant / (2 * half));
+    } else {
+      const double disc = half * half - a * constant;
+      if (disc >= 0) {
+        const double q = half >= 0 ? -half - std::sqrt(disc) : -half + std::sqrt(disc);
+        roots.push_back(q / a);
+        if (q != 0) roots.push_back(constant / q);
+      }
+    }
+    // Squaring admits r = -rho: keep roots on the cone itself.
+    std::erase_if(roots, [&](double t) { return rho0 + rho1 * t < 0; });
+  }
+  std::sort(roots.begin(), roots.end());
+  for (double t : roots) {
+    if (t < lo || t > hi) continue;
+    if (std::abs(gap(t)) > tolerance) return false;
+    tHit = t;
+    found = true;
+    return true;
+  }
+  found = false;
+  return gap(hi) > -tolerance;  // no root: the ray must still be above at the end
+}
+
 // Arcs or perturbations: march with steps a Lipschitz bound of d(z - H)/dt cannot hide a root in,
 // between a floor and a ceiling, then bisect the first bracket to 1e-12 of the domain size.
 bool ReferenceSurface::Impl::solveMarching(const Ray& ray, const std::vector<Piece>& pieces, double lo, double hi,
@@ -757,8 +804,12 @@ bool ReferenceSurface::Impl::solveCell(Walk& walk, const std::vector<const Compo
       return true;
     }
     const bool linear = std::all_of(pieces.begin(), pieces.end(), [](const Piece& p) { return p.c->linear(); });
+    const bool cone = pieces.size() == 1 && pieces[0].c->arc && pieces[0].c->perturbation.kind == Perturbation::Kind::None;
     double tHit = 0;
-    if (linear ? solveLinear(ray, pieces, lo, hi, tHit) : solveMarching(ray, pieces, lo, hi, tHit)) {
+    bool found = false;
+    if (linear) found = solveLinear(ray, pieces, lo, hi, tHit);
+    else if (!cone || !solveCone(ray, pieces[0], lo, hi, tHit, found)) found = solveMarching(ray, pieces, lo, hi, tHit);
+    if (found) {
       finishHit(walk, pieces, tHit, hit);
       return true;
     }
