@@ -12,16 +12,18 @@
 // DDA; periodic cell indices under wrap). In each cell the ray's parameter range is cut at events:
 // joint-line crossings (linear in t), crossings of profile vertices by the normalised offset q (linear
 // for straight unperturbed primitives, a quadratic for unperturbed arcs, found by Lipschitz-safe
-// marching and bisection for perturbed ones). Between events every active component is smooth, so
-// H can jump (vertical walls) only at events. On a sub-interval where all active components are
+// marching inside the groove's band for perturbed ones). Between events every active component is
+// smooth, so H can jump (vertical walls) only at events. On a sub-interval where all active components are
 // straight and unperturbed each height is linear in t: it is split again where two of them (or one
 // and 0) cross, H is then linear and the first root of z(t) - H(t) is exact. Where one unperturbed
 // arc alone is active its surface is a cone about the arc's axis: the root of a quadratic, also exact.
 // Elsewhere (several arcs at once, perturbations) the root is bracketed by Lipschitz-bounded steps
 // (never past a root a bound of |dH/dt| can hide, with a ceiling on the step and a floor of 1e-3 of the
 // feature size: dense bracketing, so only tangential touches narrower than that floor can be missed)
-// and narrowed by regula falsi (Illinois) to 1e-12 of the domain size. A sub-interval that starts below the ray after a jump of H is a vertical
-// wall: the hit normal is the horizontal normal of the event's line, turned to face the ray.
+// and narrowed by regula falsi (Illinois) to 1e-12 of the domain size. (Perturbed q crossings are
+// found the same way, bisected when several vertices fall in one step.) A sub-interval that starts
+// below the ray after a jump of H is a vertical wall: the hit normal is the horizontal normal of the
+// event's line, turned to face the ray.
 #include <algorithm>
 #include <cmath>
 #include <limits>
