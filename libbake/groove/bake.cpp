@@ -118,13 +118,13 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
   std::vector<std::uint8_t> bytes;
   {
     StageTimer timer(&report, "pack");
-    BAKE_ASSIGN_OR_RETURN(package, buildGroovePackage(scene, grid));
+    BAKE_ASSIGN_OR_RETURN(package, buildGroovePackage(scene, grid, session.threads()));
     BAKE_ASSIGN_OR_RETURN(bytes, glb::encode(package));
   }
   {
     // What a reader gets back (the package's arrays are the file's bytes), measured against the scene.
     StageTimer timer(&report, "measure");
-    BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(package, settings.output));
+    BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(package, settings.output, false));
     reportError(storedGeometryError(scene, grid, stored), grid, report);
   }
   progress.update(4);

@@ -230,18 +230,54 @@ void recordsOfPrimitive(const RecordInputs& in, std::size_t i, std::vector<std::
 
 }  // namespace
 
+namespace {
+
+// Primitives in the order of the row of their first cell (a counting sort, stable by index), so that
+// consecutive work reads neighbouring cells: the cell lists are then mostly read from cache.
+std::vector<std::uint32_t> spatialOrder(const RecordInputs& in, std::size_t count) {
+  const std::uint32_t columns = in.lattice->cells[0], rows = in.lattice->cells[1];
+  const auto& start = *in.primitiveCellStart;
+  auto firstRow = [&](std::size_t i) { return start[i] < start[i + 1] ? (*in.primitiveCells)[start[i]] / columns : rows; };
+  std::vector<std::uint32_t> bucketStart(std::size_t(rows) + 2, 0);
+  for (std::size_t i = 0; i < count; ++i) ++bucketStart[firstRow(i) + 1];
+  for (std::size_t r = 0; r <= rows; ++r) bucketStart[r + 1] += bucketStart[r];
+  std::vector<std::uint32_t> order(count);
+  for (std::size_t i = 0; i < count; ++i) order[bucketStart[firstRow(i)]++] = static_cast<std::uint32_t>(i);
+  return order;
+}
+
+struct Slot {
+  std::uint32_t block = 0, begin = 0, end = 0;
+};
+
+}  // namespace
+
 std::vector<SpecialRecord> findRecords(const RecordInputs& inputs) {
   const std::size_t count = inputs.scene->primitives.size();
+  const std::vector<std::uint32_t> order = spatialOrder(inputs, count);
   const std::size_t blocks = (count + kBlock - 1) / kBlock;
   std::vector<std::vector<SpecialRecord>> perBlock(blocks);
+  std::vector<Slot> slots(count);
   parallelForBlocks(blocks, 1, inputs.threads, [&](std::size_t b, std::size_t) {
     std::vector<std::uint32_t> scratch;
     Overlap overlap;
     const std::size_t end = std::min(count, (b + 1) * kBlock);
-    for (std::size_t i = b * kBlock; i < end; ++i) recordsOfPrimitive(inputs, i, scratch, overlap, perBlock[b]);
+    for (std::size_t k = b * kBlock; k < end; ++k) {
+      const std::uint32_t i = order[k];
+      slots[i].block = static_cast<std::uint32_t>(b);
+      slots[i].begin = static_cast<std::uint32_t>(perBlock[b].size());
+      recordsOfPrimitive(inputs, i, scratch, overlap, perBlock[b]);
+      slots[i].end = static_cast<std::uint32_t>(perBlock[b].size());
+    }
   });
+  // Each primitive's records were made independently: gathered in primitive order, the result does
+  // not depend on the visiting order or the thread count.
+  std::size_t total = 0;
+  for (const auto& block : perBlock) total += block.size();
   std::vector<SpecialRecord> records;
-  for (auto& block : perBlock) records.insert(records.end(), block.begin(), block.end());
+  records.reserve(total);
+  for (const Slot& slot : slots)
+    records.insert(records.end(), perBlock[slot.block].begin() + slot.begin, perBlock[slot.block].begin() + slot.end);
   return records;
 }
 

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/parallel.h"
+
 namespace bake::groove {
 namespace {
 
@@ -33,6 +35,20 @@ struct CellFrame {
     out[1] = float(x.v - (origin.v + double(anchor[1]) * size.v));
   }
 };
+
+// An array of `count` items made by make(i), written straight into the blob in parallel.
+template <class T, class Make>
+glb::Blob packedBlob(std::size_t count, unsigned threads, Make make) {
+  glb::Blob blob;
+  blob.alignment = fmt::kBufferAlignment;
+  blob.bytes.assign(std::max<std::size_t>(1, count) * sizeof(T), 0);  // one zeroed item when empty
+  std::uint8_t* bytes = blob.bytes.data();
+  parallelFor(count, threads, [&](std::size_t i) {
+    const T item = make(i);
+    std::memcpy(bytes + i * sizeof(T), &item, sizeof(T));
+  }, 4096);
+  return blob;
+}
 
 template <class T>
 glb::Blob blobOf(const std::vector<T>& items) {
@@ -171,15 +187,11 @@ json namesOf(const auto& items) {
 
 }  // namespace
 
-Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGrid& grid) {
+Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGrid& grid, unsigned threads) {
   if (grid.cellStart.size() != grid.cellCount() + 1 || grid.recordStart.size() != grid.cellCount() + 1)
     return internalError("grooves package: the grid's cell starts do not match its cell count");
   const CellFrame frame{grid.origin, grid.cellSize};
-  std::vector<fmt::Primitive> primitives(scene.primitives.size());
-  for (std::size_t i = 0; i < primitives.size(); ++i) primitives[i] = packPrimitive(scene, i, frame);
-  std::vector<fmt::Record> records;
-  records.reserve(grid.records.size());
-  for (const SpecialRecord& r : grid.records) records.push_back(packRecord(r, frame));
+  threads = resolveThreadCount(threads);
   std::vector<fmt::Groove> grooves;
   for (const Groove& g : scene.grooves) grooves.push_back(packGroove(g));
   std::vector<fmt::Profile> profiles;
@@ -190,9 +202,19 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
 
   glb::Package package;
   // Blob i is bufferView i, in the order of fmt::kArrayKeys.
-  package.blobs = {blobOf(grid.cellStart), blobOf(grid.primitiveRefs), blobOf(grid.recordStart), blobOf(grid.recordRefs),
-                   blobOf(records),        blobOf(primitives),         blobOf(grooves),          blobOf(profiles),
-                   blobOf(points),         blobOf(materials)};
+  package.blobs.reserve(fmt::kArrayCount);
+  package.blobs.push_back(blobOf(grid.cellStart));
+  package.blobs.push_back(blobOf(grid.primitiveRefs));
+  package.blobs.push_back(blobOf(grid.recordStart));
+  package.blobs.push_back(blobOf(grid.recordRefs));
+  package.blobs.push_back(packedBlob<fmt::Record>(grid.records.size(), threads,
+                                                  [&](std::size_t r) { return packRecord(grid.records[r], frame); }));
+  package.blobs.push_back(packedBlob<fmt::Primitive>(scene.primitives.size(), threads,
+                                                     [&](std::size_t i) { return packPrimitive(scene, i, frame); }));
+  package.blobs.push_back(blobOf(grooves));
+  package.blobs.push_back(blobOf(profiles));
+  package.blobs.push_back(blobOf(points));
+  package.blobs.push_back(blobOf(materials));
   json views = json::object();
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[fmt::kArrayKeys[k]] = k;
   json extension = {
@@ -209,8 +231,8 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
       {"counts", {{"cells", grid.cellCount()},
                   {"primitiveRefs", grid.primitiveRefs.size()},
                   {"recordRefs", grid.recordRefs.size()},
-                  {"records", records.size()},
-                  {"primitives", primitives.size()},
+                  {"records", grid.records.size()},
+                  {"primitives", scene.primitives.size()},
                   {"grooves", grooves.size()},
                   {"profiles", profiles.size()},
                   {"profilePoints", points.size() / 2},

@@ -46,11 +46,13 @@ struct GroovePackage {
   Vec2 position(const std::int32_t anchor[2], float u, float v) const;
 };
 
-// The package of a scene and its grid (in memory; glb::encode writes it).
-Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGrid& grid);
+// The package of a scene and its grid (in memory; glb::encode writes it). The bytes do not depend on
+// `threads` (0 = all hardware threads).
+Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGrid& grid, unsigned threads = 0);
 
-// Reads the extension and its arrays, checking sizes, counts and every index they hold.
-Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std::string& name);
+// Reads the extension and its arrays, checking sizes, counts and every index they hold. Without
+// `cellLists`, the four CSR arrays are left empty (and unchecked): enough to measure the geometry.
+Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std::string& name, bool cellLists = true);
 Result<GroovePackage> readGroovePackage(const std::filesystem::path& path);
 
 // Largest distance between the stored fp32 geometry, rebuilt in double, and the scene's geometry:

@@ -95,7 +95,7 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
   return {};
 }
 
-Status readArrays(const Reader& reader, GroovePackage& out) {
+Status readArrays(const Reader& reader, bool cellLists, GroovePackage& out) {
   const std::uint64_t cells = std::uint64_t(out.header.cells[0]) * out.header.cells[1];
   BAKE_ASSIGN_OR_RETURN(const std::uint64_t counted, reader.count("cells"));
   if (counted != cells) return reader.fail("counts/cells", "does not match grid/cells");
@@ -107,10 +107,12 @@ Status readArrays(const Reader& reader, GroovePackage& out) {
   BAKE_ASSIGN_OR_RETURN(const std::uint64_t profiles, reader.count("profiles"));
   BAKE_ASSIGN_OR_RETURN(const std::uint64_t points, reader.count("profilePoints"));
   BAKE_ASSIGN_OR_RETURN(const std::uint64_t materials, reader.count("materials"));
-  BAKE_RETURN_IF_ERROR(reader.array(fmt::kCellStart, cells + 1, 4, out.cellStart));
-  BAKE_RETURN_IF_ERROR(reader.array(fmt::kPrimitiveRefs, primitiveRefs, 4, out.primitiveRefs));
-  BAKE_RETURN_IF_ERROR(reader.array(fmt::kRecordStart, cells + 1, 4, out.recordStart));
-  BAKE_RETURN_IF_ERROR(reader.array(fmt::kRecordRefs, recordRefs, 4, out.recordRefs));
+  if (cellLists) {
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kCellStart, cells + 1, 4, out.cellStart));
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kPrimitiveRefs, primitiveRefs, 4, out.primitiveRefs));
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kRecordStart, cells + 1, 4, out.recordStart));
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kRecordRefs, recordRefs, 4, out.recordRefs));
+  }
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kRecords, records, sizeof(fmt::Record), out.records));
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kPrimitives, primitives, sizeof(fmt::Primitive), out.primitives));
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kGrooves, grooves, sizeof(fmt::Groove), out.grooves));
@@ -136,9 +138,11 @@ bool finite(const float* values, int count) {
   return true;
 }
 
-Status checkIndices(const Reader& reader, const GroovePackage& p) {
-  BAKE_RETURN_IF_ERROR(checkCsr(reader, fmt::kCellStart, p.cellStart, p.primitiveRefs, p.primitives.size()));
-  BAKE_RETURN_IF_ERROR(checkCsr(reader, fmt::kRecordStart, p.recordStart, p.recordRefs, p.records.size()));
+Status checkIndices(const Reader& reader, bool cellLists, const GroovePackage& p) {
+  if (cellLists) {
+    BAKE_RETURN_IF_ERROR(checkCsr(reader, fmt::kCellStart, p.cellStart, p.primitiveRefs, p.primitives.size()));
+    BAKE_RETURN_IF_ERROR(checkCsr(reader, fmt::kRecordStart, p.recordStart, p.recordRefs, p.records.size()));
+  }
   for (std::size_t r = 0; r < p.records.size(); ++r) {
     const fmt::Record& record = p.records[r];
     if (record.info[0] > fmt::kRecordCorner || record.info[1] >= p.primitives.size() || record.info[2] >= p.primitives.size() ||
@@ -164,7 +168,7 @@ Status checkIndices(const Reader& reader, const GroovePackage& p) {
   return {};
 }
 
-double distance(Vec2 a, Vec2 b) { return std::hypot(a.u - b.u, a.v - b.v); }
+double distance(Vec2 a, Vec2 b) { return std::sqrt((a.u - b.u) * (a.u - b.u) + (a.v - b.v) * (a.v - b.v)); }
 
 }  // namespace
 
@@ -173,7 +177,7 @@ Vec2 GroovePackage::position(const std::int32_t anchor[2], float u, float v) con
           header.origin[1] + double(anchor[1]) * header.cellSize[1] + double(v)};
 }
 
-Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std::string& name) {
+Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std::string& name, bool cellLists) {
   const json* extension = nullptr;
   for (const json& material : package.materials)
     if (material.contains("extensions") && material["extensions"].contains(fmt::kExtension))
@@ -183,8 +187,8 @@ Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std
   const Reader reader{package, name, *extension};
   GroovePackage out;
   BAKE_RETURN_IF_ERROR(readHeader(reader, out.header));
-  BAKE_RETURN_IF_ERROR(readArrays(reader, out));
-  BAKE_RETURN_IF_ERROR(checkIndices(reader, out));
+  BAKE_RETURN_IF_ERROR(readArrays(reader, cellLists, out));
+  BAKE_RETURN_IF_ERROR(checkIndices(reader, cellLists, out));
   return out;
 }
 

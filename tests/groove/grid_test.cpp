@@ -183,7 +183,7 @@ TEST(GrooveGrid, IdenticalForAnyThreadCount) {
   json grooves = json::array();
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.05, 0.95);
-  for (int k = 0; k < 1500; ++k) grooves.push_back(line(unit(random), unit(random), unit(random), unit(random)));
+  for (int k = 0; k < 600; ++k) grooves.push_back(line(unit(random), unit(random), unit(random), unit(random)));
   const GrooveScene scene = parseOk(sceneWith(grooves, "none", 0.002));
   GridSettings settings;
   settings.threads = 1;
