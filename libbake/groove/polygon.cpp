@@ -93,24 +93,53 @@ ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
   }
   if (allInside) return p;
   if (allOutside) return out;
+  // Consecutive equal vertices (a crossing that rounds onto an end) are kept once: a zero-length edge
+  // has no direction and would make a useless half-plane of a hole's edge.
+  auto addDistinct = [&out](Vec2 x) {
+    if (out.count > 0 && out.vertex[out.count - 1].u == x.u && out.vertex[out.count - 1].v == x.v) return;
+    out.add(x);
+  };
   for (int i = 0; i < p.count; ++i) {
     const int j = (i + 1) % p.count;
-    if (d[i] >= 0) out.add(p.vertex[i]);
-    // A crossing strictly between the two ends: interpolate from the end farther from the line.
+    if (d[i] >= 0) addDistinct(p.vertex[i]);
+    // A crossing strictly between the two ends.
     if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
       const double t = d[i] / (d[i] - d[j]);
       const Vec2 a = p.vertex[i], b = p.vertex[j];
-      out.add({a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)});
+      addDistinct({a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)});
     }
   }
+  if (out.count > 1 && out.vertex[0].u == out.vertex[out.count - 1].u && out.vertex[0].v == out.vertex[out.count - 1].v)
+    --out.count;
   if (out.count < 3) out.count = 0;
   return out;
 }
 
+namespace {
+
+// The half-planes of a convex polygon's edges, leaving out edges too short to have a reliable
+// direction (rounding leaves such slivers where clip lines pass through vertices): the neighbouring
+// edges bound the polygon there to within that length.
+int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVertices>& out) {
+  const Box2 b = boundsOf(p);
+  const double size = std::max(b.upper.u - b.lower.u, b.upper.v - b.lower.v);
+  const double shortest = 1e-12 * size;
+  int n = 0;
+  for (int i = 0; i < p.count; ++i) {
+    const Vec2 a = p.vertex[i], c = p.vertex[(i + 1) % p.count];
+    if (std::max(std::abs(c.u - a.u), std::abs(c.v - a.v)) <= shortest) continue;
+    out[n++] = leftOf(a, c);
+  }
+  return n;
+}
+
+}  // namespace
+
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper) {
+  std::array<HalfPlane, kPolygonMaxVertices> edges;
+  const int n = edgeHalfPlanes(clipper, edges);
   ConvexPolygon out = p;
-  for (int i = 0; i < clipper.count && !out.empty(); ++i)
-    out = clip(out, leftOf(clipper.vertex[i], clipper.vertex[(i + 1) % clipper.count]));
+  for (int i = 0; i < n && !out.empty(); ++i) out = clip(out, edges[i]);
   if (out.empty()) out.count = 0;
   return out;
 }
@@ -124,10 +153,12 @@ bool contains(const ConvexPolygon& p, Vec2 x) {
 
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces) {
+  std::array<HalfPlane, kPolygonMaxVertices> edges;
+  const int count = edgeHalfPlanes(hole, edges);
   int n = 0;
   ConvexPolygon rest = p;
-  for (int i = 0; i < hole.count && !rest.empty(); ++i) {
-    const HalfPlane inside = leftOf(hole.vertex[i], hole.vertex[(i + 1) % hole.count]);
+  for (int i = 0; i < count && !rest.empty(); ++i) {
+    const HalfPlane& inside = edges[i];
     const HalfPlane outside{{-inside.normal.u, -inside.normal.v}, -inside.offset};
     const ConvexPolygon piece = clip(rest, outside);
     if (!piece.empty() && area(piece) > minArea) pieces[n++] = piece;

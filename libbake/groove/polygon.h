@@ -55,7 +55,8 @@ ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper);
 bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary included
 
 // p minus hole (hole counter-clockwise) as at most hole.count disjoint convex pieces, written to
-// `pieces`; returns their number. Pieces of area <= minArea are left out.
+// `pieces`; returns their number. Pieces of area <= minArea are left out. Here and in intersect(),
+// edges shorter than 1e-12 of the polygon's size are ignored (their direction is rounding noise).
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces);
 

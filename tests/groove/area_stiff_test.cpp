@@ -145,16 +145,16 @@ TEST(GrooveAreaStiff, FootprintHundredGrooveWidthsOverAGrid) {
 }
 
 TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
-  // A light near the horizon: whatever may shadow the footprint lies up to 64 groove depths away, so
-  // even an eighth of the footprint sees about 150 crossings of a dense grid.
+  // A light 1.4° above the horizon: whatever may shadow the footprint lies up to 40 groove depths away,
+  // so even an eighth of the footprint sees about 100 crossings of a dense grid.
   std::string grooves;
-  for (int i = 0; i < 31; ++i) {
-    const double x = 1.25 + 0.05 * i;
+  for (int i = 0; i < 17; ++i) {
+    const double x = 1.6 + 0.05 * i;
     grooves += (i ? ", " : "") + line("v", "red", {x, 1}, {x, 3}) + ", " + line("v", "red", {1, x}, {3, x});
   }
   const GrooveScene s = sceneWith(grooves, 4);
   AreaSampleStats stats;
-  const Lighting l = lightTowards({1, 0.3, 0.01});
+  const Lighting l = lightTowards({1, 0.3, 0.025});
   const Rgb value = sample(s, squareFootprint({2, 2}, 0.04), {0, 0, 1}, l, &stats);
   EXPECT_GT(stats.incomplete, 0u) << stats.surface.cells << " " << stats.splits;
   // Dropped pieces only take light away: the value stays between 0 and the brightest piece's radiance.

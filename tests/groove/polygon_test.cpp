@@ -134,6 +134,34 @@ TEST(GroovePolygon, DegenerateInputs) {
   EXPECT_TRUE(full.truncated);
 }
 
+TEST(GroovePolygon, RepeatedVerticesDoNotBreakSubtraction) {
+  // A hole whose vertex list repeats a point (a clip line through a vertex can leave one): its
+  // zero-length edge must not turn into a half-plane.
+  ConvexPolygon hole;
+  hole.add({0, 0});
+  hole.add({1, 0});
+  hole.add({1, 0});
+  hole.add({0, 1});
+  ConvexPolygon nearly = hole;
+  nearly.vertex[2] = {1, 1e-17};  // a few ulps away: no reliable direction either
+  const ConvexPolygon square = rectangle(-1, -1, 2, 2);
+  std::array<ConvexPolygon, kPolygonMaxVertices> pieces;
+  for (const ConvexPolygon& h : {hole, nearly}) {
+    const int n = subtract(square, h, 0, pieces);
+    double rest = 0;
+    for (int i = 0; i < n; ++i) rest += area(pieces[i]);
+    EXPECT_NEAR(rest, 9 - 0.5, 1e-12);
+    EXPECT_NEAR(area(intersect(square, h)), 0.5, 1e-12);
+  }
+  // Clipping through a vertex does not repeat it.
+  ConvexPolygon triangle;
+  triangle.add({0, 0});
+  triangle.add({2, 0});
+  triangle.add({0, 2});
+  const ConvexPolygon cut = clip(triangle, {{1, 0}, 0});
+  EXPECT_EQ(cut.count, 3);
+}
+
 TEST(GroovePolygon, FragmentSetSubtractsOverlappingHoles) {
   FragmentSet set;
   set.add(rectangle(0, 0, 4, 4));
