@@ -83,18 +83,23 @@ int storedCell(ivec2 cell) {
 uint gFound[MAX_FOUND];
 int gFoundCount;
 
+// Sorted insertion (append, then sink); when full, the highest index is dropped.
 void insertFound(uint primitive) {
-  int at = gFoundCount;
-  while (at > 0 && gFound[at - 1] > primitive) --at;
-  if (at > 0 && gFound[at - 1] == primitive) return;
+  for (int i = 0; i < gFoundCount; ++i)
+    if (gFound[i] == primitive) return;
+  int at;
   if (gFoundCount == MAX_FOUND) {
     gFoundOverflow = true;
-    if (at == MAX_FOUND) return;
+    if (gFound[MAX_FOUND - 1] < primitive) return;
+    at = MAX_FOUND - 1;
   } else {
-    ++gFoundCount;
+    at = gFoundCount++;
   }
-  for (int k = gFoundCount - 1; k > at; --k) gFound[k] = gFound[k - 1];
   gFound[at] = primitive;
+  while (at > 0 && gFound[at - 1] > primitive) {
+    gFound[at] = gFound[at - 1];
+    gFound[--at] = primitive;
+  }
 }
 
 void gatherPrimitives(vec2 lower, vec2 upper) {

@@ -55,7 +55,9 @@ layout(std140, binding = 0) uniform GrooveHeader {
 };
 
 const float kPi = 3.14159265358979;
-const float kInfinity = uintBitsToFloat(0x7F800000u);
+// Beyond any section coordinate (sizes of a domain at most) yet far from overflow: stands in for the
+// CPU's infinity, which the GLSL compiler may not keep through constant folding or fast math.
+const float kInfinity = 1.0e20;
 const uint kPrimitiveArc = 1u;
 const uint kPerturbationScale = 1u;
 const uint kPerturbationOffset = 2u;

@@ -81,14 +81,18 @@ int gPlacedGrooves;
 float gBreaks[MAX_BREAKS];
 int gBreakCount;
 
+// Sorted insertion, written as append-then-sink: the form that shifts the tail in a loop from the
+// global count down gave wrong arrays on Mesa llvmpipe (LLVM 15), caught by the oracle test.
 void addBreak(float x) {
-  int at = gBreakCount;
-  while (at > 0 && gBreaks[at - 1] > x) --at;
-  if (at > 0 && gBreaks[at - 1] == x) return;
+  for (int i = 0; i < gBreakCount; ++i)
+    if (gBreaks[i] == x) return;
   if (gBreakCount == MAX_BREAKS) return;  // cannot happen: sized for every point
-  for (int k = gBreakCount; k > at; --k) gBreaks[k] = gBreaks[k - 1];
+  int at = gBreakCount++;
   gBreaks[at] = x;
-  ++gBreakCount;
+  while (at > 0 && gBreaks[at - 1] > x) {
+    gBreaks[at] = gBreaks[at - 1];
+    gBreaks[--at] = x;
+  }
 }
 
 // Places groove g with its centre line at b = centre (reversed: mirrored profile).
@@ -167,16 +171,18 @@ float gSplits[MAX_SPLITS];
 int gSplitCount;
 
 void addSplit(float t) {
-  int at = gSplitCount;
-  while (at > 0 && gSplits[at - 1] > t) --at;
-  if (at > 0 && gSplits[at - 1] == t) return;
+  for (int i = 0; i < gSplitCount; ++i)
+    if (gSplits[i] == t) return;
   if (gSplitCount == MAX_SPLITS) {
     gSectionOverflow = true;
     return;
   }
-  for (int k = gSplitCount; k > at; --k) gSplits[k] = gSplits[k - 1];
+  int at = gSplitCount++;
   gSplits[at] = t;
-  ++gSplitCount;
+  while (at > 0 && gSplits[at - 1] > t) {
+    gSplits[at] = gSplits[at - 1];
+    gSplits[--at] = t;
+  }
 }
 
 // Where f(t) = fa + t (fb - fa) and g cross strictly inside (0, 1).
