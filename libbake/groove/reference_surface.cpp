@@ -188,7 +188,8 @@ Coordinate coordinateAt(const Component& c, Vec2 x) {
   out.pert = perturbationAt(c.perturbation, out.frame.s);
   out.q = (out.frame.b - out.pert.offset) / out.pert.scale;
   const Vec2 shifted = sub(out.frame.gradB, scaled(out.pert.offsetRate, out.frame.gradS));
-  out.gradQ = sub(scaled(1 / out.pert.scale, shifted), scaled(out.q * out.pert.scaleRate / out.pert.scale, out.frame.gradS));
+  const double scaleTerm = out.q * out.pert.scaleRate / out.pert.scale;
+  out.gradQ = sub(scaled(1 / out.pert.scale, shifted), scaled(scaleTerm, out.frame.gradS));
   return out;
 }
 
@@ -453,7 +454,8 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
         for (int k = -8; k <= 8; ++k) {  // axis-aligned extremes inside the sweep
           const double angle = k * 0.5 * kPi;
           const double rel = (angle - p.startAngle) / p.sweep;
-          if (rel > 0 && rel < 1) box.take({p.centre.u + p.radius * std::cos(angle), p.centre.v + p.radius * std::sin(angle)});
+          if (rel > 0 && rel < 1)
+            box.take({p.centre.u + p.radius * std::cos(angle), p.centre.v + p.radius * std::sin(angle)});
         }
       }
       c.box.lo = {box.lo.u - grow, box.lo.v - grow};
@@ -467,8 +469,12 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
   }
   // Periodic copies: every translate by whole periods whose bounds overlap the period cell.
   for (const Component& c : base) {
-    const long i0 = static_cast<long>(std::floor(-c.box.hi.u / period[0])), i1 = static_cast<long>(std::ceil((period[0] - c.box.lo.u) / period[0]));
-    const long j0 = static_cast<long>(std::floor(-c.box.hi.v / period[1])), j1 = static_cast<long>(std::ceil((period[1] - c.box.lo.v) / period[1]));
+    const auto first = [&](int axis, double hi) { return static_cast<long>(std::floor(-hi / period[axis])); };
+    const auto last = [&](int axis, double lo) {
+      return static_cast<long>(std::ceil((period[axis] - lo) / period[axis]));
+    };
+    const long i0 = first(0, c.box.hi.u), i1 = last(0, c.box.lo.u);
+    const long j0 = first(1, c.box.hi.v), j1 = last(1, c.box.lo.v);
     for (long i = i0; i <= i1; ++i)
       for (long j = j0; j <= j1; ++j) {
         Component copy = translated(c, {i * period[0], j * period[1]});
@@ -506,8 +512,10 @@ void ReferenceSurface::Impl::buildGrid() {
     const auto index = [&](double x, double o, double size, long n) {
       return std::clamp(static_cast<long>(std::floor((x - o) / size)), 0L, n - 1);
     };
-    const long i0 = index(c.box.lo.u, grid.origin.u, grid.cellU, grid.nu), i1 = index(c.box.hi.u, grid.origin.u, grid.cellU, grid.nu);
-    const long j0 = index(c.box.lo.v, grid.origin.v, grid.cellV, grid.nv), j1 = index(c.box.hi.v, grid.origin.v, grid.cellV, grid.nv);
+    const long i0 = index(c.box.lo.u, grid.origin.u, grid.cellU, grid.nu);
+    const long i1 = index(c.box.hi.u, grid.origin.u, grid.cellU, grid.nu);
+    const long j0 = index(c.box.lo.v, grid.origin.v, grid.cellV, grid.nv);
+    const long j1 = index(c.box.hi.v, grid.origin.v, grid.cellV, grid.nv);
     for (long j = j0; j <= j1; ++j)
       for (long i = i0; i <= i1; ++i) grid.cells[std::size_t(j * grid.nu + i)].push_back(&c);
   }
@@ -806,7 +814,8 @@ bool ReferenceSurface::Impl::solveCell(Walk& walk, const std::vector<const Compo
       return true;
     }
     const bool linear = std::all_of(pieces.begin(), pieces.end(), [](const Piece& p) { return p.c->linear(); });
-    const bool cone = pieces.size() == 1 && pieces[0].c->arc && pieces[0].c->perturbation.kind == Perturbation::Kind::None;
+    const bool cone =
+        pieces.size() == 1 && pieces[0].c->arc && pieces[0].c->perturbation.kind == Perturbation::Kind::None;
     double tHit = 0;
     bool found = false;
     if (linear) found = solveLinear(ray, pieces, lo, hi, tHit);
@@ -845,7 +854,8 @@ bool ReferenceSurface::Impl::walkRange(Walk& walk, double t0, double t1, Hit& hi
     const double tNext = std::min({nextU, nextV, t1});
     const long si = wrap ? ((i % grid.nu) + grid.nu) % grid.nu : i, sj = wrap ? ((j % grid.nv) + grid.nv) % grid.nv : j;
     const bool inside = si >= 0 && sj >= 0 && si < grid.nu && sj < grid.nv;
-    const Vec2 shift = wrap ? Vec2{double((i - si) / grid.nu) * period[0], double((j - sj) / grid.nv) * period[1]} : Vec2{};
+    const Vec2 shift =
+        wrap ? Vec2{double((i - si) / grid.nu) * period[0], double((j - sj) / grid.nv) * period[1]} : Vec2{};
     ray.origin = sub(unshifted, shift);
     if (tNext > t) {
       if (solveCell(walk, inside ? grid.cell(si, sj) : none, t, tNext, hit)) {
