@@ -240,6 +240,31 @@ TEST(GrooveAreaSampling, RidgeOverCutAgreesWithReference) {
   expectNearReference(sample(s, f, e, l), referenceMean(s, f, e, l), 2e-4);
 }
 
+TEST(GrooveAreaSampling, WrappingSceneMatchesTheSameGeometryInside) {
+  // A T-junction across the domain's edge u = 1 of a repeating scene (each primitive straightened at
+  // the copy of the footprint centre nearest it, as the shader passes them) equals the same T-junction
+  // moved inside the domain.
+  const GrooveScene wrapped = sceneWith(line("box", "red", {0.995, 0.1}, {0.995, 0.9}) + ", " +
+                                            line("v", "shiny", {0.2, 0.5}, {0.995, 0.5}),
+                                        1, true);
+  const GrooveScene inside = sceneWith(line("box", "red", {0.495, 0.1}, {0.495, 0.9}) + ", " +
+                                       line("v", "shiny", {-0.3 + 0.5, 0.5}, {0.495, 0.5}));
+  const Footprint atEdge{{0.002, 0.503}, {0.02, 0.003}, {-0.004, 0.018}};
+  Footprint moved = atEdge;
+  moved.centre = {0.502, 0.503};
+  std::vector<LocalGroove> grooves;
+  for (std::uint32_t p = 0; p < wrapped.primitives.size(); ++p)
+    grooves.push_back(localGroove(wrapped, p, {atEdge.centre.u + 1, atEdge.centre.v}));  // the copy at u + 1
+  const double theta = 50 * kPi / 180;
+  const Vec3 e{-std::sin(theta) * 0.8, std::sin(theta) * 0.6, std::cos(theta)};
+  const Lighting l = lightTowards({0.4, 0.3, 0.6});
+  AreaSampleStats stats;
+  const Rgb a = areaSampleWithStats(wrapped, grooves, atEdge, e, l, stats);
+  const Rgb b = sample(inside, moved, e, l);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-9);
+  EXPECT_GT(stats.surface.walls, 0u);
+}
+
 // Every pixel of small views whose pixel edges fall on the grooves' centre lines and crest lines
 // (clip lines through polygon vertices): the image agrees with the reference within its noise floor
 // (RMSE against one render no larger than between two renders; no pixel off by more than twice the

@@ -28,10 +28,10 @@ inline std::string num(double x) {
 
 // Profiles "v" (V-groove), "box" (vertical walls), "ridge" (a V standing up); materials "ground" (the
 // base), "red", "green", "shiny" (with a specular lobe).
-inline GrooveScene sceneWith(const std::string& grooves, double domain = 1) {
+inline GrooveScene sceneWith(const std::string& grooves, double domain = 1, bool wrap = false) {
   const std::string w = num(kW), d = num(kD);
-  const std::string text = R"({"version": 1, "domain": {"size": [)" + num(domain) + ", " + num(domain) +
-                           R"(]}, "profiles": {"v": {"points": [[-)" + w + ", 0], [0, -" + d + "], [" + w +
+  const std::string text = R"({"version": 1, )" + std::string(wrap ? R"("wrap": "repeat", )" : "") +
+                           R"("domain": {"size": [)" + num(domain) + ", " + num(domain) + R"(]}, "profiles": {"v": {"points": [[-)" + w + ", 0], [0, -" + d + "], [" + w +
                            R"(, 0]]}, "box": {"points": [[-)" + w + ", 0], [-" + w + ", -" + d + "], [" + w + ", -" +
                            d + "], [" + w + R"(, 0]]}, "ridge": {"points": [[-)" + w + ", 0], [0, " + d + "], [" +
                            w + R"(, 0]]}},
