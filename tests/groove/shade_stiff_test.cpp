@@ -206,5 +206,37 @@ TEST(SeedShaderStiff, CoincidentAndNearlyParallelGrooves) {
   EXPECT_NEAR(together[0], facet, 1e-9);
 }
 
+TEST(SeedShaderStiff, CurvedSectionsOnTightArcsAtGrazingAnglesStayFinite) {
+  // A circle of radius equal to the groove's half-width (its centre on the band's edge), seen and lit
+  // at grazing angles with curved sections and mirror bounces: finite, non-negative, bounded.
+  const std::string text = R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"v": {"points": [[-0.05, 0], [0, -0.08], [0.05, 0]]}},
+    "materials": {"ground": {"albedo": [0.5, 0.5, 0.5]},
+                  "chrome": {"albedo": [0.2, 0.2, 0.2], "specular": [0.5, 0.5, 0.5], "shininess": 20, "mirror": [0.9, 0.9, 0.9]}},
+    "base": "ground",
+    "grooves": [{"profile": "v", "material": "chrome", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.05, "start": 0, "end": 360}}}]})";
+  Result<GrooveScene> parsed = parseGrooveScene(text, "scene.json");
+  ASSERT_TRUE(parsed.isOk()) << parsed.status().describe();
+  Result<GrooveGrid> grid = buildGrooveGrid(parsed.value(), GridSettings{});
+  ASSERT_TRUE(grid.isOk());
+  SeedSettings curved;
+  curved.curvedSections = true;
+  const SeedShader shader(parsed.value(), grid.value(), curved);
+  const double bound = (0.5 / kPi + 0.5 * 22 / (8 * kPi)) / (1 - 0.9);
+  for (double theta : {0.0, 60.0, 89.0, 90 - 1e-9})
+    for (double light : {0.0, 80.0, 90.0, 95.0})
+      for (Vec2 at : {Vec2{0.5, 0.5}, Vec2{0.53, 0.51}, Vec2{0.56, 0.47}}) {
+        const Vec3 e = directionFromAngles(theta * kDegree, 0.7);
+        for (const Footprint& f : {Footprint{at, {0, 0}, {0, 0}}, Footprint{at, {0.01, 0.002}, {-0.003, 0.02}}}) {
+          const Rgb value = shader.shade(f, e, lightTowards(directionFromAngles(light * kDegree, 2.0), 8));
+          for (double x : value) {
+            EXPECT_TRUE(std::isfinite(x)) << theta << " " << light;
+            EXPECT_GE(x, 0);
+            EXPECT_LE(x, bound);
+          }
+        }
+      }
+}
+
 }  // namespace
 }  // namespace bake::groove
