@@ -24,10 +24,11 @@ namespace {
 double dot3(const Vec3& a, const Vec3& b) { return a.u * b.u + a.v * b.v + a.w * b.w; }
 Vec3 along(const Vec3& p, const Vec3& d, double t) { return {p.u + t * d.u, p.v + t * d.v, p.w + t * d.w}; }
 
-// How far rays start off the surface: far above rounding, far below any groove.
+// How far rays start off the surface: far above rounding, far below any groove (profiles are few,
+// grooves may be many: this runs per sample in referenceRadiance).
 double offsetDistance(const GrooveScene& scene) {
   double size = std::max(scene.domain[0], scene.domain[1]);
-  for (const Groove& g : scene.grooves) size = std::min(size, g.wmax);
+  for (const Profile& p : scene.profiles) size = std::min(size, p.wmax);
   return std::max(1e-7 * size, 1e-12 * std::max(scene.domain[0], scene.domain[1]));
 }
 
