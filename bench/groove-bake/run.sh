@@ -3,8 +3,8 @@
 # these targets) into BUILD_DIR (default build-bench), then times groovebake on random scratch scenes
 # of SIZES grooves (default "1000 10000 100000"; the domain grows with the count so the density stays
 # that of 10^5 grooves on 200 x 200 mm), RUNS runs each (default 5, median), THREADS threads (default 2),
-# and sweeps --cell-size over 0.5 .. 8 x the automatic size on the largest scene: bake time, references
-# per cell and the stored geometry's error. Writes groove-bake.csv, cell-size.csv, summary.txt and
+# and sweeps --cell-size over 0.5 .. 8 x the automatic size on the largest scene (SWEEP_RUNS runs each,
+# default 3): bake time, references per cell and the stored geometry's error. Writes groove-bake.csv, cell-size.csv, summary.txt and
 # groove-bake.png under --out DIR (default BUILD_DIR/results).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
@@ -13,6 +13,7 @@ bench_build groovebake bench-groove-scene
 bake="$build/tools/groovebake/groovebake"
 scene_tool="$build/bench/groove-bake/bench-groove-scene"
 runs="${RUNS:-5}"
+size_runs="$runs"
 threads="${THREADS:-2}"
 sizes="${SIZES:-1000 10000 100000}"
 work="$out/groove-bake"
@@ -57,6 +58,7 @@ done
 sweep="$out/cell-size.csv"
 echo "factor,cell_size,wall_s,cpu_s,mean_refs,max_refs,file_bytes,max_position_error" >"$sweep"
 auto=$(awk -F, -v n="$largest" '$1 == n { print $11 }' "$csv")
+runs="${SWEEP_RUNS:-3}"
 for factor in 0.5 1 2 4 8; do
   size=$(awk -v a="$auto" -v f="$factor" 'BEGIN { printf "%.6g", a * f }')
   report="$work/report-size.json"
@@ -65,10 +67,10 @@ for factor in 0.5 1 2 4 8; do
 done
 
 {
-  echo "groovebake, -j $threads, median of $runs runs (wall and CPU seconds):"
-  awk -F, 'NR > 1 { printf "  %7d grooves  %8.2f mm  wall %6.3f s  cpu %6.3f s  (read %.3f grid %.3f records %.3f pack %.3f write %.3f)  %5d^2 cells  refs/cell mean %.2f max %d  %d intersections  %.1f MB  max error %.2g\n",
+  echo "groovebake, -j $threads, median of $size_runs runs (wall and CPU seconds, CPU = user + system of all threads):"
+  awk -F, 'NR > 1 { printf "  %7d grooves  %8.2f mm  wall %6.3f s  cpu %6.3f s  (last run: read %.3f grid %.3f records %.3f pack %.3f write %.3f)  %5d^2 cells  refs/cell mean %.2f max %d  %d intersections  %.1f MB  max error %.2g\n",
                     $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $12, $13, $14, $17 / 1e6, $18 }' "$csv"
-  echo "cell size sweep on $largest grooves:"
+  echo "cell size sweep on $largest grooves (median of ${SWEEP_RUNS:-3} runs):"
   awk -F, 'NR > 1 { printf "  x%-4s %.4f mm  wall %6.3f s  cpu %6.3f s  refs/cell mean %6.2f max %4d  %.1f MB  max error %.2g\n", $1, $2, $3, $4, $5, $6, $7 / 1e6, $8 }' "$sweep"
 } | tee "$out/groove-bake-summary.txt"
 
