@@ -210,8 +210,8 @@ struct Job {
 
 // The pieces of the surface over the footprint's box enlarged by what its view lines cross and what
 // shadows that; false when a cap was reached.
-bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, std::vector<SurfacePiece>& pieces,
-                 AreaSampleStats& stats) {
+bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool stopAtCap,
+                 std::vector<SurfacePiece>& pieces, AreaSampleStats& stats) {
   const double margin = reach(job.frame.toViewer, job.heightRange) + reach(job.frame.toLight, job.heightRange) +
                         1e-6 * job.lengthScale;
   Box2 box = footprintBox;
@@ -219,8 +219,8 @@ bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, std::
   box.upper = {box.upper.u + margin, box.upper.v + margin};
   const ConvexPolygon region = square(box);
   SurfaceBuildStats local;
-  buildHeightPieces(job.grooves, job.scene.baseMaterial, region, minArea, pieces, local);
-  buildWalls(job.grooves, job.scene.baseMaterial, region, job.lengthScale, pieces, local);
+  buildHeightPieces(job.grooves, job.scene.baseMaterial, region, minArea, stopAtCap, pieces, local);
+  buildWalls(job.grooves, job.scene.baseMaterial, region, job.lengthScale, stopAtCap, pieces, local);
   stats.surface.cells += local.cells;
   stats.surface.walls += local.walls;
   stats.surface.truncated = stats.surface.truncated || local.truncated;
@@ -241,7 +241,7 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
   const Box2 fpBox = boundsOf(fp);
   std::vector<SurfacePiece> pieces;
   pieces.reserve(64);
-  const bool complete = buildPieces(job, fpBox, f.minArea, pieces, stats);
+  const bool complete = buildPieces(job, fpBox, f.minArea, depth < kMaxSplitDepth, pieces, stats);
   if (!complete && depth == kMaxSplitDepth) ++stats.incomplete;
   if (!complete && depth < kMaxSplitDepth) {
     ++stats.splits;
@@ -318,7 +318,7 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
   std::vector<SurfacePiece> pieces;
   Box2 point;
   point.lower = point.upper = {0, 0};
-  if (!buildPieces(job, point, f.minArea, pieces, stats)) ++stats.incomplete;
+  if (!buildPieces(job, point, f.minArea, false, pieces, stats)) ++stats.incomplete;
   std::vector<Projected> all;
   all.reserve(pieces.size());
   for (const SurfacePiece& p : pieces) all.push_back(project(f, p));

@@ -107,10 +107,11 @@ void resolve(const Cell& cell, const ConvexPolygon& inside, const HeightPlane& s
 
 // One layer (cuts or ridges): the base plane's cell overlaid with every groove in turn.
 std::vector<Cell> buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon& region, bool cuts,
-                             double minArea, SurfaceBuildStats& stats) {
+                             double minArea, bool stopAtCap, SurfaceBuildStats& stats) {
   std::vector<Cell> cells{{region, {}, -1}};
   std::array<ConvexPolygon, kPolygonMaxVertices> outside;
   for (const StraightGroove& g : grooves) {
+    if (stopAtCap && stats.overflows > 0) break;
     if (!hasLayer(g, cuts)) continue;
     const ConvexPolygon band = clipToGroove(region, g, g.profile.front().u, g.profile.back().u);
     if (band.empty() || area(band) <= minArea) continue;
@@ -244,16 +245,18 @@ std::vector<StraightGroove> straighten(const GrooveScene& scene, const std::vect
 }
 
 void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial,
-                       const ConvexPolygon& region, double minArea, std::vector<SurfacePiece>& out,
+                       const ConvexPolygon& region, double minArea, bool stopAtCap, std::vector<SurfacePiece>& out,
                        SurfaceBuildStats& stats) {
-  const std::vector<Cell> cuts = buildLayer(grooves, region, true, minArea, stats);
+  const std::vector<Cell> cuts = buildLayer(grooves, region, true, minArea, stopAtCap, stats);
+  if (stopAtCap && stats.overflows > 0) return;
   bool anyRidge = false;
   for (const StraightGroove& g : grooves) anyRidge = anyRidge || hasLayer(g, false);
   if (!anyRidge) {
     for (const Cell& c : cuts) emit(c.polygon, c.plane, materialOf(grooves, c.owner, baseMaterial), out, stats);
     return;
   }
-  const std::vector<Cell> ridges = buildLayer(grooves, region, false, minArea, stats);
+  const std::vector<Cell> ridges = buildLayer(grooves, region, false, minArea, stopAtCap, stats);
+  if (stopAtCap && stats.overflows > 0) return;
   for (const Cell& c : cuts) {
     const Box2 cb = boundsOf(c.polygon);
     for (const Cell& r : ridges) {

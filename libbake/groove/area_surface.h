@@ -66,15 +66,16 @@ struct SurfaceBuildStats {
 };
 
 // The pieces of H over `region` (area_surface.cpp): the base plane's pieces, cut facets, ridge
-// facets and their sums; pieces of area <= minArea are left out.
+// facets and their sums; pieces of area <= minArea are left out. With `stopAtCap` the build stops at
+// the first overflow (the caller will split the footprint), else it keeps what fits.
 void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial,
-                       const ConvexPolygon& region, double minArea, std::vector<SurfacePiece>& out,
+                       const ConvexPolygon& region, double minArea, bool stopAtCap, std::vector<SurfacePiece>& out,
                        SurfaceBuildStats& stats);
 
 // The vertical walls where H jumps inside `region` (area_walls.cpp): at open-end cuts and vertical
 // profile segments, between the limits of H on both sides of the line.
 void buildWalls(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial, const ConvexPolygon& region,
-                double lengthScale, std::vector<SurfacePiece>& out, SurfaceBuildStats& stats);
+                double lengthScale, bool stopAtCap, std::vector<SurfacePiece>& out, SurfaceBuildStats& stats);
 
 // H and its material at x, the limit from the side `side` (a direction on the base plane) when x lies
 // on a line where H jumps (area_walls.cpp; also used by the point sample and the tests).

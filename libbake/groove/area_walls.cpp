@@ -209,8 +209,9 @@ SurfacePoint surfaceLimit(const std::vector<StraightGroove>& grooves, std::size_
 }
 
 void buildWalls(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial, const ConvexPolygon& region,
-                double lengthScale, std::vector<SurfacePiece>& out, SurfaceBuildStats& stats) {
+                double lengthScale, bool stopAtCap, std::vector<SurfacePiece>& out, SurfaceBuildStats& stats) {
   for (const StraightGroove& g : grooves) {
+    if (stopAtCap && stats.overflows > 0) return;
     const double first = g.profile.front().u, last = g.profile.back().u;
     // Open-end cuts: the joint line across the band.
     for (int e = 0; e < 2; ++e) {
