@@ -290,6 +290,54 @@ TEST(GrooveGrid, ArcCrossingALineIsAnIntersectionAtTheCrossing) {
   EXPECT_GE(it->upper.u, 0.66);
 }
 
+TEST(GrooveGrid, IntersectionBoxesHoldEveryPointOfTheOverlap) {
+  // Random lines and arcs: every sampled point inside two regions of a special pair lies in a box of
+  // an intersection record of that pair.
+  json grooves = json::array();
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> unit(0.2, 0.8);
+  for (int k = 0; k < 12; ++k) grooves.push_back(line(unit(random), unit(random), unit(random), unit(random)));
+  for (int k = 0; k < 6; ++k)
+    grooves.push_back(groove({{"arc", {{"centre", {unit(random), unit(random)}}, {"radius", 0.05 + 0.2 * unit(random)},
+                                        {"start", 360 * unit(random)}, {"end", 360 * unit(random)}}}}));
+  const GrooveScene scene = parseOk(sceneWith(grooves, "none", 0.02));
+  const GrooveGrid grid = buildOk(scene);
+  ASSERT_GT(gridStats(grid).intersections, 10u);
+  std::uniform_real_distribution<double> anywhere(0, 1);
+  int checked = 0;
+  for (int k = 0; k < 40000; ++k) {
+    const Vec2 x{anywhere(random), anywhere(random)};
+    std::vector<std::uint32_t> in;
+    for (std::uint32_t i = 0; i < scene.primitives.size(); ++i)
+      if (inRegion(scene, i, x)) in.push_back(i);
+    for (std::size_t a = 0; a < in.size(); ++a)
+      for (std::size_t b = a + 1; b < in.size(); ++b) {
+        bool paired = false, boxed = false;
+        for (const SpecialRecord& r : grid.records) {
+          if (r.kind != SpecialRecord::Kind::Intersection || r.primitive[0] != in[a] || r.primitive[1] != in[b]) continue;
+          paired = true;
+          boxed = boxed || (x.u >= r.lower.u && x.u <= r.upper.u && x.v >= r.lower.v && x.v <= r.upper.v);
+        }
+        if (!paired) continue;  // adjacent pieces of one groove, or parallel bands
+        ++checked;
+        EXPECT_TRUE(boxed) << in[a] << " x " << in[b] << " at (" << x.u << ", " << x.v << ")";
+      }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(GrooveGrid, SpiralTurnsThatOverlapAreIntersectionsButSmoothNeighboursAreNot) {
+  // Pitch 0.015 < the band width 0.02: each turn overlaps the next; with pitch 0.05 none do.
+  auto spiral = [](double pitch) {
+    return groove({{"spiral", {{"centre", {0.5, 0.5}}, {"startRadius", 0.1}, {"pitch", pitch}, {"turns", 3}, {"startAngle", 0}}}});
+  };
+  const GrooveGrid overlapping = buildOk(parseOk(sceneWith({spiral(0.015)})));
+  EXPECT_GT(gridStats(overlapping).intersections, 10u);
+  const GrooveGrid apart = buildOk(parseOk(sceneWith({spiral(0.05)})));
+  EXPECT_EQ(gridStats(apart).intersections, 0u);
+  EXPECT_EQ(gridStats(apart).corners, 0u);
+}
+
 TEST(GrooveGrid, RepeatingSceneWrapsBandsAndQueries) {
   // A line crossing the right border at v = 0.5: it continues at u = 0 in the wrapped copy.
   const GrooveScene scene = parseOk(sceneWith({line(0.7, 0.5, 1.2, 0.5), line(0.1, 0.3, 0.1, 0.7)}, "repeat"));
