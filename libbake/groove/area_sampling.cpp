@@ -14,9 +14,15 @@
 //   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
 // Only direct light: mirror inter-reflections (§7) are not followed in special cases yet.
 // A zero-area footprint is a point sample: the radiance of the point seen along the view line.
-// Caps: kMaxSurfacePieces pieces and kMaxWalls walls per footprint, kMaxFragments convex fragments per
-// visible piece, kPolygonMaxVertices vertices per polygon; overflows are counted (AreaSampleStats) and
-// degrade gracefully (polygon.h, area_surface.h).
+// The working region covers the footprint, what its view lines cross and what can shadow that; for a
+// light near the horizon, shadows are looked for up to kMaxLightSlope times the grooves' height range
+// away (as far as the shader's query box reaches), beyond that they are missed.
+// Caps: kMaxSurfacePieces (512) pieces and kMaxWalls (128) walls per footprint, kMaxFragments (48)
+// convex fragments per visible piece, kPolygonMaxVertices (24) vertices per polygon. Overflows are
+// counted (AreaSampleStats) and degrade gracefully: too many pieces split the footprint in quarters
+// (exact, up to three times: 64 sub-footprints), past that the pieces that do not fit are left out
+// (their light is lost); too many fragments keep a fragment whole with a weight that removes the
+// hole's area (polygon.h); a polygon out of vertices drops one (it shrinks slightly).
 #include <algorithm>
 #include <cmath>
 
@@ -182,7 +188,7 @@ Extent extentOf(const std::vector<StraightGroove>& grooves) {
 
 // How far from a point its view line and its light ray travel over the grooves' height range; a light
 // near or below the horizon is followed up to a bounded distance.
-constexpr double kMaxLightSlope = 64;
+constexpr double kMaxLightSlope = 100;  // the shader's query box reaches as far (shade.cpp)
 double reach(const Vec3& d, double heightRange) {
   const double horizontal = std::hypot(d.u, d.v);
   if (horizontal == 0) return 0;
