@@ -117,6 +117,10 @@ struct OracleFigures {
   double maxLinear = 0;
   double meanRadiance = 0;
   std::string worst;   // the worst pixel's inputs and values, for the failure message
+  // Pixels the CPU method sends to area sampling (§6), which the shader does not port yet: compared
+  // apart, and left out of the figures above.
+  double specialRmse = 0;
+  int specialMaxLevels = 0;
 };
 
 int quantised(double x) { return int(std::lround(255.0 * std::clamp(x, 0.0, 1.0))); }
@@ -152,7 +156,7 @@ class GroovesOracle : public test::GlTest {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     const groove::SeedShader oracle(baked.scene, baked.grid);
-    double squared = 0, sum = 0;
+    double squared = 0, sum = 0, specialSquared = 0;
     for (std::size_t p = 0; p < std::size_t(kSize) * kSize; ++p) {
       const float* a = &in0[p * 4];
       const float* b = &in1[p * 4];
@@ -165,8 +169,16 @@ class GroovesOracle : public test::GlTest {
       light3.maxBounces = maxBounces;
       groove::ShadeStats stats;
       const groove::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
+      if (stats.special) {
+        ++figures.special;
+        for (int k = 0; k < 3; ++k) {
+          const double got = radiance[p * 4 + std::size_t(k)], want = expected[std::size_t(k)];
+          specialSquared += (got - want) * (got - want);
+          figures.specialMaxLevels = std::max(figures.specialMaxLevels, std::abs(quantised(got) - quantised(want)));
+        }
+        continue;
+      }
       ++figures.pixels;
-      figures.special += stats.special ? 1 : 0;
       for (int k = 0; k < 3; ++k) {
         const double got = radiance[p * 4 + std::size_t(k)];
         const double d = got - expected[std::size_t(k)];
@@ -189,16 +201,25 @@ class GroovesOracle : public test::GlTest {
       figures.rmse = std::sqrt(squared / (3.0 * double(figures.pixels)));
       figures.meanRadiance = sum / (3.0 * double(figures.pixels));
     }
+    if (figures.special > 0) figures.specialRmse = std::sqrt(specialSquared / (3.0 * double(figures.special)));
     return figures;
   }
 
-  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name) {
+  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name, bool specialExpected = false) {
     RecordProperty(name + "_rmse", std::to_string(f.rmse));
     RecordProperty(name + "_max_levels", f.maxLevels);
     std::printf("[ grooves ] %s: %zu pixels (%zu special), RMSE %.3g, max |diff| %.3g linear = %d/255, mean %.3f\n",
                 name.c_str(), f.pixels, f.special, f.rmse, f.maxLinear, f.maxLevels, f.meanRadiance);
     EXPECT_GT(f.pixels, std::size_t(kSize * kSize / 8)) << "the plane covers too little of the image";
-    EXPECT_EQ(f.special, 0u) << "special-case footprints are not line sampled by the CPU method";
+    if (specialExpected) {
+      RecordProperty(name + "_special_rmse", std::to_string(f.specialRmse));
+      RecordProperty(name + "_special_max_levels", f.specialMaxLevels);
+      std::printf("[ grooves ] %s: special-case pixels (area sampled on the CPU, line sampled here): RMSE %.3g, max %d/255\n",
+                  name.c_str(), f.specialRmse, f.specialMaxLevels);
+      EXPECT_GT(f.special, 0u) << "the view should show the special case";
+    } else {
+      EXPECT_EQ(f.special, 0u) << "no special case was meant to be in view";
+    }
     EXPECT_LE(f.maxLevels, 2) << "worst pixel: " << f.worst;
     EXPECT_GT(f.meanRadiance, 0.01) << "an all-black image proves nothing";
   }
@@ -245,6 +266,20 @@ TEST_F(GroovesOracle, MirrorGrooveWithBounces) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.5f, -0.2f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.1f, -0.4f, 0.9f}, 3);
   expectWithinTwoLevels(f, "mirror");
+}
+
+// A crossing (§4.2, a special case): away from the record's box the shader must match the CPU method
+// as elsewhere; inside it the CPU samples by area (§6), not ported to the shader yet, so those pixels
+// are only measured.
+TEST_F(GroovesOracle, CrossingAwayFromTheSpecialCase) {
+  const std::string vee = R"("vee": {"points": [[-0.05, 0], [0, -0.04], [0.05, 0]]})";
+  const Baked baked = bake(sceneJson(1, vee, kGrey, "grey",
+                                     R"({"profile": "vee", "path": {"line": [[-0.5, 0.5], [1.5, 0.5]]}}, )"
+                                     R"({"profile": "vee", "path": {"line": [[0.5, -0.5], [0.5, 1.5]]}})"),
+                           "crossing");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.6f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 0);
+  expectWithinTwoLevels(f, "crossing", true);
 }
 
 // ---------------------------------------------------------------------------------------------
