@@ -60,6 +60,23 @@ TEST(GrooveAreaStiff, CrossingAtOneDegreeObliqueAgreesWithReference) {
   expectNearReference(value, referenceMean(s, f, e, l), 2e-4);
 }
 
+TEST(GrooveAreaStiff, SharpCornersAgreeWithReference) {
+  // Hairpin corners of 20° and 5°: the two arms' regions meet on a mitre line nearly along the path.
+  for (const double cornerDegrees : {20.0, 5.0}) {
+    const double turn = kPi - cornerDegrees * kPi / 180;
+    const GrooveScene s = sceneWith(polyline(
+        "box", "red", {{0.2, 0.5}, {0.5, 0.5}, {0.5 + 0.3 * std::cos(turn), 0.5 + 0.3 * std::sin(turn)}}));
+    const Footprint f = squareFootprint({0.49, 0.502}, 0.02);
+    const double theta = 50 * kPi / 180;
+    const Vec3 e{std::sin(theta) * 0.6, std::sin(theta) * 0.8, std::cos(theta)};
+    const Lighting l = lightTowards({-0.3, 0.4, 0.7});
+    SCOPED_TRACE(cornerDegrees);
+    const Rgb value = sample(s, f, e, l);
+    expectSane(value);
+    expectNearReference(value, referenceMean(s, f, e, l), 2e-4);
+  }
+}
+
 TEST(GrooveAreaStiff, GrazingViewOfAVGroove) {
   // At 85° across the groove the facet facing away is hidden and the one facing the viewer fills the
   // groove's whole width 2w on the base plane.
