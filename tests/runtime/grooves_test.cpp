@@ -268,6 +268,34 @@ TEST_F(GroovesOracle, MirrorGrooveWithBounces) {
   expectWithinTwoLevels(f, "mirror");
 }
 
+// Arcs (a closed circle, four G1 arcs) with a scale perturbation, in a repeating domain where the
+// circle crosses the edge: the shader's arc foot points, frozen perturbation and nearest-copy choice.
+TEST_F(GroovesOracle, PerturbedCircleAcrossARepeatingEdge) {
+  const std::string json = R"({"version": 1, "domain": {"size": [1, 1]}, "wrap": "repeat",
+    "profiles": {"vee": {"points": [[-0.04, 0], [0, -0.03], [0.04, 0]]}},
+    "materials": {)" + kGrey + R"(}, "base": "grey",
+    "grooves": [{"profile": "vee", "perturbation": {"kind": "scale", "amplitude": 0.4, "wavelength": 0.25},
+                 "path": {"arc": {"centre": [0.85, 0.5], "radius": 0.3, "start": 0, "end": 360}}}]})";
+  const Baked baked = bake(json, "circle_wrap");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, -0.4f, 0.9f}, {0.5f, 0.5f, 0.0f}, {-0.3f, 0.4f, 0.8f}, 0);
+  expectWithinTwoLevels(f, "circle_wrap");
+}
+
+// Stiff inputs: a view about 75 degrees from the normal and a light about 85 degrees from it (long
+// shadows, the query box stretched along the light), over ridges and cuts side by side. (A light
+// below the horizon leaves the seed's method all black: the endless base hides everything.)
+TEST_F(GroovesOracle, GrazingViewAndLight) {
+  const std::string profiles = R"("cut": {"points": [[-0.05, 0], [-0.02, -0.06], [0.02, -0.06], [0.05, 0]]},
+                                  "ridge": {"points": [[-0.03, 0], [0, 0.04], [0.03, 0]]})";
+  const Baked baked = bake(sceneJson(1, profiles, kGrey, "grey", linesAlongU({0.35, 0.65}, 1, "cut") + ", " +
+                                                                     linesAlongU({0.5}, 1, "ridge")),
+                           "grazing");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, -0.9f, 0.25f}, {0.5f, 0.55f, 0.0f}, {0.0f, -1.0f, 0.08f}, 0);
+  expectWithinTwoLevels(f, "grazing");
+}
+
 // A crossing (§4.2, a special case): away from the record's box the shader must match the CPU method
 // as elsewhere; inside it the CPU samples by area (§6), not ported to the shader yet, so those pixels
 // are only measured.
