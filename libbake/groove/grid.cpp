@@ -171,7 +171,11 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
   const std::size_t count = scene.primitives.size();
 
   std::vector<Polygon> regions(count);
-  parallelFor(count, threads, [&](std::size_t i) { regions[i] = grid_detail::regionPolygon(scene, i, cap); });
+  std::vector<grid_detail::FloatBox> boxes(count);
+  parallelFor(count, threads, [&](std::size_t i) {
+    regions[i] = grid_detail::regionPolygon(scene, i, cap);
+    boxes[i] = grid_detail::FloatBox::of(regions[i]);
+  });
 
   std::vector<std::uint32_t> primitiveCellStart, primitiveCells;
   cellListsInOrder(
@@ -194,6 +198,7 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
   inputs.scene = &scene;
   inputs.lattice = &lattice;
   inputs.regions = &regions;
+  inputs.boxes = &boxes;
   inputs.cellStart = &grid.cellStart;
   inputs.primitiveRefs = &grid.primitiveRefs;
   inputs.primitiveCellStart = &primitiveCellStart;

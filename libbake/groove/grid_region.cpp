@@ -202,6 +202,13 @@ void intersect(const Polygon& a, const Polygon& b, Vec2 shift, Overlap& out) {
   }
 }
 
+FloatBox FloatBox::of(const Polygon& polygon) {
+  auto down = [](double x) { return std::nextafter(float(x), -INFINITY); };
+  auto up = [](double x) { return std::nextafter(float(x), INFINITY); };
+  if (polygon.empty()) return {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};  // meets nothing
+  return {{down(polygon.lower.u), down(polygon.lower.v)}, {up(polygon.upper.u), up(polygon.upper.v)}};
+}
+
 double Overlap::area() const {
   // Relative to the first corner: absolute coordinates far from the origin would cancel.
   double twice = 0;

@@ -60,12 +60,24 @@ void cellsOfPolygon(const Lattice& lattice, const Polygon& polygon, std::vector<
 // Appends the stored cells that the box meets (ascending, each once).
 void cellsOfBox(const Lattice& lattice, Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& cells);
 
+// A region's bounding box rounded outwards to fp32: 16 bytes, so the boxes of 10^5 primitives stay in
+// cache while the record search tests candidate pairs.
+struct FloatBox {
+  float lower[2], upper[2];
+  static FloatBox of(const Polygon& polygon);
+  bool meets(const FloatBox& other) const {
+    return lower[0] <= other.upper[0] && other.lower[0] <= upper[0] && lower[1] <= other.upper[1] &&
+           other.lower[1] <= upper[1];
+  }
+};
+
 // The special-case records of the scene, in a fixed order: per primitive, its start end, its start
 // corner, its intersections with later primitives, its end end (grid_records.cpp).
 struct RecordInputs {
   const GrooveScene* scene = nullptr;
   const Lattice* lattice = nullptr;
   const std::vector<Polygon>* regions = nullptr;
+  const std::vector<FloatBox>* boxes = nullptr;  // of the regions
   const std::vector<std::uint32_t>* cellStart = nullptr;      // the primitive CSR already built
   const std::vector<std::uint32_t>* primitiveRefs = nullptr;
   const std::vector<std::uint32_t>* primitiveCellStart = nullptr;  // per primitive: its cells
