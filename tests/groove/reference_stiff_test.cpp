@@ -1,6 +1,7 @@
 // Stiff cases of the ray-traced reference (libbake/groove/reference.h): grazing views up to 89
 // degrees, lights at and below the horizon, grooves tiny and huge against the footprint, a crossing
-// at 1 degree and a corner folded back almost onto itself. Every result is finite and, where a closed
+// at 1 degree, a corner folded back almost onto itself, footprints of 1000 groove widths and a tiny
+// groove far out in a huge domain. Every result is finite and, where a closed
 // form exists, equal to it within the stratified sampling bound (sum of the jumps / strata per side).
 #include <cmath>
 #include <filesystem>
@@ -202,6 +203,30 @@ TEST(GrooveReferenceStiff, FootprintsUpTo1000GrooveWidthsOverRepeatingGrooves) {
   for (double side : {0.4, 4.0, 40.0}) {
     EXPECT_NEAR(renderPixel(*scene, side, 0, lightAt(0), {0.3, 0.3}), expected, 6 * spread / kStrata + 1e-6) << side;
     EXPECT_NEAR(renderPixel(*scene, side, 0, lightAt(0), {-71.3, 13.1}), expected, 6 * spread / kStrata + 1e-6) << side;
+  }
+}
+
+
+// Far from the origin in a huge domain (coordinates 5e2, features 1e-3): the V-groove's closed form
+// with masking still holds, so offsets and tolerances scale with the features, not the domain.
+TEST(GrooveReferenceStiff, TinyGrooveFarOutInAHugeDomain) {
+  const std::string text = R"({"version": 1, "domain": {"size": [1000, 1000]},
+    "profiles": {"v": {"points": [[-0.001, 0], [0, -0.001], [0.001, 0]]}},
+    "materials": {"grey": {"albedo": [0.6, 0.6, 0.6]}}, "base": "grey",
+    "grooves": [{"profile": "v", "path": {"line": [[500, 0], [500, 1000]]}}]})";
+  Result<GrooveScene> scene = parseGrooveScene(text, "huge.json");
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  const double w = 0.001, side = 0.004, beta = 20 * kDegree;
+  const Lighting light = lightAt(beta);
+  const double flat = lambert(0.6, {0, 0, 1}, light.toLight);
+  const double a = lambert(0.6, {std::sqrt(0.5), 0, std::sqrt(0.5)}, light.toLight);
+  const double b = lambert(0.6, {-std::sqrt(0.5), 0, std::sqrt(0.5)}, light.toLight);
+  for (double degrees : {0.0, 60.0}) {
+    const double shift = w * std::tan(degrees * kDegree);  // depth = w
+    const double coverA = std::min(2 * w, w + shift), coverB = std::max(0.0, w - shift);
+    const double expected = ((side - 2 * w) * flat + coverA * a + coverB * b) / side;
+    const double bound = (std::abs(flat - a) + std::abs(a - b) + std::abs(b - flat)) / kStrata;
+    EXPECT_NEAR(renderPixel(*scene, side, degrees * kDegree, light, {500, 600}), expected, bound + 1e-6) << degrees;
   }
 }
 
