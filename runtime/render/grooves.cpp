@@ -1,8 +1,9 @@
 // Grooves renderer (seed 000; formats/grooves.md). Per package drawn: decode and check the
 // BAKE_grooves arrays with libbake's reader, then upload every bufferView as it is into one immutable
 // storage buffer (each at an offset aligned for GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT and the
-// format's 256 bytes) and the grid header into a 64-byte std140 uniform block. Per instance: the mesh
-// (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/ its package needs:
+// format's 256 bytes) and the grid header and counts into an 80-byte std140 uniform block. Per
+// instance: the mesh (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/
+// its package needs:
 // mirrors compiled in only when a material mirrors, the special-case lookup only when the grid has
 // records, arrays sized to the package's longest profile.
 #include "render/grooves.h"
@@ -29,11 +30,15 @@ struct HeaderBlock {
   float originBounds[4];
   float bounds[4];
   std::int32_t cells[4];
+  std::int32_t counts[4];
 };
-static_assert(sizeof(HeaderBlock) == 64);
+static_assert(sizeof(HeaderBlock) == 80);
 
-HeaderBlock headerBlock(const groove::GroovePackageHeader& h) {
+HeaderBlock headerBlock(const groove::GroovePackage& package) {
+  const groove::GroovePackageHeader& h = package.header;
   HeaderBlock block{};
+  block.counts[0] = std::int32_t(package.primitives.size());
+  block.counts[1] = std::int32_t(package.records.size());
   block.domainCell[0] = float(h.domain[0]);
   block.domainCell[1] = float(h.domain[1]);
   block.domainCell[2] = float(h.cellSize[0]);
@@ -115,7 +120,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
         std::memcpy(bytes.data() + upload.offset[k], package.blobs[views[k]].bytes.data(), upload.size[k]);
       glCreateBuffers(1, &upload.storage);
       glNamedBufferStorage(upload.storage, GLsizeiptr(bytes.size()), bytes.data(), 0);
-      const HeaderBlock header = headerBlock(decoded.header);
+      const HeaderBlock header = headerBlock(decoded);
       glCreateBuffers(1, &upload.header);
       glNamedBufferStorage(upload.header, sizeof header, &header, 0);
       bytes_ += bytes.size() + sizeof header;

@@ -102,9 +102,7 @@ void insertFound(uint primitive) {
   }
 }
 
-void gatherPrimitives(vec2 lower, vec2 upper) {
-  gFoundCount = 0;
-  gFoundOverflow = false;
+void gatherCells(vec2 lower, vec2 upper) {
   ivec2 first, last;
   if (!cellRange(lower, upper, first, last)) return;
   for (int j = first.y; j <= last.y; ++j)
@@ -114,30 +112,61 @@ void gatherPrimitives(vec2 lower, vec2 upper) {
     }
 }
 
+// Boxes wider than this many cells both ways read only the cells on their boundary (§4.1: paths are
+// rarely shorter than a footprint, so interior cells can be omitted): a far pixel over thousands of
+// grooves costs its perimeter, not its area. Grooves lying wholly inside it are missed, as on the CPU.
+const float kBoundaryOnlyCells = 8.0;
+
+void gatherPrimitives(vec2 lower, vec2 upper) {
+  gFoundCount = 0;
+  gFoundOverflow = false;
+  vec2 cells = (upper - lower) / cellSize();
+  if (!(cells.x > kBoundaryOnlyCells && cells.y > kBoundaryOnlyCells)) {
+    gatherCells(lower, upper);
+    return;
+  }
+  gatherCells(lower, vec2(upper.x, lower.y));
+  gatherCells(vec2(upper.x, lower.y), upper);
+  gatherCells(vec2(lower.x, upper.y), upper);
+  gatherCells(lower, vec2(lower.x, upper.y));
+}
+
 bool boxesMeet(vec2 lowerA, vec2 upperA, vec2 lowerB, vec2 upperB) {
   return all(lessThanEqual(lowerA, upperB)) && all(lessThanEqual(lowerB, upperA));
 }
 
 // §4.2: does a special-case record under the box meet it (or one of its copies, when the scene
 // repeats)? Then the CPU method samples the footprint by area (§6).
+bool meetsRecord(vec2 lower, vec2 upper, uint index) {
+  GrooveRecord r = records[index];
+  int copies = wrapRepeat() ? 1 : 0;
+  for (int ci = -copies; ci <= copies; ++ci)
+    for (int cj = -copies; cj <= copies; ++cj) {
+      // The box moved by +copy domains is the record moved by -copy domains.
+      ivec2 shift = -ivec2(ci, cj) * cellCounts();
+      vec2 recordLower = relativeToCentre(r.anchor.xy, shift, r.box.xy);
+      vec2 recordUpper = relativeToCentre(r.anchor.xy, shift, r.box.zw);
+      if (boxesMeet(lower, upper, recordLower, recordUpper)) return true;
+    }
+  return false;
+}
+
+// Records anywhere under the box count; when the box covers more cells than there are records,
+// testing every record is cheaper than reading the cells.
 bool specialCaseUnder(vec2 lower, vec2 upper) {
+  vec2 cells = (upper - lower) / cellSize();
+  if (cells.x * cells.y > float(recordCount())) {
+    for (int r = 0; r < recordCount(); ++r)
+      if (meetsRecord(lower, upper, uint(r))) return true;
+    return false;
+  }
   ivec2 first, last;
   if (!cellRange(lower, upper, first, last)) return false;
-  int copies = wrapRepeat() ? 1 : 0;
   for (int j = first.y; j <= last.y; ++j)
     for (int i = first.x; i <= last.x; ++i) {
       int cell = storedCell(ivec2(i, j));
-      for (uint k = recordStart[cell]; k < recordStart[cell + 1]; ++k) {
-        GrooveRecord r = records[recordRefs[k]];
-        for (int ci = -copies; ci <= copies; ++ci)
-          for (int cj = -copies; cj <= copies; ++cj) {
-            // The box moved by +copy domains is the record moved by -copy domains.
-            ivec2 shift = -ivec2(ci, cj) * cellCounts();
-            vec2 recordLower = relativeToCentre(r.anchor.xy, shift, r.box.xy);
-            vec2 recordUpper = relativeToCentre(r.anchor.xy, shift, r.box.zw);
-            if (boxesMeet(lower, upper, recordLower, recordUpper)) return true;
-          }
-      }
+      for (uint k = recordStart[cell]; k < recordStart[cell + 1]; ++k)
+        if (meetsRecord(lower, upper, recordRefs[k])) return true;
     }
   return false;
 }

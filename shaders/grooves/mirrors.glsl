@@ -6,13 +6,18 @@
 // from -R (where lit), weighted by its footprint share (the base-line position of a ray is affine in
 // k), and while bounces remain becomes a new beam. Rays passing the section's end going up see black;
 // going down, they reach the flat base beyond it (lit unless the section shadows it). A beam that
-// does not fit on the stack is dropped, as on the CPU (same stack size).
+// does not fit on the stack, or carries less than 1e-12 of the pixel, is dropped, and at most
+// MAX_BEAM_STEPS beams are walked per section, as on the CPU (same sizes).
 #ifndef BAKE_GROOVES_MIRRORS_GLSL
 #define BAKE_GROOVES_MIRRORS_GLSL
 
 #ifdef HAS_MIRRORS
 
 #define MAX_BEAMS 64
+// Bounds of the work per section: beams walked in all, and the share x reflectance below which a
+// beam is not followed further (deep mirror cavities stay bounded, as on the CPU).
+#define MAX_BEAM_STEPS (4 * MAX_BEAMS)
+const float kNegligibleBeam = 1e-12;
 
 struct Beam {
   int facet;
@@ -55,7 +60,9 @@ vec3 catchOnFacet(FootprintLine density, Beam beam, int j, float x, float y) {
     vec3 f = directRadiance(material, facetNormal3(j), wBack);
     sum += wWeight * footprintShare(density, positionOf(ka + l0 * (kb - ka)), positionOf(ka + l1 * (kb - ka))) * f;
   }
-  if (hasMirror(material) && beam.bounce + 1 < gMaxBounces) {
+  float childShare = footprintShare(density, positionOf(ka + s0 * (kb - ka)), positionOf(ka + s1 * (kb - ka)));
+  float strongest = max(wWeight.r, max(wWeight.g, wWeight.b));
+  if (hasMirror(material) && beam.bounce + 1 < gMaxBounces && childShare * strongest > kNegligibleBeam) {
     Beam child;
     child.facet = j;
     child.t0 = s0;
@@ -132,7 +139,7 @@ vec3 mirrorBounces(FootprintLine density, vec3 toViewer) {
   // The first beams: visible portions of mirror facets, pushed in reverse so facets pop in order.
   for (int i = facetCount() - 1; i >= 0; --i) {
     if (!(gVisibleT1[i] > gVisibleT0[i]) || !hasMirror(gFacetMaterial[i])) continue;
-    float q0 = gSectionB[i] - gSectionH[i] * (eb / ew), q1 = gSectionB[i + 1] - gSectionH[i + 1] * (eb / ew);
+    float q0 = acrossCoordinate(i, eb, ew) / ew, q1 = acrossCoordinate(i + 1, eb, ew) / ew;
     Beam beam;
     beam.facet = i;
     beam.t0 = gVisibleT0[i];
@@ -145,7 +152,7 @@ vec3 mirrorBounces(FootprintLine density, vec3 toViewer) {
     pushBeam(beam);
   }
   vec3 sum = vec3(0.0);
-  while (gBeamCount > 0) {
+  for (int walkedBeams = 0; walkedBeams < MAX_BEAM_STEPS && gBeamCount > 0; ++walkedBeams) {
     Beam beam = gBeams[--gBeamCount];
     sum += traceBeam(density, beam);
   }

@@ -63,7 +63,7 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
   for (int i = 0; i < facets; ++i) {
     if (!(gVisibleT1[i] > gVisibleT0[i])) continue;
     // Base-line position seen through the facet point at t (projection along E').
-    float p0 = gSectionB[i] - gSectionH[i] * (eb / ew), p1 = gSectionB[i + 1] - gSectionH[i + 1] * (eb / ew);
+    float p0 = acrossCoordinate(i, eb, ew) / ew, p1 = acrossCoordinate(i + 1, eb, ew) / ew;
     float t0 = max(gVisibleT0[i], gLitT0[i]), t1 = min(gVisibleT1[i], gLitT1[i]);
     if (!(t1 > t0)) continue;
     float r = footprintShare(density, p0 + t0 * (p1 - p0), p0 + t1 * (p1 - p0));

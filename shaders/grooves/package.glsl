@@ -52,6 +52,7 @@ layout(std140, binding = 0) uniform GrooveHeader {
   vec4 uOriginBounds;  // grid origin u, v; 0, 0
   vec4 uBounds;        // wmax, hmax, dmax, 0
   ivec4 uCells;        // columns, rows, wrap (0/1), base material
+  ivec4 uCounts;       // primitives, records, 0, 0
 };
 
 const float kPi = 3.14159265358979;
@@ -68,6 +69,7 @@ vec2 cellSize() { return uDomainCell.zw; }
 ivec2 cellCounts() { return uCells.xy; }
 bool wrapRepeat() { return uCells.z != 0; }
 int baseMaterial() { return uCells.w; }
+int recordCount() { return uCounts.y; }
 
 // The footprint centre's cell and its offset from that cell's corner.
 ivec2 gFragCell;

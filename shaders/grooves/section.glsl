@@ -245,7 +245,9 @@ void resolveWalls() {
 }
 
 // Sweeps the breakpoints: over each interval, every band that covers it contributes its linear piece.
+// The polyline starts and ends on the base (h = 0), so an outermost vertical wall is kept.
 void buildSection() {
+  appendPoint(gBreaks[0], 0.0, kWall);
   for (int k = 0; k + 1 < gBreakCount; ++k) {
     float x0 = gBreaks[k], x1 = gBreaks[k + 1];
     gPieceCount = 0;
@@ -264,6 +266,7 @@ void buildSection() {
     }
     appendInterval(x0, x1);
   }
+  appendPoint(gBreaks[gBreakCount - 1], 0.0, kWall);
   resolveWalls();
 }
 
