@@ -86,7 +86,13 @@ void expectConservative(const GrooveScene& scene, const GrooveGrid& grid, int sa
     const Vec2 x{unit(random) * scene.domain[0], unit(random) * scene.domain[1]};
     const std::vector<std::uint32_t> refs = cellRefs(grid, cellAt(grid, x));
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-      if (!inRegion(scene, i, x)) continue;
+      // In a repeating scene a region also covers x through its copies one period away.
+      bool covered = false;
+      const int periods = scene.wrapRepeat ? 1 : 0;
+      for (int du = -periods; du <= periods; ++du)
+        for (int dv = -periods; dv <= periods; ++dv)
+          covered = covered || inRegion(scene, i, {x.u + du * scene.domain[0], x.v + dv * scene.domain[1]});
+      if (!covered) continue;
       ++inside;
       EXPECT_TRUE(std::binary_search(refs.begin(), refs.end(), std::uint32_t(i)))
           << "primitive " << i << " missing at (" << x.u << ", " << x.v << ")";
@@ -160,6 +166,7 @@ TEST(GrooveGrid, ConservativeForLinesArcsCornersAndCurves) {
   json grooves = json::array();
   grooves.push_back(line(0.05, 0.05, 0.95, 0.83));
   grooves.push_back(groove({{"polyline", {{0.1, 0.9}, {0.4, 0.6}, {0.45, 0.9}, {0.5, 0.62}}}}));  // sharp corners
+  grooves.push_back(groove({{"polyline", {{0.6, 0.05}, {0.9, 0.1}, {0.6, 0.15}, {0.9, 0.2}}}}));  // turns of 161 degrees
   grooves.push_back(groove({{"arc", {{"centre", {0.6, 0.4}}, {"radius", 0.2}, {"start", -30}, {"end", 200}}}}));
   grooves.push_back(groove({{"cubic", {{0.1, 0.1}, {0.5, 0.5}, {0.2, 0.9}, {0.9, 0.2}}}}));
   grooves.push_back(groove({{"svg", "M 0.7 0.9 L 0.9 0.9 A 0.05 0.05 0 0 0 0.9 0.8 L 0.7 0.75"}}));
@@ -360,6 +367,18 @@ TEST(GrooveGrid, RepeatingSceneWrapsBandsAndQueries) {
   grid.recordsInBox({0.09, 0.49}, {0.11, 0.51}, found);
   EXPECT_TRUE(std::find(found.begin(), found.end(), std::uint32_t(it - grid.records.begin())) != found.end());
   expectConservative(scene, grid, 20000, 5);
+}
+
+TEST(GrooveGrid, ConservativeAcrossTheBordersOfARepeatingDomain) {
+  json grooves = json::array();
+  grooves.push_back(groove({{"arc", {{"centre", {0.98, 0.97}}, {"radius", 0.12}, {"start", 10}, {"end", 280}}}}));
+  grooves.push_back(groove({{"polyline", {{0.8, 0.1}, {1.15, -0.05}, {1.1, 0.3}, {0.9, 0.25}}}}));
+  grooves.push_back(groove({{"quadratic", {{-0.2, 0.5}, {0.1, 0.9}, {0.3, 1.2}}}}));
+  grooves.push_back(line(0.3, -0.4, 0.6, 1.6));
+  const GrooveScene scene = parseOk(sceneWith(grooves, "repeat"));
+  const GrooveGrid grid = buildOk(scene);
+  expectCsrValid(grid, scene.primitives.size());
+  expectConservative(scene, grid, 30000, 13);
 }
 
 TEST(GrooveGrid, BoxQueriesAreAscendingAndDeduplicated) {
