@@ -96,21 +96,34 @@ void cellListsInOrder(std::size_t count, unsigned threads, CellsOf cellsOf, std:
   for (auto& cells : blockCells) itemCells.insert(itemCells.end(), cells.begin(), cells.end());
 }
 
-// Turns per-item cell lists into the per-cell CSR: count, prefix sum, fill in item order.
+// Turns per-item cell lists into the per-cell CSR: count, prefix sum, fill in item order. The cells
+// are split into fixed ranges, each counted and filled by one task that scans every item's list and
+// keeps its own cells; a cell's references are still written in item order, so the result is the
+// same for any split and thread count.
 Status buildCsr(std::uint64_t cellCount, const std::vector<std::uint32_t>& itemStart,
-                const std::vector<std::uint32_t>& itemCells, const char* what, std::vector<std::uint32_t>& cellStart,
-                std::vector<std::uint32_t>& refs) {
+                const std::vector<std::uint32_t>& itemCells, const char* what, unsigned threads,
+                std::vector<std::uint32_t>& cellStart, std::vector<std::uint32_t>& refs) {
   if (itemCells.size() >= UINT32_MAX)
     return unsupported(std::string("grid: more than 2^32 ") + what + " references; use a larger cell size");
+  const std::uint64_t ranges = std::max(1u, threads), span = (cellCount + ranges - 1) / ranges;
   cellStart.assign(cellCount + 1, 0);
-  for (const std::uint32_t cell : itemCells) ++cellStart[cell + 1];
+  parallelForBlocks(ranges, 1, threads, [&](std::size_t r, std::size_t) {
+    const std::uint64_t lo = r * span, hi = std::min(cellCount, lo + span);
+    for (const std::uint32_t cell : itemCells)
+      if (cell >= lo && cell < hi) ++cellStart[cell + 1];
+  });
   for (std::uint64_t c = 0; c < cellCount; ++c) cellStart[c + 1] += cellStart[c];
   std::vector<std::uint32_t> cursor(cellStart.begin(), cellStart.end() - 1);
   refs.assign(itemCells.size(), 0);
   const std::size_t items = itemStart.size() - 1;
-  for (std::size_t item = 0; item < items; ++item)
-    for (std::uint32_t k = itemStart[item]; k < itemStart[item + 1]; ++k)
-      refs[cursor[itemCells[k]]++] = static_cast<std::uint32_t>(item);
+  parallelForBlocks(ranges, 1, threads, [&](std::size_t r, std::size_t) {
+    const std::uint64_t lo = r * span, hi = std::min(cellCount, lo + span);
+    for (std::size_t item = 0; item < items; ++item)
+      for (std::uint32_t k = itemStart[item]; k < itemStart[item + 1]; ++k) {
+        const std::uint32_t cell = itemCells[k];
+        if (cell >= lo && cell < hi) refs[cursor[cell]++] = static_cast<std::uint32_t>(item);
+      }
+  });
   return {};
 }
 
@@ -190,7 +203,7 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
   grid.cells[1] = lattice.cells[1];
   grid.wrapRepeat = lattice.wrap;
   BAKE_RETURN_IF_ERROR(
-      buildCsr(grid.cellCount(), primitiveCellStart, primitiveCells, "primitive", grid.cellStart, grid.primitiveRefs));
+      buildCsr(grid.cellCount(), primitiveCellStart, primitiveCells, "primitive", threads, grid.cellStart, grid.primitiveRefs));
 
   times.cells = secondsSince(start);
   const auto recordsStart = std::chrono::steady_clock::now();
@@ -215,7 +228,7 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
         grid_detail::cellsOfBox(lattice, grid.records[r].lower, grid.records[r].upper, out);
       },
       recordCellStart, recordCells);
-  BAKE_RETURN_IF_ERROR(buildCsr(grid.cellCount(), recordCellStart, recordCells, "record", grid.recordStart, grid.recordRefs));
+  BAKE_RETURN_IF_ERROR(buildCsr(grid.cellCount(), recordCellStart, recordCells, "record", threads, grid.recordStart, grid.recordRefs));
   times.records = secondsSince(recordsStart);
   return grid;
 }
