@@ -105,6 +105,31 @@ bool meetsRecord(const GrooveScene& scene, const Box& box, const SpecialRecord& 
   return false;
 }
 
+// Footprint boxes wider than this many cells in both directions read only the cells on the box's
+// boundary (§4.1: "paths are rarely shorter than a pixel footprint, interior cells can be omitted"),
+// so the cost of a far-away pixel over thousands of grooves grows with its perimeter, not its area.
+// Grooves lying wholly inside such a footprint are missed.
+constexpr double kBoundaryOnlyCells = 8;
+
+void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::uint32_t>& out) {
+  const double cellsU = (box.upper.u - box.lower.u) / grid.cellSize.u;
+  const double cellsV = (box.upper.v - box.lower.v) / grid.cellSize.v;
+  if (!(cellsU > kBoundaryOnlyCells && cellsV > kBoundaryOnlyCells)) {
+    grid.primitivesInBox(box.lower, box.upper, out);
+    return;
+  }
+  thread_local std::vector<std::uint32_t> edge;
+  out.clear();
+  const Vec2 corners[4] = {box.lower, {box.upper.u, box.lower.v}, box.upper, {box.lower.u, box.upper.v}};
+  for (int k = 0; k < 4; ++k) {
+    const Vec2 a = corners[k], b = corners[(k + 1) % 4];
+    grid.primitivesInBox({std::min(a.u, b.u), std::min(a.v, b.v)}, {std::max(a.u, b.u), std::max(a.v, b.v)}, edge);
+    out.insert(out.end(), edge.begin(), edge.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 }  // namespace
 
 Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
@@ -113,17 +138,25 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   thread_local std::vector<std::uint32_t> found;
   thread_local std::vector<std::uint32_t> records;
   thread_local std::vector<LocalGroove> grooves;
-  grid_.primitivesInBox(box.lower, box.upper, found);
+  gatherPrimitives(grid_, box, found);
   if (stats) *stats = {false, std::uint32_t(found.size())};
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
 
   grooves.clear();
   for (std::uint32_t p : found)
     grooves.push_back(localGroove(scene_, p, nearestCopy(scene_, scene_.primitives[p], footprint.centre)));
-  grid_.recordsInBox(box.lower, box.upper, records);
-  const bool special = std::any_of(records.begin(), records.end(), [&](std::uint32_t r) {
-    return meetsRecord(scene_, box, grid_.records[r]);
-  });
+  // Records anywhere under the box count (an intersection inside a wide footprint is still one);
+  // when the box covers more cells than there are records, testing every record is cheaper.
+  const double boxCells = (box.upper.u - box.lower.u) / grid_.cellSize.u * ((box.upper.v - box.lower.v) / grid_.cellSize.v);
+  bool special = false;
+  if (boxCells > double(grid_.records.size())) {
+    special = std::any_of(grid_.records.begin(), grid_.records.end(),
+                          [&](const SpecialRecord& record) { return meetsRecord(scene_, box, record); });
+  } else {
+    grid_.recordsInBox(box.lower, box.upper, records);
+    special = std::any_of(records.begin(), records.end(),
+                          [&](std::uint32_t r) { return meetsRecord(scene_, box, grid_.records[r]); });
+  }
   if (stats) stats->special = special;
   if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);
   return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);

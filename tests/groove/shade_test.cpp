@@ -162,6 +162,30 @@ TEST(SeedShader, WrappingSceneUsesTheNearestCopy) {
   EXPECT_GT(std::abs(a[0] - flat[0]), 1e-3);
 }
 
+// A footprint many cells wide reads only the cells on its box's boundary (§4.1); long parallel
+// grooves all cross it, so the value is the one of line sampling over every groove.
+TEST(SeedShader, WideFootprintsReadTheBoxBoundaryAndFindEveryLongGroove) {
+  std::string grooves;
+  for (int k = 0; k < 25; ++k) {  // u from 0.25 to 0.73: all under the footprint
+    if (k) grooves += ", ";
+    const double u = 0.25 + 0.02 * k;
+    grooves += line("deep", "paint", {u, 0.02}, {u, 0.98});
+  }
+  const GrooveScene s = sceneOf(grooves);
+  const GrooveGrid grid = gridOf(s);
+  const Footprint wide = square({0.5, 0.5}, 0.6);
+  ASSERT_GT(wide.axis1.u / grid.cellSize.u, 8.0);
+  const Vec3 e = directionFromAngles(0.5, 0.3);
+  const Lighting l = lightTowards({0.3, -0.2, 1});
+  ShadeStats stats;
+  const Rgb value = SeedShader(s, grid).shade(wide, e, l, &stats);
+  EXPECT_EQ(stats.primitives, s.primitives.size());
+  EXPECT_FALSE(stats.special);
+  std::vector<LocalGroove> all;
+  for (std::uint32_t p = 0; p < s.primitives.size(); ++p) all.push_back(localGroove(s, p, wide.centre));
+  expectRgbNear(value, lineSampleWith(s, all, wide, e, l, SeedSettings{}), 1e-12);
+}
+
 TEST(SeedShader, RenderIsTheSameForAnyThreadCount) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.45}, {0.9, 0.55}) + ", " +
                                 line("ridge", "chrome", {0.2, 0.3}, {0.8, 0.3}));
