@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <sstream>
 
 #include "groove/grid.h"
@@ -40,7 +41,9 @@ struct Baked {
   fs::path file;
 };
 
-Baked bake(const std::string& json, const std::string& name) {
+// `node`: place the preview plane with this node (a rotation, to test the tangent frame); default:
+// the writer's node with no transform.
+Baked bake(const std::string& json, const std::string& name, std::optional<glb::Node> node = std::nullopt) {
   Baked out;
   auto scene = groove::parseGrooveScene(json, name + ".json");
   EXPECT_TRUE(scene.isOk()) << scene.status().describe();
@@ -53,6 +56,7 @@ Baked bake(const std::string& json, const std::string& name) {
   auto package = groove::buildGroovePackage(out.scene, out.grid);
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   if (!package.isOk()) return out;
+  if (node) package->nodes.push_back(*node);
   out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
   const Status written = glb::write(out.file, *package);
   EXPECT_TRUE(written.isOk()) << written.describe();
@@ -117,6 +121,7 @@ struct OracleFigures {
   double maxLinear = 0;
   double meanRadiance = 0;
   std::string worst;   // the worst pixel's inputs and values, for the failure message
+  std::vector<float> radiance;  // the shader's image, RGBA
   // Pixels the CPU method sends to area sampling (§6), which the shader does not port yet: compared
   // apart, and left out of the figures above.
   double specialRmse = 0;
@@ -129,7 +134,8 @@ class GroovesOracle : public test::GlTest {
  protected:
   // Renders the baked scene from `eye` (looking at `target`) lit from `light`, shades every covered
   // pixel on the CPU from the shader's own inputs, and returns the comparison.
-  OracleFigures compare(const Baked& baked, const Vec3& eye, const Vec3& target, const Vec3& light, int maxBounces) {
+  OracleFigures compare(const Baked& baked, const Vec3& eye, const Vec3& target, const Vec3& light, int maxBounces,
+                        const Vec3& up = {0, 0, 1}) {
     OracleFigures figures;
     Diagnostics diagnostics("bakeplay", true);
     auto scene = loadScene({baked.file}, diagnostics, [](const std::string&) { return true; });
@@ -142,7 +148,7 @@ class GroovesOracle : public test::GlTest {
     if (!prepared.isOk()) return figures;
     EXPECT_GT(renderer.gpuBytes(), 0u);
 
-    const Camera camera{eye, target, {0, 0, 1}, 0.7f, 0.01f, 100.0f};
+    const Camera camera{eye, target, up, 0.7f, 0.01f, 100.0f};
     const Light lighting{normalize(light), {1, 1, 1}};
     const FrameContext frame{*scene, camera, lighting, lookAt(camera.eye, camera.target, camera.up),
                              perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
@@ -154,6 +160,7 @@ class GroovesOracle : public test::GlTest {
     const std::vector<float> radiance = targetBuffers.read(0), in0 = targetBuffers.read(1), in1 = targetBuffers.read(2),
                              in2 = targetBuffers.read(3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    figures.radiance = radiance;
 
     const groove::SeedShader oracle(baked.scene, baked.grid);
     double squared = 0, sum = 0, specialSquared = 0;
@@ -266,6 +273,29 @@ TEST_F(GroovesOracle, MirrorGrooveWithBounces) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.5f, -0.2f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.1f, -0.4f, 0.9f}, 3);
   expectWithinTwoLevels(f, "mirror");
+}
+
+// The tangent frame: the plane turned upright by its node (90 degrees about x), seen by a camera and
+// lit by a light turned with it, must give the same image and still match the CPU method.
+TEST_F(GroovesOracle, TangentFrameFollowsTheMesh) {
+  const std::string json = sceneJson(1, R"("vee": {"points": [[-0.06, 0], [0, -0.05], [0.06, 0]]})", kGrey, "grey",
+                                     linesAlongU({0.5}, 1, "vee"));
+  glb::Node upright;
+  upright.mesh = 0;
+  upright.rotation = {std::sqrt(0.5), 0, 0, std::sqrt(0.5)};  // (x, y, z) -> (x, -z, y)
+  const Baked flat = bake(json, "frame_flat"), turned = bake(json, "frame_turned", upright);
+  ASSERT_FALSE(flat.file.empty());
+  ASSERT_FALSE(turned.file.empty());
+  auto turn = [](const Vec3& p) { return Vec3{p[0], -p[2], p[1]}; };
+  const Vec3 eye{0.55f, -0.35f, 0.75f}, target{0.5f, 0.5f, 0.0f}, light{0.2f, 0.6f, 0.7f};
+  const OracleFigures a = compare(flat, eye, target, light, 0);
+  const OracleFigures b = compare(turned, turn(eye), turn(target), turn(light), 0, turn({0, 0, 1}));
+  expectWithinTwoLevels(b, "frame_turned");
+  ASSERT_EQ(a.radiance.size(), b.radiance.size());
+  int worst = 0;
+  for (std::size_t i = 0; i < a.radiance.size(); ++i)
+    worst = std::max(worst, std::abs(quantised(a.radiance[i]) - quantised(b.radiance[i])));
+  EXPECT_LE(worst, 2) << "the turned plane looks different";
 }
 
 // Arcs (a closed circle, four G1 arcs) with a scale perturbation, in a repeating domain where the
