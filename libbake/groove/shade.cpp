@@ -50,7 +50,10 @@ Box queryBox(const GrooveScene& scene, const Footprint& f, const Vec3& toViewer,
   const Box core{{f.centre.u - eu, f.centre.v - ev}, {f.centre.u + eu, f.centre.v + ev}};
   Box box = core;
   enlargeAlong(box, core, toViewer, scene.hmax, scene.dmax);
-  enlargeAlong(box, core, toLight, scene.hmax, scene.dmax);
+  // Towards the light, a shadow ray from a cavity point of depth dmax climbs dmax before it clears
+  // the base plane: its occluders (a ridge, or the far wall of a crossing cavity) lie up to
+  // (hmax + dmax) |L_uv| / L_w away.
+  enlargeAlong(box, core, toLight, scene.hmax + scene.dmax, scene.dmax);
   return box;
 }
 
