@@ -254,6 +254,29 @@ TEST_F(GroovesOracle, ParallelSetFarAway) {
   expectWithinTwoLevels(f, "parallel_far");
 }
 
+// Very far away (footprints of tens of groove widths): more grooves under a footprint than the
+// shader's fixed arrays hold (MAX_FOUND) are dropped, so the image is only measured; it must stay
+// finite and within the range of the material.
+TEST_F(GroovesOracle, ParallelSetVeryFarIsFiniteAndMeasured) {
+  std::vector<double> vs;
+  for (int k = 0; k < 200; ++k) vs.push_back(0.01 + 0.02 * k);
+  const Baked baked = bake(sceneJson(4, R"("fine": {"points": [[-0.006, 0], [0, -0.008], [0.006, 0]]})", kGrey, "grey",
+                                     linesAlongU(vs, 4, "fine")),
+                           "parallel_very_far");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {2.0f, -30.0f, 40.0f}, {2.0f, 2.0f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
+  std::printf("[ grooves ] parallel_very_far: %zu pixels, RMSE %.3g, max %d/255 (grooves past MAX_FOUND dropped)\n",
+              f.pixels, f.rmse, f.maxLevels);
+  RecordProperty("parallel_very_far_rmse", std::to_string(f.rmse));
+  RecordProperty("parallel_very_far_max_levels", f.maxLevels);
+  EXPECT_GT(f.pixels, 0u);
+  for (float x : f.radiance) {
+    ASSERT_TRUE(std::isfinite(x));
+    ASSERT_GE(x, 0.0f);
+    ASSERT_LE(x, 1.0f);
+  }
+}
+
 TEST_F(GroovesOracle, RidgesCastShadows) {
   const Baked baked = bake(sceneJson(1, R"("ridge": {"points": [[-0.03, 0], [0, 0.05], [0.03, 0]]})", kGrey, "grey",
                                      linesAlongU({0.3, 0.5, 0.7}, 1, "ridge")),
