@@ -5,7 +5,7 @@
 // instance: the mesh (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/
 // its package needs:
 // mirrors compiled in only when a material mirrors, the special-case lookup only when the grid has
-// records, arrays sized to the package's longest profile.
+// records, arrays sized to the package's longest profile and (up to 24) its primitive count.
 #include "render/grooves.h"
 
 #include <GL/glcorearb.h>
@@ -23,6 +23,8 @@ namespace fmt = format::grooves;
 
 constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2;
 constexpr GLuint kHeaderBinding = 0;
+// Primitives kept per footprint (the shader's fixed arrays; more under one footprint are dropped).
+constexpr std::size_t kMaxFound = 24;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -74,6 +76,9 @@ std::vector<std::string> packageDefines(const groove::GroovePackage& p) {
   std::uint32_t longest = 3;
   for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
   defines.push_back("MAX_PROFILE_POINTS " + std::to_string(longest));
+  // A footprint never finds more primitives than the package holds: small packages get small arrays.
+  const std::size_t found = std::clamp<std::size_t>(p.primitives.size(), 1, kMaxFound);
+  defines.push_back("MAX_FOUND " + std::to_string(found));
   return defines;
 }
 
