@@ -7,7 +7,8 @@
 // (grid_region.cpp) is rasterised into the cells it meets, in parallel over fixed blocks of
 // primitives; a count pass, a prefix sum (cellStart) and a fill pass in primitive order then give
 // every cell its references in ascending order, whatever the thread count. Records
-// (grid_records.cpp) get the same CSR over the cells their boxes meet.
+// (grid_records.cpp) are searched through a 4x coarser grid of the same polygons, and get the same
+// CSR over the cells their boxes meet.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,6 +57,19 @@ Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Latti
   lattice.cellSize = {U / lattice.cells[0], V / lattice.cells[1]};
   lattice.wrap = scene.wrapRepeat;
   return {};
+}
+
+// The record search finds its candidate pairs through a grid of cells about four times larger: each
+// primitive then meets a handful of cells, and the whole coarse CSR stays in cache, where the fine
+// one (megabytes of mostly empty cells) would be read from memory for every primitive.
+constexpr std::uint32_t kCoarsening = 4;
+
+Lattice coarseLattice(const Lattice& fine) {
+  Lattice coarse = fine;
+  for (int axis = 0; axis < 2; ++axis)
+    coarse.cells[axis] = std::max<std::uint32_t>(1, (fine.cells[axis] + kCoarsening / 2) / kCoarsening);
+  coarse.cellSize = {fine.domain.u / coarse.cells[0], fine.domain.v / coarse.cells[1]};
+  return coarse;
 }
 
 Lattice latticeOf(const GrooveGrid& grid) {
@@ -207,15 +221,23 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
 
   times.cells = secondsSince(start);
   const auto recordsStart = std::chrono::steady_clock::now();
+  const Lattice coarse = coarseLattice(lattice);
+  std::vector<std::uint32_t> coarseItemStart, coarseItemCells, coarseCellStart, coarseRefs;
+  cellListsInOrder(
+      count, threads,
+      [&](std::size_t i, std::vector<std::uint32_t>& out) { grid_detail::cellsOfPolygon(coarse, regions[i], out); },
+      coarseItemStart, coarseItemCells);
+  BAKE_RETURN_IF_ERROR(buildCsr(std::uint64_t(coarse.cells[0]) * coarse.cells[1], coarseItemStart, coarseItemCells,
+                                "primitive", threads, coarseCellStart, coarseRefs));
   grid_detail::RecordInputs inputs;
   inputs.scene = &scene;
-  inputs.lattice = &lattice;
+  inputs.lattice = &coarse;
   inputs.regions = &regions;
   inputs.boxes = &boxes;
-  inputs.cellStart = &grid.cellStart;
-  inputs.primitiveRefs = &grid.primitiveRefs;
-  inputs.primitiveCellStart = &primitiveCellStart;
-  inputs.primitiveCells = &primitiveCells;
+  inputs.cellStart = &coarseCellStart;
+  inputs.primitiveRefs = &coarseRefs;
+  inputs.primitiveCellStart = &coarseItemStart;
+  inputs.primitiveCells = &coarseItemCells;
   inputs.cap = cap;
   inputs.threads = threads;
   grid.records = grid_detail::findRecords(inputs);

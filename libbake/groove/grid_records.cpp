@@ -15,6 +15,9 @@
 //   cross inside the overlap, else the overlap's centre (the nearest approach); the box is the
 //   bounding box of the two region polygons' intersection (exact for segments, conservative for arcs).
 // In a repeating scene the second primitive is moved by whole domain periods next to the first.
+// Primitives are visited in the order of their first cell's row (neighbouring cell lists stay in
+// cache) in parallel blocks, and their records gathered in primitive order: the same bytes for any
+// thread count.
 #include <algorithm>
 #include <cmath>
 
@@ -234,10 +237,6 @@ void recordsOfPrimitive(const RecordInputs& in, std::size_t i, std::vector<std::
   for (const std::uint32_t j : scratch) addIntersections(in, i, j, overlap, out);
   if (p.endAtEnd) out.push_back(endRecord(scene, i, false));
 }
-
-}  // namespace
-
-namespace {
 
 // Primitives in the order of the row of their first cell (a counting sort, stable by index), so that
 // consecutive work reads neighbouring cells: the cell lists are then mostly read from cache.

@@ -78,9 +78,11 @@ struct RecordInputs {
   const Lattice* lattice = nullptr;
   const std::vector<Polygon>* regions = nullptr;
   const std::vector<FloatBox>* boxes = nullptr;  // of the regions
-  const std::vector<std::uint32_t>* cellStart = nullptr;      // the primitive CSR already built
+  // A primitive CSR over `lattice` (any grid tiling the domain; the build passes a coarse one) and
+  // per primitive the cells of that grid it meets.
+  const std::vector<std::uint32_t>* cellStart = nullptr;
   const std::vector<std::uint32_t>* primitiveRefs = nullptr;
-  const std::vector<std::uint32_t>* primitiveCellStart = nullptr;  // per primitive: its cells
+  const std::vector<std::uint32_t>* primitiveCellStart = nullptr;
   const std::vector<std::uint32_t>* primitiveCells = nullptr;
   double cap = 0;
   unsigned threads = 1;
