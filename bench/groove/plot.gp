@@ -1,13 +1,14 @@
 # Groove shading at a glance, from the results of bench/groove/run.sh (groove.csv):
 #   1. every view: the method's RMSE against the reference, over the method's time per frame, with the
 #      reference's own noise floor (RMSE between two seeds) of the same view as open circles;
-#   2. the V-groove view sweep: RMSE / noise floor against the view angle (criterion: 3);
-#   3. the dense parallel set: RMSE / noise floor against footprint / groove width (criterion: 3).
+#   2. the V-groove view sweep: RMSE / noise floor against the view angle (criterion: 3), the method as
+#      shipped and as the seed publishes it (uniform footprint segment);
+#   3. the dense parallel set: the same against footprint / groove width.
 # Usage: gnuplot -e "dir='build-bench/results'" bench/groove/plot.gp
 # groove.csv: 1 case, 2 scene, 3 width, 4 pixels, 5 view_theta, 6 view_phi, 7 light_theta, 8 light_phi,
 #   9 bounces, 10 footprint_over_width, 11 special_fraction, 12 method_frame_s, 13 method_ns_per_pixel,
 #   14 reference_frame_s, 15 reference_ns_per_pixel, 16 cost_ratio, 17 rmse, 18 relative_mse, 19 p99,
-#   20 max, 21 noise_floor, 22 rmse_over_floor
+#   20 max, 21 noise_floor, 22 rmse_over_floor, 23 seed_rmse, 24 seed_rmse_over_floor
 if (!exists("dir")) dir = 'build-bench/results'
 set datafile separator ','
 set terminal pngcairo size 1800,560 enhanced font ',10'
@@ -32,11 +33,13 @@ set logscale y
 set xlabel 'view angle from the normal (degrees)'
 set ylabel 'RMSE / reference noise floor'
 set arrow 1 from graph 0, first 3 to graph 1, first 3 nohead dt 3 lw 1.5 lc 'black'
-plot rows('vgroove-view-sweep') using 5:($22 > 0 ? $22 : 1e-3) with linespoints pt 7 title 'seed method'
+plot rows('vgroove-view-sweep') using 5:($22 > 0 ? $22 : 1e-3) with linespoints pt 7 title 'method (trapezoid density)', \
+     rows('vgroove-view-sweep') using 5:($24 > 0 ? $24 : 1e-3) with linespoints pt 6 dt 2 title "seed's segment"
 
 set title 'dense parallel grooves: error against footprint / width'
 set logscale xy
 set xlabel 'footprint / groove width'
-plot rows('dense-parallel') using 10:($22 > 0 ? $22 : 1e-3) with linespoints pt 7 title 'seed method'
+plot rows('dense-parallel') using 10:($22 > 0 ? $22 : 1e-3) with points pt 7 title 'method (trapezoid density)', \
+     rows('dense-parallel') using 10:($24 > 0 ? $24 : 1e-3) with points pt 6 title "seed's segment"
 unset arrow 1
 unset multiplot
