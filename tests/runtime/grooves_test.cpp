@@ -24,6 +24,8 @@
 #include "io/glb.h"
 #include "play/validate.h"
 #include "render/grooves.h"
+#include "render/target.h"
+#include "runtime/golden_image.h"
 #include "runtime/gl_test.h"
 #include "scene/scene.h"
 #include "support/golden.h"
@@ -361,6 +363,40 @@ TEST_F(GroovesOracle, CrossingAwayFromTheSpecialCase) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.6f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 0);
   expectWithinTwoLevels(f, "crossing", true);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole bakeplay path: the registry picks the grooves renderer, the frame goes through the
+// runtime's offscreen target and PNG encoding (sRGB, as `bakeplay render` writes it), and must match
+// its golden picture.
+
+TEST_F(GroovesOracle, BakeplayFrameMatchesTheGoldenImage) {
+  const std::string materials =
+      kGrey + R"(, "mirror": {"albedo": [0.1, 0.1, 0.1], "specular": [0, 0, 0], "shininess": 1, "mirror": [0.9, 0.8, 0.7]})";
+  const std::string profiles = R"("vee": {"points": [[-0.06, 0], [0, -0.05], [0.06, 0]]},
+                                  "ridge": {"points": [[-0.03, 0], [0, 0.05], [0.03, 0]]})";
+  const std::string grooves = linesAlongU({0.25}, 1, "vee") + ", " + linesAlongU({0.5}, 1, "ridge") +
+                              R"(, {"profile": "vee", "material": "mirror", "path": {"line": [[-0.5, 0.75], [1.5, 0.75]]}})";
+  const Baked baked = bake(sceneJson(1, profiles, materials, "grey", grooves), "golden");
+  ASSERT_FALSE(baked.file.empty());
+  Diagnostics diagnostics("bakeplay", true);
+  auto scene = loadScene({baked.file}, diagnostics, [](const std::string&) { return true; });
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  gl::ShaderLibrary shaders;
+  auto renderer = SceneRenderer::create(*scene, RendererRegistry::builtIn(), shaders);
+  ASSERT_TRUE(renderer.isOk()) << renderer.status().describe();
+  ASSERT_EQ(renderer->techniques(), std::vector<std::string>{format::grooves::kExtension});
+  auto target = OffscreenTarget::create(kSize, kSize);
+  ASSERT_TRUE(target.isOk()) << target.status().describe();
+  const Camera camera{{0.5f, -0.4f, 0.9f}, {0.5f, 0.5f, 0.0f}, {0, 0, 1}, 0.7f, 0.01f, 100.0f};
+  Light light;
+  light.direction = normalize(Vec3{0.1f, 0.6f, 0.6f});
+  const FrameContext frame{*scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
+                           perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
+  target->bind();
+  renderer->drawFrame(frame);
+  const Image image = encodeSrgb(target->readLinearRgba());
+  EXPECT_TRUE(test::matchesGoldenImage(image, "runtime/grooves-vee-ridge-mirror.v1.png"));
 }
 
 // ---------------------------------------------------------------------------------------------
