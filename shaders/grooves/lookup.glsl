@@ -1,8 +1,8 @@
 // Finding the grooves that can affect a footprint (seed 000 §4.1-§4.2), as libbake/groove/shade.cpp:
 // the bounding box of the footprint parallelogram enlarged by wmax, and by hmax and dmax projected
 // along the view and the light (a ridge stands up to hmax |D_uv| / D_w towards D, a cavity point
-// reaches dmax |D_uv| / D_w away from it; the reach is capped at kMaxReach heights so a light at the
-// horizon stays finite). The cells under the box give the primitives (CSR cellStart/primitiveRefs,
+// reaches dmax |D_uv| / D_w away from it; towards the light, occluders of a cavity point reach
+// (hmax + dmax); the reach is capped at kMaxReach heights so a light at the horizon stays finite). The cells under the box give the primitives (CSR cellStart/primitiveRefs,
 // kept sorted and unique here) and the special-case records (recordStart/recordRefs). Each primitive
 // is then straightened at the footprint centre (shade_local.h localGroove): its tangent line at the
 // foot point of F, the perturbation frozen there. Coordinates are relative to F throughout.
@@ -35,12 +35,13 @@ int gGrooveCount;
 bool gFoundOverflow;  // more primitives under the box than MAX_FOUND: the furthest in index are dropped
 
 // The query box, relative to F.
-void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 coreUpper, vec3 d) {
+void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 coreUpper, vec3 d, float ridge,
+                   float cavity) {
   float horizontal = length(d.xy);
   if (horizontal == 0.0) return;
   float reach = d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
   vec2 unit = d.xy / horizontal;
-  float alongs[2] = float[2](uBounds.y * reach, -uBounds.z * reach);
+  float alongs[2] = float[2](ridge * reach, -cavity * reach);
   for (int k = 0; k < 2; ++k) {
     lower = min(lower, min(coreLower + alongs[k] * unit, coreUpper + alongs[k] * unit));
     upper = max(upper, max(coreLower + alongs[k] * unit, coreUpper + alongs[k] * unit));
@@ -52,8 +53,10 @@ void queryBox(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 toLight, out vec2 lowe
   vec2 coreLower = -extent, coreUpper = extent;
   lower = coreLower;
   upper = coreUpper;
-  queryBoxAlong(lower, upper, coreLower, coreUpper, toViewer);
-  queryBoxAlong(lower, upper, coreLower, coreUpper, toLight);
+  queryBoxAlong(lower, upper, coreLower, coreUpper, toViewer, uBounds.y, uBounds.z);
+  // Towards the light, the shadow ray of a cavity point climbs dmax before it clears the base plane:
+  // its occluders lie up to (hmax + dmax) |L_uv| / L_w away.
+  queryBoxAlong(lower, upper, coreLower, coreUpper, toLight, uBounds.y + uBounds.z, uBounds.z);
 }
 
 // The cell range (absolute cell indices) the relative box covers, per axis; false when empty.
