@@ -6,8 +6,9 @@
 // the CPU oracle libbake/groove/shade.cpp computes it (line_sampling.glsl). The output is linear
 // radiance (formats/groove-scene.md "Rendering model"), no ambient term and no tone mapping.
 // Variants: HAS_NORMALS, HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES
-// (the package has records), MAX_PROFILE_POINTS n, SHADING_INPUTS (also writes F, A1, A2, E, L to
-// colour attachments 1-3, for testing against the CPU method).
+// (the package has records), MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1,
+// A2, E, L to colour attachments 1-3 and the special-case flag to alpha, for testing against the CPU
+// method).
 #include "line_sampling.glsl"
 
 in vec3 vWorldPosition;
@@ -59,6 +60,7 @@ void main() {
   if (toViewer.z > 0.0) radiance = shadeFootprint(centre, axis1, axis2, toViewer);  // the back side: black
   fragColor = vec4(radiance, 1.0);
 #ifdef SHADING_INPUTS
+  fragColor.a = gSpecialCase ? 2.0 : 1.0;  // the §4.2 dispatch, to compare with the CPU's
   inputsCentreAxis1 = vec4(centre, axis1);
   inputsAxis2View = vec4(axis2, toViewer.xy);
   inputsViewLight = vec4(toViewer.z, gLightDir);
