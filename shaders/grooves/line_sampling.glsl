@@ -123,7 +123,8 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   if (gFoundCount == 0) return flatBase;
   gGrooveCount = gFoundCount;
   for (int i = 0; i < gFoundCount; ++i) gGrooves[i] = localGroove(gFound[i]);
-#ifdef HAS_SPECIAL_CASES
+#if defined(HAS_SPECIAL_CASES) && defined(SHADING_INPUTS)
+  // Only reported for now (area sampling is not ported), so only looked up where it is reported.
   gSpecialCase = specialCaseUnder(lower, upper);
 #endif
   return lineSample(axis1, axis2, toViewer, flatBase);
