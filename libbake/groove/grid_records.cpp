@@ -13,7 +13,8 @@
 //   radius check keeps at the band's edge. Candidate pairs come from shared cells (each primitive
 //   pairs with the later primitives of its cells), never from all pairs. The point is where the paths
 //   cross inside the overlap, else the overlap's centre (the nearest approach); the box is the
-//   bounding box of the two region polygons' intersection (exact for segments, conservative for arcs).
+//   bounding box of the two region polygons' intersection (exact for segments, conservative for arcs;
+//   arcs whose annuli cannot meet are never paired).
 // In a repeating scene the second primitive is moved by whole domain periods next to the first.
 // Primitives are visited in the order of their first cell's row (neighbouring cell lists stay in
 // cache) in parallel blocks, and their records gathered in primitive order: the same bytes for any
@@ -173,12 +174,25 @@ bool boxesMeet(const Polygon& a, const Polygon& b, Vec2 shift) {
          b.lower.v + shift.v <= a.upper.v;
 }
 
+// An arc's region lies in its annulus |distance to the centre - radius| <= wmax. Two annuli that
+// cannot meet rule out an overlap that the arcs' hull polygons (wider than the band by the chord's
+// bulge) would report: adjacent turns of a record's spiral are the common case.
+bool annuliApart(const GrooveScene& scene, std::size_t i, std::size_t j, Vec2 shift) {
+  const Primitive& a = scene.primitives[i];
+  const Primitive& b = scene.primitives[j];
+  if (a.kind != Primitive::Kind::Arc || b.kind != Primitive::Kind::Arc) return false;
+  const double reach = grooveWidth(scene, i) + grooveWidth(scene, j);
+  const Vec2 d = sub(add(b.centre, shift), a.centre);
+  const double distance = std::sqrt(dot(d, d));
+  return std::abs(a.radius - b.radius) - distance > reach || distance - (a.radius + b.radius) > reach;
+}
+
 void addIntersection(const RecordInputs& in, std::size_t i, std::size_t j, Vec2 shift, Overlap& overlap,
                      std::vector<SpecialRecord>& out) {
   const GrooveScene& scene = *in.scene;
   const Polygon& regionA = (*in.regions)[i];
   const Polygon& regionB = (*in.regions)[j];
-  if (!boxesMeet(regionA, regionB, shift)) return;
+  if (!boxesMeet(regionA, regionB, shift) || annuliApart(scene, i, j, shift)) return;
   intersect(regionA, regionB, shift, overlap);
   const double w = std::min(grooveWidth(scene, i), grooveWidth(scene, j));
   if (overlap.count < 3 || std::abs(overlap.area()) <= kMinOverlap * w * w) return;

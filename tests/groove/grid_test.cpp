@@ -343,6 +343,10 @@ TEST(GrooveGrid, SpiralTurnsThatOverlapAreIntersectionsButSmoothNeighboursAreNot
   const GrooveGrid apart = buildOk(parseOk(sceneWith({spiral(0.05)})));
   EXPECT_EQ(gridStats(apart).intersections, 0u);
   EXPECT_EQ(gridStats(apart).corners, 0u);
+  // Pitch 0.025 leaves gaps of 0.005 between the bands, less than the bulge of the arcs' hull polygons
+  // over their chords: the turns are still apart (a record's grooves).
+  const GrooveGrid close = buildOk(parseOk(sceneWith({spiral(0.025)})));
+  EXPECT_EQ(gridStats(close).intersections, 0u);
 }
 
 TEST(GrooveGrid, RepeatingSceneWrapsBandsAndQueries) {
