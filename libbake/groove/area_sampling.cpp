@@ -110,13 +110,17 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
                  FragmentSet& visible) {
   const Projected& me = all[i];
   visible.add(intersect(me.screen, footprint));
+  Box2 bounds = visible.bounds();  // kept up to date: it only changes with a subtraction
   for (std::size_t j = 0; j < all.size() && visible.count > 0; ++j) {
     const Projected& other = all[j];
-    if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(visible.bounds())) continue;
+    if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds)) continue;
     const ConvexPolygon overlap = intersect(other.screen, me.screen);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
-    if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) visible.subtract(other.screen);
+    if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) {
+      visible.subtract(other.screen);
+      bounds = visible.bounds();
+    }
   }
 }
 
@@ -135,15 +139,19 @@ ConvexPolygon shadowOnScreen(const Frame& f, const Projected& receiver, const Pr
 // The lit part of `part` (visible fragments of piece i).
 void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, FragmentSet& part) {
   const Projected& me = all[i];
+  Box2 bounds = part.bounds();  // kept up to date: it only changes with a subtraction
   for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
     const ConvexPolygon shadow = shadowOnScreen(f, me, other);
-    if (!shadow.empty() && !boundsOf(shadow).overlaps(part.bounds())) continue;
+    if (!shadow.empty() && !boundsOf(shadow).overlaps(bounds)) continue;
     const ConvexPolygon overlap = intersect(shadow, me.screen);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec3 p = seenPoint(f, me, centroid(overlap));
-    if (lightDistance(other, p) > f.depthTolerance) part.subtract(shadow);
+    if (lightDistance(other, p) > f.depthTolerance) {
+      part.subtract(shadow);
+      bounds = part.bounds();
+    }
   }
 }
 
@@ -196,15 +204,6 @@ double reach(const Vec3& d, double heightRange) {
   return heightRange * slope;
 }
 
-ConvexPolygon square(const Box2& b) {
-  ConvexPolygon p;
-  p.add(b.lower);
-  p.add({b.upper.u, b.lower.v});
-  p.add(b.upper);
-  p.add({b.lower.u, b.upper.v});
-  return p;
-}
-
 // What every (sub-)footprint of one sample shares.
 struct Job {
   const GrooveScene& scene;
@@ -214,16 +213,47 @@ struct Job {
   double heightRange = 0, lengthScale = 0;
 };
 
-// The pieces of the surface over the footprint's box enlarged by what its view lines cross and what
-// shadows that; false when a cap was reached.
+// The horizontal shift per unit of height along d (d / d_w, bounded like reach()).
+Vec2 shiftPerHeight(const Vec3& d) {
+  const double horizontal = std::hypot(d.u, d.v);
+  if (horizontal == 0) return {0, 0};
+  const double k = reach(d, 1) / horizontal;
+  return {k * d.u, k * d.v};
+}
+
+// The working region: the footprint's box (slightly enlarged) swept both ways along the view and along
+// the light over the grooves' height range, and boxed. It holds the points seen in the footprint
+// (x = x' + (h / E_w) E_uv), what hides them and what shadows them. Both ways, not only towards the
+// viewer and the light: a piece's occlusion of another is decided at one point of their overlap, and
+// that decision needs the pieces whole on both sides (a one-sided sweep changed some samples). This
+// box is smaller than the footprint's box grown by both reaches in every direction (each reach only
+// counts along its own direction), and its 4 edges keep the base plane's cells cheap to clip against.
+ConvexPolygon workingRegion(const Job& job, const Box2& footprintBox) {
+  const double e = 1e-6 * job.lengthScale;
+  const Vec2 view = shiftPerHeight(job.frame.toViewer), light = shiftPerHeight(job.frame.toLight);
+  const double sweep[2] = {-job.heightRange, job.heightRange};
+  Box2 b;
+  for (const double cu : {footprintBox.lower.u - e, footprintBox.upper.u + e})
+    for (const double cv : {footprintBox.lower.v - e, footprintBox.upper.v + e})
+      for (const double h : sweep)
+        for (const double k : sweep) {
+          const Vec2 x{cu + h * view.u + k * light.u, cv + h * view.v + k * light.v};
+          b.lower = {std::min(b.lower.u, x.u), std::min(b.lower.v, x.v)};
+          b.upper = {std::max(b.upper.u, x.u), std::max(b.upper.v, x.v)};
+        }
+  ConvexPolygon region;
+  region.add(b.lower);
+  region.add({b.upper.u, b.lower.v});
+  region.add(b.upper);
+  region.add({b.lower.u, b.upper.v});
+  return region;
+}
+
+// The pieces of the surface over the working region of the footprint box; false when a cap was
+// reached.
 bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool stopAtCap,
                  std::vector<SurfacePiece>& pieces, AreaSampleStats& stats) {
-  const double margin = reach(job.frame.toViewer, job.heightRange) + reach(job.frame.toLight, job.heightRange) +
-                        1e-6 * job.lengthScale;
-  Box2 box = footprintBox;
-  box.lower = {box.lower.u - margin, box.lower.v - margin};
-  box.upper = {box.upper.u + margin, box.upper.v + margin};
-  const ConvexPolygon region = square(box);
+  const ConvexPolygon region = workingRegion(job, footprintBox);
   SurfaceBuildStats local;
   buildHeightPieces(job.grooves, job.scene.baseMaterial, region, minArea, stopAtCap, pieces, local);
   buildWalls(job.grooves, job.scene.baseMaterial, region, job.lengthScale, stopAtCap, pieces, local);
@@ -245,8 +275,11 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
   Frame f = job.frame;
   f.minArea = 1e-13 * footprintArea;
   const Box2 fpBox = boundsOf(fp);
-  std::vector<SurfacePiece> pieces;
-  pieces.reserve(64);
+  // Per-thread scratch, reused from pixel to pixel (a split footprint refills it; its own pieces are
+  // no longer needed then).
+  thread_local std::vector<SurfacePiece> pieces;
+  thread_local std::vector<Projected> all;
+  pieces.clear();
   const bool complete = buildPieces(job, fpBox, f.minArea, depth < kMaxSplitDepth, pieces, stats);
   if (!complete && depth == kMaxSplitDepth) ++stats.incomplete;
   if (!complete && depth < kMaxSplitDepth) {
@@ -261,12 +294,11 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
       }
     return sum;
   }
-  std::vector<Projected> all;
-  all.reserve(pieces.size());
+  all.clear();
   for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
 
   Rgb sum{0, 0, 0};
-  FragmentSet visible;
+  thread_local FragmentSet visible;
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;

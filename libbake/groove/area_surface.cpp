@@ -40,8 +40,8 @@ HeightPlane facetPlane(const StraightGroove& g, Vec2 a, Vec2 b) {
   return {a.v - slope * (footB + a.u), slope * g.binormal.u, slope * g.binormal.v};
 }
 
-std::vector<Strip> stripsOf(const StraightGroove& g, bool cuts) {
-  std::vector<Strip> strips;
+void stripsOf(const StraightGroove& g, bool cuts, std::vector<Strip>& strips) {
+  strips.clear();
   for (std::size_t k = 0; k + 1 < g.profile.size(); ++k) {
     const Vec2 a = g.profile[k], b = g.profile[k + 1];
     if (b.u <= a.u) continue;  // a vertical segment has no strip (its wall is built elsewhere)
@@ -52,7 +52,6 @@ std::vector<Strip> stripsOf(const StraightGroove& g, bool cuts) {
     }
     strips.push_back({a.u, b.u, part, part ? facetPlane(g, a, b) : HeightPlane{}});
   }
-  return strips;
 }
 
 bool hasLayer(const StraightGroove& g, bool cuts) {
@@ -64,10 +63,29 @@ bool hasLayer(const StraightGroove& g, bool cuts) {
 }
 
 ConvexPolygon clipToGroove(ConvexPolygon p, const StraightGroove& g, double b0, double b1) {
-  p = clip(p, g.joint[0]);
-  p = clip(p, g.joint[1]);
-  p = clip(p, g.atLeast(b0));
-  return clip(p, g.atMost(b1));
+  clipInPlace(p, g.joint[0]);
+  clipInPlace(p, g.joint[1]);
+  clipInPlace(p, g.atLeast(b0));
+  clipInPlace(p, g.atMost(b1));
+  return p;
+}
+
+enum class Side { inside, outside, across };
+
+// Where polygon p lies with respect to a convex polygon given by its edges' half-planes.
+Side sideOf(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int edgeCount) {
+  bool inside = true;
+  for (int e = 0; e < edgeCount; ++e) {
+    bool allIn = true, allOut = true;
+    for (int i = 0; i < p.count; ++i) {
+      const double d = edges[e].distance(p.vertex[i]);
+      allIn = allIn && d >= 0;
+      allOut = allOut && d <= 0;
+    }
+    if (allOut) return Side::outside;
+    inside = inside && allIn;
+  }
+  return inside ? Side::inside : Side::across;
 }
 
 // The half-plane where plane a <= plane b.
@@ -106,9 +124,12 @@ void resolve(const Cell& cell, const ConvexPolygon& inside, const HeightPlane& s
 }
 
 // One layer (cuts or ridges): the base plane's cell overlaid with every groove in turn.
-std::vector<Cell> buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon& region, bool cuts,
-                             double minArea, bool stopAtCap, SurfaceBuildStats& stats) {
-  std::vector<Cell> cells{{region, {}, -1}};
+// `cells` and `next` are the caller's (per-thread buffers reused from sample to sample).
+void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon& region, bool cuts, double minArea,
+                bool stopAtCap, std::vector<Cell>& cells, std::vector<Cell>& next, SurfaceBuildStats& stats) {
+  thread_local std::vector<Strip> strips;
+  cells.clear();
+  cells.push_back({region, {}, -1});
   std::array<ConvexPolygon, kPolygonMaxVertices> outside;
   for (const StraightGroove& g : grooves) {
     if (stopAtCap && stats.overflows > 0) break;
@@ -116,18 +137,44 @@ std::vector<Cell> buildLayer(const std::vector<StraightGroove>& grooves, const C
     const ConvexPolygon band = clipToGroove(region, g, g.profile.front().u, g.profile.back().u);
     if (band.empty() || area(band) <= minArea) continue;
     const Box2 bandBox = boundsOf(band);
-    const std::vector<Strip> strips = stripsOf(g, cuts);
-    std::vector<Cell> next;
-    next.reserve(cells.size() * 2);
+    std::array<HalfPlane, kPolygonMaxVertices> bandEdges;
+    const int bandEdgeCount = edgeHalfPlanes(band, bandEdges);
+    stripsOf(g, cuts, strips);
+    next.clear();
     for (const Cell& cell : cells) {
-      if (!boundsOf(cell.polygon).overlaps(bandBox) || area(intersect(cell.polygon, band)) <= minArea) {
+      if (!boundsOf(cell.polygon).overlaps(bandBox)) {
         pushCell(next, cell.polygon, cell.plane, cell.owner, minArea, stats);
         continue;
       }
-      const int n = subtract(cell.polygon, band, minArea, outside);
-      for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);
+      // A cell inside every edge of the band has nothing outside it (subtract would find no piece),
+      // one outside some edge misses it: both without clipping.
+      const Side side = sideOf(cell.polygon, bandEdges, bandEdgeCount);
+      if (side == Side::outside || (side == Side::across && area(intersect(cell.polygon, band)) <= minArea)) {
+        pushCell(next, cell.polygon, cell.plane, cell.owner, minArea, stats);
+        continue;
+      }
+      if (side == Side::across) {
+        const int n = subtract(cell.polygon, band, minArea, outside);
+        for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);
+      }
+      // The joint lines once per cell, then each strip's two lines (the same clips as clipToGroove);
+      // strips that miss the cell's range across the groove are skipped.
+      ConvexPolygon jointed = cell.polygon;
+      clipInPlace(jointed, g.joint[0]);
+      clipInPlace(jointed, g.joint[1]);
+      if (jointed.empty()) continue;
+      double bLow = 1e300, bHigh = -1e300;
+      for (int i = 0; i < jointed.count; ++i) {
+        const double b = g.across(jointed.vertex[i]);
+        bLow = std::min(bLow, b);
+        bHigh = std::max(bHigh, b);
+      }
+      const double slack = 1e-9 * (std::abs(bLow) + std::abs(bHigh) + (bHigh - bLow));
       for (const Strip& s : strips) {
-        const ConvexPolygon inside = clipToGroove(cell.polygon, g, s.b0, s.b1);
+        if (s.b1 < bLow - slack || s.b0 > bHigh + slack) continue;
+        ConvexPolygon inside = jointed;
+        clipInPlace(inside, g.atLeast(s.b0));
+        clipInPlace(inside, g.atMost(s.b1));
         if (inside.empty()) continue;
         if (!s.takesPart)
           pushCell(next, inside, cell.plane, cell.owner, minArea, stats);
@@ -137,7 +184,6 @@ std::vector<Cell> buildLayer(const std::vector<StraightGroove>& grooves, const C
     }
     cells.swap(next);
   }
-  return cells;
 }
 
 Vec3 unitNormalOf(const HeightPlane& p) {
@@ -247,7 +293,8 @@ std::vector<StraightGroove> straighten(const GrooveScene& scene, const std::vect
 void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial,
                        const ConvexPolygon& region, double minArea, bool stopAtCap, std::vector<SurfacePiece>& out,
                        SurfaceBuildStats& stats) {
-  const std::vector<Cell> cuts = buildLayer(grooves, region, true, minArea, stopAtCap, stats);
+  thread_local std::vector<Cell> cuts, ridges, scratch;
+  buildLayer(grooves, region, true, minArea, stopAtCap, cuts, scratch, stats);
   if (stopAtCap && stats.overflows > 0) return;
   bool anyRidge = false;
   for (const StraightGroove& g : grooves) anyRidge = anyRidge || hasLayer(g, false);
@@ -255,7 +302,7 @@ void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t b
     for (const Cell& c : cuts) emit(c.polygon, c.plane, materialOf(grooves, c.owner, baseMaterial), out, stats);
     return;
   }
-  const std::vector<Cell> ridges = buildLayer(grooves, region, false, minArea, stopAtCap, stats);
+  buildLayer(grooves, region, false, minArea, stopAtCap, ridges, scratch, stats);
   if (stopAtCap && stats.overflows > 0) return;
   for (const Cell& c : cuts) {
     const Box2 cb = boundsOf(c.polygon);

@@ -80,19 +80,12 @@ Box2 boundsOf(const ConvexPolygon& p) {
   return b;
 }
 
-ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
-  ConvexPolygon out;
+namespace {
+
+// Sutherland-Hodgman on one edge, with the distances of p's vertices to the line already known.
+void clipWithDistances(const ConvexPolygon& p, const std::array<double, kPolygonMaxVertices>& d, ConvexPolygon& out) {
+  out.count = 0;
   out.truncated = p.truncated;
-  if (p.count == 0) return out;
-  std::array<double, kPolygonMaxVertices> d;
-  bool allInside = true, allOutside = true;
-  for (int i = 0; i < p.count; ++i) {
-    d[i] = h.distance(p.vertex[i]);
-    allInside = allInside && d[i] >= 0;
-    allOutside = allOutside && d[i] <= 0;
-  }
-  if (allInside) return p;
-  if (allOutside) return out;
   // Consecutive equal vertices (a crossing that rounds onto an end) are kept once: a zero-length edge
   // has no direction and would make a useless half-plane of a hole's edge.
   auto addDistinct = [&out](Vec2 x) {
@@ -100,7 +93,7 @@ ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
     out.add(x);
   };
   for (int i = 0; i < p.count; ++i) {
-    const int j = (i + 1) % p.count;
+    const int j = i + 1 == p.count ? 0 : i + 1;
     if (d[i] >= 0) addDistinct(p.vertex[i]);
     // A crossing strictly between the two ends.
     if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
@@ -112,10 +105,46 @@ ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
   if (out.count > 1 && out.vertex[0].u == out.vertex[out.count - 1].u && out.vertex[0].v == out.vertex[out.count - 1].v)
     --out.count;
   if (out.count < 3) out.count = 0;
+}
+
+// -1: p lies outside h (boundary included), 1: inside, 0: crossed (d holds the distances).
+int sideOf(const ConvexPolygon& p, const HalfPlane& h, std::array<double, kPolygonMaxVertices>& d) {
+  bool allInside = true, allOutside = true;
+  for (int i = 0; i < p.count; ++i) {
+    d[i] = h.distance(p.vertex[i]);
+    allInside = allInside && d[i] >= 0;
+    allOutside = allOutside && d[i] <= 0;
+  }
+  return allInside ? 1 : allOutside ? -1 : 0;
+}
+
+}  // namespace
+
+ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
+  ConvexPolygon out;
+  out.truncated = p.truncated;
+  if (p.count == 0) return out;
+  std::array<double, kPolygonMaxVertices> d;
+  const int side = sideOf(p, h, d);
+  if (side > 0) return p;
+  if (side < 0) return out;
+  clipWithDistances(p, d, out);
   return out;
 }
 
-namespace {
+void clipInPlace(ConvexPolygon& p, const HalfPlane& h) {
+  if (p.count == 0) return;
+  std::array<double, kPolygonMaxVertices> d;
+  const int side = sideOf(p, h, d);
+  if (side > 0) return;
+  if (side < 0) {
+    p.count = 0;
+    return;
+  }
+  ConvexPolygon out;
+  clipWithDistances(p, d, out);
+  p = out;
+}
 
 // The half-planes of a convex polygon's edges, leaving out edges too short to have a reliable
 // direction (rounding leaves such slivers where clip lines pass through vertices): the neighbouring
@@ -126,20 +155,18 @@ int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVert
   const double shortest = 1e-12 * size;
   int n = 0;
   for (int i = 0; i < p.count; ++i) {
-    const Vec2 a = p.vertex[i], c = p.vertex[(i + 1) % p.count];
+    const Vec2 a = p.vertex[i], c = p.vertex[i + 1 == p.count ? 0 : i + 1];
     if (std::max(std::abs(c.u - a.u), std::abs(c.v - a.v)) <= shortest) continue;
     out[n++] = leftOf(a, c);
   }
   return n;
 }
 
-}  // namespace
-
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper) {
   std::array<HalfPlane, kPolygonMaxVertices> edges;
   const int n = edgeHalfPlanes(clipper, edges);
   ConvexPolygon out = p;
-  for (int i = 0; i < n && !out.empty(); ++i) out = clip(out, edges[i]);
+  for (int i = 0; i < n && !out.empty(); ++i) clipInPlace(out, edges[i]);
   if (out.empty()) out.count = 0;
   return out;
 }
@@ -147,7 +174,7 @@ ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper) {
 bool contains(const ConvexPolygon& p, Vec2 x) {
   if (p.empty()) return false;
   for (int i = 0; i < p.count; ++i)
-    if (leftOf(p.vertex[i], p.vertex[(i + 1) % p.count]).distance(x) < 0) return false;
+    if (leftOf(p.vertex[i], p.vertex[i + 1 == p.count ? 0 : i + 1]).distance(x) < 0) return false;
   return true;
 }
 
@@ -162,7 +189,7 @@ int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
     const HalfPlane outside{{-inside.normal.u, -inside.normal.v}, -inside.offset};
     const ConvexPolygon piece = clip(rest, outside);
     if (!piece.empty() && area(piece) > minArea) pieces[n++] = piece;
-    rest = clip(rest, inside);
+    clipInPlace(rest, inside);
   }
   return n;
 }

@@ -27,9 +27,24 @@ struct HalfPlane {
 HalfPlane leftOf(Vec2 a, Vec2 b);
 
 struct ConvexPolygon {
-  std::array<Vec2, kPolygonMaxVertices> vertex{};
+  // Only the first `count` vertices are set: the rest is neither initialised nor copied (polygons are
+  // made and copied in the inner loops of the sampler, mostly with far fewer vertices than the cap).
+  union {
+    std::array<Vec2, kPolygonMaxVertices> vertex;
+  };
   int count = 0;
   bool truncated = false;  // a vertex was dropped for lack of room (the polygon shrank slightly)
+
+  ConvexPolygon() {}
+  ConvexPolygon(const ConvexPolygon& o) : count(o.count), truncated(o.truncated) {
+    for (int i = 0; i < o.count; ++i) vertex[i] = o.vertex[i];
+  }
+  ConvexPolygon& operator=(const ConvexPolygon& o) {
+    count = o.count;
+    truncated = o.truncated;
+    for (int i = 0; i < o.count; ++i) vertex[i] = o.vertex[i];
+    return *this;
+  }
 
   bool empty() const { return count < 3; }
   void add(Vec2 x);  // drops x (and sets `truncated`) when full
@@ -50,6 +65,10 @@ struct Box2 {
 Box2 boundsOf(const ConvexPolygon& p);
 
 ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h);
+void clipInPlace(ConvexPolygon& p, const HalfPlane& h);  // p = clip(p, h), without copying when unchanged
+// The half-planes of a counter-clockwise polygon's edges that intersect() and subtract() use: edges
+// shorter than 1e-12 of the polygon's size are left out (their direction is rounding noise).
+int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVertices>& out);
 // `clipper` counter-clockwise.
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper);
 bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary included

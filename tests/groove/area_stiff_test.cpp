@@ -162,8 +162,9 @@ TEST(GrooveAreaStiff, FootprintHundredGrooveWidthsOverAGrid) {
 }
 
 TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
-  // A light 1.4° above the horizon: whatever may shadow the footprint lies up to 40 groove depths away,
-  // so even an eighth of the footprint sees about 64 crossings of a dense grid.
+  // A light 1° above the horizon, along the grid's diagonal: whatever may shadow the footprint lies up
+  // to 57 groove depths away, across both families of grooves, so even an eighth of the footprint
+  // sees dozens of crossings of a dense grid.
   std::string grooves;
   for (int i = 0; i < 13; ++i) {
     const double x = 1.7 + 0.05 * i;
@@ -171,7 +172,7 @@ TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
   }
   const GrooveScene s = sceneWith(grooves, 4);
   AreaSampleStats stats;
-  const Lighting l = lightTowards({1, 0.3, 0.025});
+  const Lighting l = lightTowards({1, 1, 0.025});
   const Rgb value = sample(s, squareFootprint({2, 2}, 0.04), {0, 0, 1}, l, &stats);
   EXPECT_GT(stats.incomplete, 0u) << stats.surface.cells << " " << stats.splits;
   // Dropped pieces only take light away: the value stays between 0 and the brightest piece's radiance.
