@@ -105,6 +105,19 @@ bool occludesLight(const Frame& f, const Projected& p) {
   return f.lightAllOccluders ? std::abs(p.facingLight) > 1e-12 : p.facingLight > 1e-12;
 }
 
+// True when no vertex of `other` lies strictly on the side of me's plane that me's normal points to.
+// Then, for a piece me facing the viewer (the light), other hides (shadows) none of it: the view line
+// (light ray) from a point of me leaves on that side. The full test would reach the same verdict at
+// the cost of a clip and a subtraction; this keeps the pair count of the two loops below small (the
+// ground behind the facets, a facet behind the ground).
+bool behindPlaneOf(const Projected& me, const Projected& other) {
+  const SurfacePiece& a = *me.piece;
+  const SurfacePiece& b = *other.piece;
+  for (int k = 0; k < b.count; ++k)
+    if (dot(a.normal, b.vertex[k]) - a.planeOffset > 0) return false;
+  return true;
+}
+
 // The visible part of piece i inside the footprint: its projection minus the pieces in front.
 void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ConvexPolygon& footprint,
                  FragmentSet& visible) {
@@ -113,7 +126,8 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
   Box2 bounds = visible.bounds();  // kept up to date: it only changes with a subtraction
   for (std::size_t j = 0; j < all.size() && visible.count > 0; ++j) {
     const Projected& other = all[j];
-    if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds)) continue;
+    if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds) || behindPlaneOf(me, other))
+      continue;
     const ConvexPolygon overlap = intersect(other.screen, me.screen);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
@@ -143,6 +157,7 @@ void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, F
   for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
+    if (me.facingLight > 0 && behindPlaneOf(me, other)) continue;
     const ConvexPolygon shadow = shadowOnScreen(f, me, other);
     if (!shadow.empty() && !boundsOf(shadow).overlaps(bounds)) continue;
     const ConvexPolygon overlap = intersect(shadow, me.screen);
@@ -325,7 +340,8 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
                         const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats) {
   stats = {};
   if (!(toViewer.w > 0)) return {0, 0, 0};
-  const std::vector<StraightGroove> straight = straighten(scene, grooves, footprint.centre);
+  thread_local std::vector<StraightGroove> straight;  // per-thread, reused from sample to sample
+  straighten(scene, grooves, footprint.centre, straight);
   const Extent extent = extentOf(straight);
 
   // The footprint around the origin.

@@ -131,6 +131,7 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
   cells.clear();
   cells.push_back({region, {}, -1});
   std::array<ConvexPolygon, kPolygonMaxVertices> outside;
+  ConvexPolygon inBand;
   for (const StraightGroove& g : grooves) {
     if (stopAtCap && stats.overflows > 0) break;
     if (!hasLayer(g, cuts)) continue;
@@ -149,14 +150,16 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
       // A cell inside every edge of the band has nothing outside it (subtract would find no piece),
       // one outside some edge misses it: both without clipping.
       const Side side = sideOf(cell.polygon, bandEdges, bandEdgeCount);
-      if (side == Side::outside || (side == Side::across && area(intersect(cell.polygon, band)) <= minArea)) {
+      int n = 0;
+      if (side == Side::across) {
+        n = subtract(cell.polygon, band, minArea, outside, inBand);  // inBand: intersect(cell, band)
+        if (area(inBand) <= minArea) n = -1;
+      }
+      if (side == Side::outside || n < 0) {
         pushCell(next, cell.polygon, cell.plane, cell.owner, minArea, stats);
         continue;
       }
-      if (side == Side::across) {
-        const int n = subtract(cell.polygon, band, minArea, outside);
-        for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);
-      }
+      for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);
       // The joint lines once per cell, then each strip's two lines (the same clips as clipToGroove);
       // strips that miss the cell's range across the groove are skipped.
       ConvexPolygon jointed = cell.polygon;
@@ -197,7 +200,7 @@ void emit(const ConvexPolygon& polygon, const HeightPlane& plane, std::size_t ma
     ++stats.overflows;
     return;
   }
-  SurfacePiece piece;
+  SurfacePiece& piece = out.emplace_back();  // built in place: a piece is large
   piece.count = polygon.count;
   for (int i = 0; i < polygon.count; ++i)
     piece.vertex[i] = {polygon.vertex[i].u, polygon.vertex[i].v, plane.at(polygon.vertex[i])};
@@ -207,7 +210,6 @@ void emit(const ConvexPolygon& polygon, const HeightPlane& plane, std::size_t ma
   piece.material = material;
   stats.truncated = stats.truncated || polygon.truncated;
   ++stats.cells;
-  out.push_back(piece);
 }
 
 std::size_t materialOf(const std::vector<StraightGroove>& grooves, int owner, std::size_t baseMaterial) {
@@ -251,10 +253,17 @@ HalfPlane StraightGroove::atMost(double b) const {
 std::vector<StraightGroove> straighten(const GrooveScene& scene, const std::vector<LocalGroove>& grooves,
                                        Vec2 centre) {
   std::vector<StraightGroove> out;
-  out.reserve(grooves.size());
+  straighten(scene, grooves, centre, out);
+  return out;
+}
+
+void straighten(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, Vec2 centre,
+                std::vector<StraightGroove>& out) {
+  out.resize(grooves.size());
   for (std::size_t i = 0; i < grooves.size(); ++i) {
     const LocalGroove& l = grooves[i];
-    StraightGroove g;
+    StraightGroove& g = out[i];
+    g.profile.clear();
     g.order = i;
     g.primitive = l.primitive;
     g.material = l.material;
@@ -285,9 +294,7 @@ std::vector<StraightGroove> straighten(const GrooveScene& scene, const std::vect
       }
       g.profile.push_back(point);
     }
-    out.push_back(std::move(g));
   }
-  return out;
 }
 
 void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial,

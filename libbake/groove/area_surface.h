@@ -38,6 +38,9 @@ struct StraightGroove {
 // the domain period that brings it nearest).
 std::vector<StraightGroove> straighten(const GrooveScene& scene, const std::vector<LocalGroove>& grooves,
                                        Vec2 centre);
+// The same into `out`, reusing its storage (no allocation once it has grown).
+void straighten(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, Vec2 centre,
+                std::vector<StraightGroove>& out);
 
 // A plane h = h0 + gu u + gv v over the base plane.
 struct HeightPlane {

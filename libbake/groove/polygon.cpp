@@ -180,10 +180,16 @@ bool contains(const ConvexPolygon& p, Vec2 x) {
 
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces) {
+  ConvexPolygon inside;
+  return subtract(p, hole, minArea, pieces, inside);
+}
+
+int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
+             std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest) {
   std::array<HalfPlane, kPolygonMaxVertices> edges;
   const int count = edgeHalfPlanes(hole, edges);
   int n = 0;
-  ConvexPolygon rest = p;
+  rest = p;
   for (int i = 0; i < count && !rest.empty(); ++i) {
     const HalfPlane& inside = edges[i];
     const HalfPlane outside{{-inside.normal.u, -inside.normal.v}, -inside.offset};
@@ -191,6 +197,7 @@ int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
     if (!piece.empty() && area(piece) > minArea) pieces[n++] = piece;
     clipInPlace(rest, inside);
   }
+  if (rest.empty()) rest.count = 0;
   return n;
 }
 

@@ -78,6 +78,10 @@ bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary
 // edges shorter than 1e-12 of the polygon's size are ignored (their direction is rounding noise).
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces);
+// The same, also giving what is left of p inside the hole: the very polygon intersect(p, hole) returns
+// (the same clips in the same order), so a caller needing both clips once.
+int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
+             std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest);
 
 // A set of disjoint convex fragments with weights (the visible, lit part of a piece). The capacity is
 // fixed; when a subtraction would need more room, the fragment is kept whole and its weight lowered
