@@ -12,17 +12,22 @@
 //   subtracted from the visible part.
 // - reflection (§6.4, Eq. 1): r_i = (area of the visible, lit part on the base plane) / footprint area,
 //   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
+// Both tests first compare the other piece with the piece's plane: wholly behind it, it can neither
+// hide nor shadow the piece; wholly in front, the one-point test's verdict is known and the clip
+// against the piece is skipped.
 // Only direct light: mirror inter-reflections (§7) are not followed in special cases yet.
 // A zero-area footprint is a point sample: the radiance of the point seen along the view line.
-// The working region covers the footprint, what its view lines cross and what can shadow that; for a
-// light near the horizon, shadows are looked for up to kMaxLightSlope times the grooves' height range
-// away (as far as the shader's query box reaches), beyond that they are missed.
+// The working region covers the footprint, what its view lines cross and what can shadow that, as a
+// box (workingRegion below); for a light near the horizon, shadows are looked for up to kMaxLightSlope
+// times the grooves' height range away (as far as the shader's query box reaches), beyond that they
+// are missed.
 // Caps: kMaxSurfacePieces (512) pieces and kMaxWalls (128) walls per footprint, kMaxFragments (48)
 // convex fragments per visible piece, kPolygonMaxVertices (24) vertices per polygon. Overflows are
 // counted (AreaSampleStats) and degrade gracefully: too many pieces split the footprint in quarters
 // (exact, up to three times: 64 sub-footprints), past that the pieces that do not fit are left out
 // (their light is lost); too many fragments keep a fragment whole with a weight that removes the
-// hole's area (polygon.h); a polygon out of vertices drops one (it shrinks slightly).
+// hole's area (polygon.h); a polygon out of vertices drops one (it shrinks slightly). Buffers are
+// per-thread and reused, so a footprint (not point) sample allocates nothing once they have grown.
 #include <algorithm>
 #include <cmath>
 
@@ -118,6 +123,18 @@ bool behindPlaneOf(const Projected& me, const Projected& other) {
   return true;
 }
 
+// True when every vertex of `other` lies more than `margin` on the side of me's plane that me's normal
+// points to. Then, for me facing the viewer (the light), wherever the two overlap on the screen (in
+// the shadow), other is in front by more than the margin, which is the verdict the one-point test
+// would give: the subtraction can go ahead without clipping the two against each other.
+bool inFrontOfPlaneOf(const Projected& me, const Projected& other, double margin) {
+  const SurfacePiece& a = *me.piece;
+  const SurfacePiece& b = *other.piece;
+  for (int k = 0; k < b.count; ++k)
+    if (!(dot(a.normal, b.vertex[k]) - a.planeOffset > margin)) return false;
+  return true;
+}
+
 // The visible part of piece i inside the footprint: its projection minus the pieces in front.
 void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ConvexPolygon& footprint,
                  FragmentSet& visible) {
@@ -128,6 +145,11 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
     const Projected& other = all[j];
     if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds) || behindPlaneOf(me, other))
       continue;
+    if (inFrontOfPlaneOf(me, other, f.depthTolerance)) {
+      visible.subtract(other.screen);  // drops nothing where they do not overlap
+      bounds = visible.bounds();
+      continue;
+    }
     const ConvexPolygon overlap = intersect(other.screen, me.screen);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
@@ -160,6 +182,11 @@ void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, F
     if (me.facingLight > 0 && behindPlaneOf(me, other)) continue;
     const ConvexPolygon shadow = shadowOnScreen(f, me, other);
     if (!shadow.empty() && !boundsOf(shadow).overlaps(bounds)) continue;
+    if (me.facingLight > 0 && inFrontOfPlaneOf(me, other, f.depthTolerance)) {
+      part.subtract(shadow);  // drops nothing where they do not overlap
+      bounds = part.bounds();
+      continue;
+    }
     const ConvexPolygon overlap = intersect(shadow, me.screen);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec3 p = seenPoint(f, me, centroid(overlap));
