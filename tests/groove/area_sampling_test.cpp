@@ -296,5 +296,42 @@ TEST(GrooveAreaSampling, ViewsWithPixelEdgesOnPieceEdgesAgreeWithReference) {
   }
 }
 
+// The surface is built only over a working region around each footprint (the footprint swept along
+// the view and the light over the grooves' height range), so the sample must not depend on that
+// region: a footprint's value is the area-weighted mean of its quarters' values (each quarter has its
+// own, smaller region), and a groove beyond the region's reach changes nothing. Views, lights and
+// scenes with ridges over cuts, walls and crossings.
+TEST(GrooveAreaSampling, SampleDoesNotDependOnTheWorkingRegion) {
+  const std::vector<std::string> scenes = {
+      line("ridge", "green", {0.5, 0.1}, {0.5, 0.9}) + ", " + line("v", "red", {0.1, 0.45}, {0.9, 0.55}),
+      line("v", "red", {0.1, 0.5}, {0.9, 0.5}) + ", " + line("box", "shiny", {0.5, 0.5}, {0.5, 0.9}),
+      line("v", "shiny", {0.5, 0.1}, {0.5, 0.9}) + ", " + line("box", "red", {0.1, 0.3}, {0.9, 0.7})};
+  const std::string far = line("box", "green", {0.2, 0.1}, {0.2, 0.9});  // 0.3 away: out of reach
+  const Footprint f{{0.497, 0.503}, {0.012, 0.003}, {-0.002, 0.014}};
+  for (std::size_t k = 0; k < scenes.size(); ++k)
+    for (const double theta : {0.0, 0.5, 1.1})
+      for (const Vec3 toLight : {Vec3{-0.3, 0.5, 0.7}, Vec3{0.6, -0.2, 0.3}, Vec3{0.1, 0.2, 0.9}}) {
+        SCOPED_TRACE(testing::Message() << "scene " << k << " theta " << theta << " light " << toLight.u);
+        const GrooveScene s = sceneWith(scenes[k]);
+        const Vec3 e{std::sin(theta) * std::cos(0.7), std::sin(theta) * std::sin(0.7), std::cos(theta)};
+        const Lighting l = lightTowards(toLight);
+        const Rgb whole = sample(s, f, e, l);
+        Rgb quarters{0, 0, 0};
+        const Vec2 h1{0.5 * f.axis1.u, 0.5 * f.axis1.v}, h2{0.5 * f.axis2.u, 0.5 * f.axis2.v};
+        for (const double s1 : {-0.5, 0.5})
+          for (const double s2 : {-0.5, 0.5}) {
+            const Footprint q{{f.centre.u + s1 * h1.u + s2 * h2.u, f.centre.v + s1 * h1.v + s2 * h2.v}, h1, h2};
+            const Rgb v = sample(s, q, e, l);
+            for (int c = 0; c < 3; ++c) quarters[c] += 0.25 * v[c];
+          }
+        const GrooveScene withFar = sceneWith(scenes[k] + ", " + far);
+        const Rgb farAdded = sample(withFar, f, e, l);
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(quarters[c], whole[c], 1e-12);
+          EXPECT_NEAR(farAdded[c], whole[c], 1e-14);
+        }
+      }
+}
+
 }  // namespace
 }  // namespace bake::groove

@@ -192,5 +192,47 @@ TEST(GroovePolygon, FragmentOverflowDegradesGracefully) {
   EXPECT_NEAR(set.weightedArea(), expected, 1e-12);
 }
 
+// The in-place clip and the subtraction's inner part are the very polygons clip() and intersect()
+// give (the sampler relies on it to clip once where it used to clip twice), and copies carry exactly
+// the vertices that are set.
+TEST(GroovePolygon, InPlaceClipAndSubtractionRestMatchClipAndIntersect) {
+  ConvexPolygon p;
+  for (int k = 0; k < 7; ++k) p.add({std::cos(0.9 * k), 0.8 * std::sin(0.9 * k)});
+  makeCounterClockwise(p);
+  ConvexPolygon hole;
+  hole.add({-0.3, -0.4});
+  hole.add({0.6, -0.2});
+  hole.add({0.5, 0.7});
+  hole.add({-0.2, 0.3});
+  for (const HalfPlane& h : {HalfPlane{{1, 0.2}, 0.1}, HalfPlane{{0, 1}, 2}, HalfPlane{{0, 1}, -2}}) {
+    const ConvexPolygon expected = clip(p, h);
+    ConvexPolygon got = p;
+    clipInPlace(got, h);
+    ASSERT_EQ(got.count, expected.count);
+    for (int i = 0; i < got.count; ++i) {
+      EXPECT_EQ(got.vertex[i].u, expected.vertex[i].u);
+      EXPECT_EQ(got.vertex[i].v, expected.vertex[i].v);
+    }
+  }
+  std::array<ConvexPolygon, kPolygonMaxVertices> pieces, again;
+  ConvexPolygon rest;
+  const int n = subtract(p, hole, 0, pieces, rest);
+  EXPECT_EQ(subtract(p, hole, 0, again), n);
+  const ConvexPolygon inside = intersect(p, hole);
+  ASSERT_EQ(rest.count, inside.count);
+  for (int i = 0; i < rest.count; ++i) {
+    EXPECT_EQ(rest.vertex[i].u, inside.vertex[i].u);
+    EXPECT_EQ(rest.vertex[i].v, inside.vertex[i].v);
+  }
+  double sum = area(rest);
+  for (int i = 0; i < n; ++i) sum += area(pieces[i]);
+  EXPECT_NEAR(sum, area(p), 1e-14);
+  const ConvexPolygon copy = rest;
+  ConvexPolygon assigned;
+  assigned = copy;
+  EXPECT_EQ(assigned.count, rest.count);
+  EXPECT_EQ(area(assigned), area(rest));
+}
+
 }  // namespace
 }  // namespace bake::groove
