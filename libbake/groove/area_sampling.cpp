@@ -29,6 +29,7 @@
 // hole's area (polygon.h); a polygon out of vertices drops one (it shrinks slightly). Buffers are
 // per-thread and reused, so a footprint (not point) sample allocates nothing once they have grown.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "groove/area_surface.h"
@@ -140,7 +141,9 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
                  FragmentSet& visible) {
   const Projected& me = all[i];
   visible.add(intersect(me.screen, footprint));
-  Box2 bounds = visible.bounds();  // kept up to date: it only changes with a subtraction
+  Box2 bounds = visible.bounds();
+  std::array<HalfPlane, kPolygonMaxVertices> meEdges;  // me.screen clips every overlap below
+  const int meEdgeCount = edgeHalfPlanes(me.screen, meEdges);  // kept up to date: it only changes with a subtraction
   for (std::size_t j = 0; j < all.size() && visible.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds) || behindPlaneOf(me, other))
@@ -150,7 +153,7 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
       bounds = visible.bounds();
       continue;
     }
-    const ConvexPolygon overlap = intersect(other.screen, me.screen);
+    const ConvexPolygon overlap = intersect(other.screen, meEdges, meEdgeCount);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
     if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) {
@@ -176,6 +179,8 @@ ConvexPolygon shadowOnScreen(const Frame& f, const Projected& receiver, const Pr
 void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, FragmentSet& part) {
   const Projected& me = all[i];
   Box2 bounds = part.bounds();  // kept up to date: it only changes with a subtraction
+  std::array<HalfPlane, kPolygonMaxVertices> meEdges;  // me.screen clips every overlap below
+  const int meEdgeCount = edgeHalfPlanes(me.screen, meEdges);
   for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
@@ -187,7 +192,7 @@ void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, F
       bounds = part.bounds();
       continue;
     }
-    const ConvexPolygon overlap = intersect(shadow, me.screen);
+    const ConvexPolygon overlap = intersect(shadow, meEdges, meEdgeCount);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec3 p = seenPoint(f, me, centroid(overlap));
     if (lightDistance(other, p) > f.depthTolerance) {

@@ -165,6 +165,10 @@ int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVert
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper) {
   std::array<HalfPlane, kPolygonMaxVertices> edges;
   const int n = edgeHalfPlanes(clipper, edges);
+  return intersect(p, edges, n);
+}
+
+ConvexPolygon intersect(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int n) {
   ConvexPolygon out = p;
   for (int i = 0; i < n && !out.empty(); ++i) clipInPlace(out, edges[i]);
   if (out.empty()) out.count = 0;
@@ -188,6 +192,11 @@ int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest) {
   std::array<HalfPlane, kPolygonMaxVertices> edges;
   const int count = edgeHalfPlanes(hole, edges);
+  return subtract(p, edges, count, minArea, pieces, rest);
+}
+
+int subtract(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int count,
+             double minArea, std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest) {
   int n = 0;
   rest = p;
   for (int i = 0; i < count && !rest.empty(); ++i) {
@@ -214,12 +223,15 @@ void FragmentSet::add(const ConvexPolygon& p, double weight) {
 void FragmentSet::subtract(const ConvexPolygon& hole) {
   if (hole.empty()) return;
   const Box2 holeBox = boundsOf(hole);
+  std::array<HalfPlane, kPolygonMaxVertices> edges;  // once for every fragment
+  const int edgeCount = edgeHalfPlanes(hole, edges);
   std::array<ConvexPolygon, kPolygonMaxVertices> pieces;
+  ConvexPolygon inside;
   const int original = count;
   for (int i = 0; i < original; ++i) {
     Fragment& f = fragment[i];
     if (f.polygon.empty() || !boundsOf(f.polygon).overlaps(holeBox)) continue;
-    const ConvexPolygon overlap = intersect(f.polygon, hole);
+    const ConvexPolygon overlap = intersect(f.polygon, edges, edgeCount);
     const double removed = area(overlap);
     if (overlap.empty() || removed <= minArea) continue;
     const double whole = area(f.polygon);
@@ -230,7 +242,7 @@ void FragmentSet::subtract(const ConvexPolygon& hole) {
     // A fragment of weight < 1 stands for itself minus holes that could not be cut out; the new hole
     // is taken to miss those, so the fragment's weighted area drops by exactly `removed`.
     const double remaining = std::max(0.0, f.weight * whole - removed);
-    const int n = groove::subtract(f.polygon, hole, minArea, pieces);
+    const int n = groove::subtract(f.polygon, edges, edgeCount, minArea, pieces, inside);
     if (n == 0) {
       f.polygon.count = 0;
     } else if (count + n - 1 <= kMaxFragments) {

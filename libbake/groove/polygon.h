@@ -71,6 +71,8 @@ void clipInPlace(ConvexPolygon& p, const HalfPlane& h);  // p = clip(p, h), with
 int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVertices>& out);
 // `clipper` counter-clockwise.
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper);
+// The same with the clipper's edgeHalfPlanes() already known (a clipper used many times).
+ConvexPolygon intersect(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int n);
 bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary included
 
 // p minus hole (hole counter-clockwise) as at most hole.count disjoint convex pieces, written to
@@ -82,6 +84,9 @@ int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
 // (the same clips in the same order), so a caller needing both clips once.
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest);
+// The same with the hole's edgeHalfPlanes() already known.
+int subtract(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int count,
+             double minArea, std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest);
 
 // A set of disjoint convex fragments with weights (the visible, lit part of a piece). The capacity is
 // fixed; when a subtraction would need more room, the fragment is kept whole and its weight lowered
