@@ -4,10 +4,10 @@
 // the median time per frame of the method, the reference's time at --spp samples per pixel, the
 // method's error against the reference (RMSE, relative MSE, 99th percentile), and the reference's own
 // noise floor: the RMSE between two reference renders with different seeds. The criterion of the
-// method is an RMSE within 3x that floor at 50x less cost per pixel. The method runs as we ship it
-// (exact trapezoid footprint density, curved sections on arcs; --straight turns the latter off) and,
-// for comparison, as the seed publishes it (uniform footprint segment, grooves straightened at the
-// footprint): its RMSE is the seed_rmse column. Writes groove.csv (one row per view) and, with
+// method is an RMSE within 3x that floor at 50x less cost per pixel. The method runs as the runtime
+// shader computes it (exact trapezoid footprint density, grooves straightened at the footprint;
+// --curved adds the CPU-only curved sections on arcs) and, for comparison, as the seed publishes it
+// (uniform footprint segment): its RMSE is the seed_rmse column. Writes groove.csv (one row per view) and, with
 // --images, EXR images of the method and the reference; progress on stderr.
 #include <algorithm>
 #include <chrono>
@@ -42,7 +42,7 @@ struct Options {
   int repeats = 3;
   int threads = 2;
   bool quick = false;  // first view of every case, 64 spp
-  bool straight = false;  // the method without curved sections
+  bool curved = false;  // the method with curved sections on arcs
 };
 
 // One rendering to measure: a scene, a window of it, a pixel count across, a view, a light.
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", o.repeats, "method renders per view (the median is kept)");
   app.add_option("--threads", o.threads, "threads for both renderers");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
-  app.add_flag("--straight", o.straight, "the method without curved sections (grooves straightened at the footprint)");
+  app.add_flag("--curved", o.curved, "the method with curved sections on arcs (CPU only, not in the shader yet)");
   CLI11_PARSE(app, argc, argv);
   if (o.quick) o.spp = std::min(o.spp, 64);
 
@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     lighting.maxBounces = job.bounces;
 
     SeedSettings ours;
-    ours.curvedSections = !o.straight;
+    ours.curvedSections = o.curved;
     SeedSettings published;
     published.density = FootprintDensity::SeedSegment;
     published.curvedSections = false;
