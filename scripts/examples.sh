@@ -64,6 +64,19 @@ hat="$here/pipelines/hatching"
   --camera -0.1,1.7,6.9:-0.1,0,0 --light -0.5,0.7,0.6 --frames 20 --compare-standard \
   --report "$out/hatching-scene.report.json" -o "$out/hatching-scene.png"
 
+# Grooves (pipelines/grooves): floor tiles with grout, a vinyl record and an engraved plate baked by
+# groovebake into groove grids and drawn with the seed's groove shading; the plate is timed beside
+# standard Blinn-Phong shading of the same plane.
+grv="$here/pipelines/grooves"
+for scene in tiles record plate; do
+  "$bin/groovebake/groovebake" "$grv/$scene.json" -o "$out/grooves-$scene.glb" --report "$out/grooves-$scene.report.json" -q
+done
+"$bin/bakeplay/bakeplay" validate -q "$out/grooves-tiles.glb" "$out/grooves-record.glb" "$out/grooves-plate.glb"
+"$bin/bakeplay/bakeplay" render -q "$out/grooves-tiles.glb" --size 1024x768 -o "$out/grooves-tiles.png"
+"$bin/bakeplay/bakeplay" render -q "$out/grooves-record.glb" --size 1024x768 -o "$out/grooves-record.png"
+"$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --frames 10 --compare-standard \
+  --report "$out/grooves-plate.render.json" -o "$out/grooves-plate.png"
+
 "$bin/bakeplay/bakeplay" render -q -o "$out/bundled-example.png" --frames 30 --report "$out/bundled-example.report.json"
 echo "rendered: $(cd "$out" && ls *.png | tr '\n' ' ')(in out/examples/)"
 echo "open a window on a package: $bin/bakeplay/bakeplay view pipelines/example/wavy-grid.glb"
