@@ -181,12 +181,12 @@ int main(int argc, char** argv) {
     SeedSettings published;
     published.density = FootprintDensity::SeedSegment;
     published.curvedSections = false;
-    RgbImage method;
+    bake::Image method;
     std::vector<double> times;
     for (int r = 0; r < std::max(1, o.repeats); ++r)
       times.push_back(secondsOf([&] { method = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, ours); }));
     const double methodSeconds = median(times);
-    const RgbImage seedMethod = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, published);
+    const bake::Image seedMethod = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, published);
 
     // How many pixels took the special-case path.
     std::size_t special = 0;
@@ -203,15 +203,15 @@ int main(int argc, char** argv) {
     ReferenceSettings reference;
     reference.samplesPerPixel = o.spp;
     reference.threads = o.threads;
-    RgbImage truth, second;
+    bake::Image truth, second;
     reference.seed = 1;
     const double referenceSeconds = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
     reference.seed = 2;
     second = renderReference(loaded.scene, view, lighting, reference);
 
-    const ImageError error = compareImages(method, truth);
-    const ImageError floor = compareImages(second, truth);
-    const ImageError seedError = compareImages(seedMethod, truth);
+    const ImageError error = imageError(method, truth);
+    const ImageError floor = imageError(second, truth);
+    const ImageError seedError = imageError(seedMethod, truth);
     const double pixels = double(view.width) * view.height;
     const double footprint = std::hypot(view.axisX.u, view.axisX.v);
     const double grooveWidth = 2 * loaded.scene.wmax;
@@ -236,8 +236,8 @@ int main(int argc, char** argv) {
       char stem[256];
       std::snprintf(stem, sizeof stem, "%s-%03zu", job.caseName.c_str(), index);
       const std::filesystem::path dir(o.images);
-      (void)writeRgbImage(dir / (std::string(stem) + "-method.exr"), method);
-      (void)writeRgbImage(dir / (std::string(stem) + "-reference.exr"), truth);
+      (void)bake::writeImage(dir / (std::string(stem) + "-method.exr"), method, bake::PixelType::Float);
+      (void)bake::writeImage(dir / (std::string(stem) + "-reference.exr"), truth, bake::PixelType::Float);
     }
   }
   return 0;

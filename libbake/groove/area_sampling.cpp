@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 
+#include "bake_formats/grooves.h"
 #include "groove/area_surface.h"
 
 namespace bake::groove {
@@ -243,7 +244,7 @@ Extent extentOf(const std::vector<StraightGroove>& grooves) {
 
 // How far from a point its view line and its light ray travel over the grooves' height range; a light
 // near or below the horizon is followed up to a bounded distance.
-constexpr double kMaxLightSlope = 100;  // the shader's query box reaches as far (shade.cpp)
+constexpr double kMaxLightSlope = format::grooves::kMaxReach;  // as far as the query box (shade.cpp)
 double reach(const Vec3& d, double heightRange) {
   const double horizontal = std::hypot(d.u, d.v);
   if (horizontal == 0) return 0;

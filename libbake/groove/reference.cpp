@@ -88,12 +88,9 @@ Rgb referenceRadiance(const ReferenceSurface& surface, const GrooveScene& scene,
   return radianceAt(surface, scene, x, toViewer, lighting, offsetDistance(scene));
 }
 
-RgbImage renderReference(const GrooveScene& scene, const View& view, const Lighting& lighting,
+Image renderReference(const GrooveScene& scene, const View& view, const Lighting& lighting,
                          const ReferenceSettings& settings) {
-  RgbImage image;
-  image.width = std::max(0, view.width);
-  image.height = std::max(0, view.height);
-  image.rgb.assign(std::size_t(image.width) * image.height * 3, 0.0f);
+  Image image = rgbImage(view.width, view.height);
   const ReferenceSurface surface(scene);
   const double offset = offsetDistance(scene);
   const int n = strataPerSide(settings.samplesPerPixel);
@@ -112,7 +109,7 @@ RgbImage renderReference(const GrooveScene& scene, const View& view, const Light
         for (int c = 0; c < 3; ++c) sum[c] += value[c];
       }
     const double weight = 1.0 / (double(n) * n);
-    image.set(x, y, {sum[0] * weight, sum[1] * weight, sum[2] * weight});
+    setRgb(image, x, y, {sum[0] * weight, sum[1] * weight, sum[2] * weight});
   }, 4);
   return image;
 }

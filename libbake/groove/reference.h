@@ -41,7 +41,7 @@ class ReferenceSurface {
 Rgb referenceRadiance(const ReferenceSurface& surface, const GrooveScene& scene, Vec2 x, const Vec3& toViewer,
                       const Lighting& lighting);
 
-RgbImage renderReference(const GrooveScene& scene, const View& view, const Lighting& lighting,
+Image renderReference(const GrooveScene& scene, const View& view, const Lighting& lighting,
                          const ReferenceSettings& settings);
 
 }  // namespace bake::groove

@@ -7,7 +7,6 @@
 #include <limits>
 #include <numbers>
 
-#include "io/image.h"
 
 namespace bake::groove {
 namespace {
@@ -47,24 +46,19 @@ View windowView(Vec2 lower, Vec2 upper, int width, double theta, double phi) {
   return view;
 }
 
-Rgb RgbImage::at(int x, int y) const {
-  const std::size_t i = (std::size_t(y) * width + x) * 3;
-  return {rgb[i], rgb[i + 1], rgb[i + 2]};
+Image rgbImage(int width, int height) {
+  Image image;
+  image.width = std::max(0, width);
+  image.height = std::max(0, height);
+  image.channels = 3;
+  image.pixels.assign(std::size_t(image.width) * image.height * 3, 0.0f);
+  return image;
 }
 
-void RgbImage::set(int x, int y, const Rgb& value) {
-  const std::size_t i = (std::size_t(y) * width + x) * 3;
-  for (int c = 0; c < 3; ++c) rgb[i + c] = static_cast<float>(value[c]);
-}
+Rgb rgbAt(const Image& image, int x, int y) { return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)}; }
 
-Status writeRgbImage(const std::filesystem::path& path, const RgbImage& image) {
-  Image out;
-  out.width = image.width;
-  out.height = image.height;
-  out.channels = 3;
-  out.pixels = image.rgb;
-  const bool exr = path.extension() == ".exr";
-  return writeImage(path, out, exr ? PixelType::Float : PixelType::U8);
+void setRgb(Image& image, int x, int y, const Rgb& value) {
+  for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<float>(value[c]);
 }
 
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting) {
@@ -85,10 +79,11 @@ Vec3 reflect(const Vec3& toViewer, const Vec3& normal) {
   return normalised({d * normal.u - toViewer.u, d * normal.v - toViewer.v, d * normal.w - toViewer.w});
 }
 
-ImageError compareImages(const RgbImage& image, const RgbImage& reference) {
+ImageError imageError(const Image& image, const Image& reference) {
   ImageError e;
   const std::size_t pixels = std::size_t(reference.width) * reference.height;
-  if (image.width != reference.width || image.height != reference.height || pixels == 0) {
+  if (image.width != reference.width || image.height != reference.height || image.channels != 3 ||
+      reference.channels != 3 || pixels == 0) {
     e.rmse = e.relativeMse = e.p99 = e.max = std::numeric_limits<double>::infinity();
     return e;
   }
@@ -97,9 +92,9 @@ ImageError compareImages(const RgbImage& image, const RgbImage& reference) {
   for (std::size_t i = 0; i < pixels; ++i) {
     double worst = 0;
     for (int c = 0; c < 3; ++c) {
-      const double d = double(image.rgb[i * 3 + c]) - reference.rgb[i * 3 + c];
+      const double d = double(image.pixels[i * 3 + c]) - reference.pixels[i * 3 + c];
       squared += d * d;
-      referenceSquared += double(reference.rgb[i * 3 + c]) * reference.rgb[i * 3 + c];
+      referenceSquared += double(reference.pixels[i * 3 + c]) * reference.pixels[i * 3 + c];
       worst = std::max(worst, std::abs(d));
     }
     pixelError[i] = worst;

@@ -6,11 +6,11 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 #include "core/status.h"
 #include "groove/scene.h"
+#include "io/image.h"
 
 namespace bake::groove {
 
@@ -48,15 +48,11 @@ struct View {
 View windowView(Vec2 lower, Vec2 upper, int width, double theta, double phi);
 Vec3 directionFromAngles(double theta, double phi);
 
-// Linear RGB image, row-major, y down.
-struct RgbImage {
-  int width = 0, height = 0;
-  std::vector<float> rgb;
-  Rgb at(int x, int y) const;
-  void set(int x, int y, const Rgb& value);
-};
-// Writes linear EXR (.exr) or 8-bit PNG (round(255 clamp(x))) by extension; atomic.
-Status writeRgbImage(const std::filesystem::path& path, const RgbImage& image);
+// Rendered images are io/image.h Images of three linear channels, row-major, y down (writeImage
+// writes them as EXR, or as 8-bit PNG: round(255 clamp(x))).
+Image rgbImage(int width, int height);  // black
+Rgb rgbAt(const Image& image, int x, int y);
+void setRgb(Image& image, int x, int y, const Rgb& value);
 
 // Radiance sent towards E by a lit point with normal N: f(E, L) max(N.L, 0) radiance, f normalised
 // Blinn-Phong (the one material model; also in shaders/grooves).
@@ -68,6 +64,6 @@ Vec3 reflect(const Vec3& toViewer, const Vec3& normal);  // mirrored direction, 
 struct ImageError {
   double rmse = 0, relativeMse = 0, p99 = 0, max = 0;
 };
-ImageError compareImages(const RgbImage& image, const RgbImage& reference);
+ImageError imageError(const Image& image, const Image& reference);
 
 }  // namespace bake::groove

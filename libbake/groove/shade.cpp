@@ -16,13 +16,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "bake_formats/grooves.h"
 #include "core/parallel.h"
 #include "groove/line_sampling_section.h"
 
 namespace bake::groove {
 namespace {
 
-constexpr double kMaxReach = 100;  // |D_uv| / D_w at most: about 89.4 degrees from the normal
+constexpr double kMaxReach = format::grooves::kMaxReach;  // |D_uv| / D_w at most
 
 struct Box {
   Vec2 lower, upper;
@@ -165,18 +166,15 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);
 }
 
-RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
+Image renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
                     int threads, const SeedSettings& settings) {
-  RgbImage image;
-  image.width = view.width;
-  image.height = view.height;
-  image.rgb.assign(std::size_t(std::max(0, view.width)) * std::max(0, view.height) * 3, 0.0f);
+  Image image = rgbImage(view.width, view.height);
   const SeedShader shader(scene, grid, settings);
   parallelFor(
       std::size_t(std::max(0, view.height)), resolveThreadCount(unsigned(std::max(0, threads))),
       [&](std::size_t y) {
         for (int x = 0; x < view.width; ++x)
-          image.set(x, int(y), shader.shade(view.pixel(x, int(y)), view.toViewer, lighting));
+          setRgb(image, x, int(y), shader.shade(view.pixel(x, int(y)), view.toViewer, lighting));
       },
       1);
   return image;

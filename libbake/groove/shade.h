@@ -43,7 +43,7 @@ class SeedShader {
   SeedSettings settings_;
 };
 
-RgbImage renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
+Image renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
                     int threads, const SeedSettings& settings = {});
 
 }  // namespace bake::groove

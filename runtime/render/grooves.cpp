@@ -79,6 +79,7 @@ std::vector<std::string> packageDefines(const groove::GroovePackage& p) {
   // A footprint never finds more primitives than the package holds: small packages get small arrays.
   const std::size_t found = std::clamp<std::size_t>(p.primitives.size(), 1, kMaxFound);
   defines.push_back("MAX_FOUND " + std::to_string(found));
+  defines.push_back("MAX_REACH " + std::to_string(fmt::kMaxReach));
   return defines;
 }
 

@@ -15,7 +15,10 @@
 #define MAX_FOUND 24
 #endif
 
-const float kMaxReach = 100.0;
+#ifndef MAX_REACH
+#define MAX_REACH 100.0
+#endif
+const float kMaxReach = MAX_REACH;
 
 struct LocalGroove {
   uint primitive;

@@ -280,16 +280,16 @@ TEST(GrooveAreaSampling, ViewsWithPixelEdgesOnPieceEdgesAgreeWithReference) {
     for (const double theta : {0.0, 0.6}) {
       SCOPED_TRACE(testing::Message() << "scene " << k << " theta " << theta);
       const View view = windowView({0.475, 0.475}, {0.525, 0.525}, 10, theta, 0.7);
-      RgbImage image = {view.width, view.height, std::vector<float>(std::size_t(view.width) * view.height * 3)};
+      Image image = rgbImage(view.width, view.height);
       for (int y = 0; y < view.height; ++y)
-        for (int x = 0; x < view.width; ++x) image.set(x, y, sample(s, view.pixel(x, y), view.toViewer, l));
+        for (int x = 0; x < view.width; ++x) setRgb(image, x, y, sample(s, view.pixel(x, y), view.toViewer, l));
       ReferenceSettings settings;
       settings.samplesPerPixel = 64;  // a sweep for robustness: the closed forms above test accuracy
       settings.threads = 1;
-      const RgbImage first = renderReference(s, view, l, settings);
+      const Image first = renderReference(s, view, l, settings);
       settings.seed = 2;
-      const RgbImage second = renderReference(s, view, l, settings);
-      const ImageError error = compareImages(image, first), noise = compareImages(second, first);
+      const Image second = renderReference(s, view, l, settings);
+      const ImageError error = imageError(image, first), noise = imageError(second, first);
       EXPECT_LE(error.rmse, noise.rmse);
       EXPECT_LE(error.max, 2 * noise.max);
     }

@@ -14,6 +14,7 @@
 #include "groove/reference.h"
 #include "groove/scene.h"
 #include "groove/shade_local.h"
+#include "groove/groove_support.h"
 
 namespace bake::groove::area_test {
 
@@ -55,21 +56,7 @@ inline std::string polyline(const std::string& profile, const std::string& mater
   return s + "]}}";
 }
 
-inline const Material& materialNamed(const GrooveScene& scene, const std::string& name) {
-  for (const Material& m : scene.materials)
-    if (m.name == name) return m;
-  ADD_FAILURE() << "no material " << name;
-  return scene.materials.front();
-}
-
 inline Footprint squareFootprint(Vec2 centre, double side) { return {centre, {side, 0}, {0, side}}; }
-
-inline Lighting lightTowards(Vec3 d) {
-  const double n = std::sqrt(d.u * d.u + d.v * d.v + d.w * d.w);
-  Lighting l;
-  l.toLight = {d.u / n, d.v / n, d.w / n};
-  return l;
-}
 
 // Every primitive of the scene, straightened at the footprint centre (the scenes are small).
 inline std::vector<LocalGroove> allGrooves(const GrooveScene& scene, Vec2 centre) {
@@ -105,7 +92,7 @@ inline ReferenceValue referenceMean(const GrooveScene& scene, const Footprint& f
     settings.samplesPerPixel = spp;
     settings.seed = 1 + s;
     settings.threads = 1;
-    values.push_back(renderReference(scene, view, l, settings).at(0, 0));
+    values.push_back(rgbAt(renderReference(scene, view, l, settings), 0, 0));
   }
   ReferenceValue r;
   for (int c = 0; c < 3; ++c) {

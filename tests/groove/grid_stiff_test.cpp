@@ -10,6 +10,7 @@
 
 #include "groove/grid.h"
 #include "groove/scene.h"
+#include "groove/groove_support.h"
 
 namespace bake::groove {
 namespace {
@@ -35,12 +36,6 @@ GrooveScene parseOk(const json& scene) {
   return r.isOk() ? r.value() : GrooveScene{};
 }
 
-GrooveGrid buildOk(const GrooveScene& scene, GridSettings settings = {}) {
-  Result<GrooveGrid> r = buildGrooveGrid(scene, settings);
-  EXPECT_TRUE(r.isOk()) << r.status().describe();
-  return r.isOk() ? r.value() : GrooveGrid{};
-}
-
 void expectFiniteRecords(const GrooveGrid& grid) {
   for (const SpecialRecord& r : grid.records) {
     EXPECT_TRUE(std::isfinite(r.point.u) && std::isfinite(r.point.v));
@@ -63,7 +58,7 @@ TEST(GrooveGridStiff, HugeDomainWithTinyGroovesGrowsCellsToTheLimit) {
   addPath(s, {{"line", {{10, 10}, {9e5, 8e5}}}});
   GridSettings settings;
   settings.maxCells = 1u << 16;
-  const GrooveGrid grid = buildOk(parseOk(s), settings);
+  const GrooveGrid grid = buildGridOk(parseOk(s), settings);
   EXPECT_LE(grid.cellCount(), settings.maxCells);
   EXPECT_GE(grid.cellCount(), settings.maxCells / 2);
   EXPECT_NEAR(grid.cellSize.u * grid.cells[0], 1e6, 1e-6);
@@ -78,11 +73,11 @@ TEST(GrooveGridStiff, ThinDomainAndASingleCell) {
   addPath(s, {{"line", {{1, 0.005}, {999, 0.005}}}});
   GridSettings settings;
   settings.maxCells = 1000;
-  GrooveGrid grid = buildOk(parseOk(s), settings);
+  GrooveGrid grid = buildGridOk(parseOk(s), settings);
   EXPECT_LE(grid.cellCount(), 1000u);
   EXPECT_EQ(grid.cells[1], 1u);
   settings.maxCells = 1;
-  grid = buildOk(parseOk(s), settings);
+  grid = buildGridOk(parseOk(s), settings);
   EXPECT_EQ(grid.cellCount(), 1u);
   EXPECT_EQ(grid.primitiveRefs, std::vector<std::uint32_t>({0}));
 }
@@ -94,7 +89,7 @@ TEST(GrooveGridStiff, CoordinatesFarFromTheOrigin) {
   addPath(s, {{"line", {{1e7 + 0.5, 1e7 + 0.2}, {1e7 + 0.5, 1e7 + 0.8}}}});
   GridSettings settings;
   settings.cellSize = 1e7 + 1;  // one cell: the test is about the records' arithmetic
-  const GrooveGrid grid = buildOk(parseOk(s), settings);
+  const GrooveGrid grid = buildGridOk(parseOk(s), settings);
   const auto n = std::count_if(grid.records.begin(), grid.records.end(),
                                [](const SpecialRecord& r) { return r.kind == SpecialRecord::Kind::Intersection; });
   ASSERT_EQ(n, 1);
@@ -113,7 +108,7 @@ TEST(GrooveGridStiff, NearReversalCornerIsCappedAndFinite) {
   const double back = 0.1 * M_PI / 180;
   addPath(s, {{"polyline", {{2, 5}, {6, 5}, {6 - 4 * std::cos(back), 5 + 4 * std::sin(back)}}}});
   const GrooveScene scene = parseOk(s);
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   expectFiniteRecords(grid);
   const auto corner = std::find_if(grid.records.begin(), grid.records.end(),
                                    [](const SpecialRecord& r) { return r.kind == SpecialRecord::Kind::Corner; });
@@ -127,12 +122,12 @@ TEST(GrooveGridStiff, NearReversalCornerIsCappedAndFinite) {
 TEST(GrooveGridStiff, PathsOutsideAndManyTimesAroundTheDomain) {
   json s = stiffScene(1, 1, 0.01);
   addPath(s, {{"line", {{5, 5}, {6, 5}}}});  // outside a non-repeating domain: listed nowhere
-  GrooveGrid grid = buildOk(parseOk(s));
+  GrooveGrid grid = buildGridOk(parseOk(s));
   EXPECT_TRUE(grid.primitiveRefs.empty());
   // Repeating: a line 5 periods long at v = 0.5 fills its row of cells, and nothing else.
   json r = stiffScene(1, 1, 0.01, "repeat");
   addPath(r, {{"line", {{-2, 0.5}, {3, 0.5}}}});
-  grid = buildOk(parseOk(r));
+  grid = buildGridOk(parseOk(r));
   ASSERT_EQ(grid.cells[0], 50u);
   for (double u = 0.01; u < 1; u += 0.1) EXPECT_TRUE(lists(grid, {u, 0.5}, 0)) << u;
   EXPECT_FALSE(lists(grid, {0.5, 0.2}, 0));
@@ -147,7 +142,7 @@ TEST(GrooveGridStiff, HundredsOfGroovesThroughOnePoint) {
     const double a = M_PI * k / lines, c = 0.9 * std::cos(a), d = 0.9 * std::sin(a);
     addPath(s, {{"line", {{1 - c, 1 - d}, {1 + c, 1 + d}}}});
   }
-  const GrooveGrid grid = buildOk(parseOk(s));
+  const GrooveGrid grid = buildGridOk(parseOk(s));
   const GridStats stats = gridStats(grid);
   EXPECT_EQ(stats.intersections, std::uint64_t(lines) * (lines - 1) / 2);  // every pair crosses at (1, 1)
   EXPECT_EQ(stats.ends, 2u * lines);
@@ -165,7 +160,7 @@ TEST(GrooveGridStiff, GrazingCrossingHasALongButBoundedBox) {
   const double t = std::tan(0.2 * M_PI / 180);
   addPath(s, {{"line", {{1, 10}, {19, 10}}}});
   addPath(s, {{"line", {{1, 10 - 9 * t}, {19, 10 + 9 * t}}}});
-  const GrooveGrid grid = buildOk(parseOk(s));
+  const GrooveGrid grid = buildGridOk(parseOk(s));
   const auto it = std::find_if(grid.records.begin(), grid.records.end(),
                                [](const SpecialRecord& r) { return r.kind == SpecialRecord::Kind::Intersection; });
   ASSERT_NE(it, grid.records.end());
@@ -179,7 +174,7 @@ TEST(GrooveGridStiff, GrazingCrossingHasALongButBoundedBox) {
   const double tp = std::tan(0.01 * M_PI / 180);
   addPath(p, {{"line", {{1, 10}, {19, 10}}}});
   addPath(p, {{"line", {{1, 10 - 9 * tp}, {19, 10 + 9 * tp}}}});
-  EXPECT_EQ(gridStats(buildOk(parseOk(p))).intersections, 0u);
+  EXPECT_EQ(gridStats(buildGridOk(parseOk(p))).intersections, 0u);
 }
 
 TEST(GrooveGridStiff, ArcWithRadiusEqualToTheHalfWidth) {
@@ -187,7 +182,7 @@ TEST(GrooveGridStiff, ArcWithRadiusEqualToTheHalfWidth) {
   json s = stiffScene(1, 1, 0.05);
   addPath(s, {{"arc", {{"centre", {0.5, 0.5}}, {"radius", 0.05}, {"start", 0}, {"end", 300}}}});
   const GrooveScene scene = parseOk(s);
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   std::vector<std::uint32_t> found;
   grid.primitivesInBox({0.5, 0.5}, {0.5, 0.5}, found);
   EXPECT_FALSE(found.empty());

@@ -10,6 +10,7 @@
 
 #include "groove/grid.h"
 #include "groove/scene.h"
+#include "groove/groove_support.h"
 
 namespace bake::groove {
 namespace {
@@ -36,12 +37,6 @@ GrooveScene parseOk(const json& scene) {
   Result<GrooveScene> r = parseGrooveScene(scene.dump(), "scene.json");
   EXPECT_TRUE(r.isOk()) << r.status().describe();
   return r.isOk() ? r.value() : GrooveScene{};
-}
-
-GrooveGrid buildOk(const GrooveScene& scene, GridSettings settings = {}) {
-  Result<GrooveGrid> r = buildGrooveGrid(scene, settings);
-  EXPECT_TRUE(r.isOk()) << r.status().describe();
-  return r.isOk() ? r.value() : GrooveGrid{};
 }
 
 double dot2(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
@@ -124,7 +119,7 @@ std::size_t countKind(const GrooveGrid& grid, SpecialRecord::Kind kind) {
 
 TEST(GrooveGrid, AutomaticCellSizeIsTheMeanGrooveWidth) {
   const GrooveScene scene = parseOk(sceneWith({line(0.1, 0.1, 0.9, 0.1)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   EXPECT_EQ(grid.cells[0], 50u);  // 2 wmax = 0.02 over a unit domain
   EXPECT_EQ(grid.cells[1], 50u);
   EXPECT_DOUBLE_EQ(grid.cellSize.u, 1.0 / 50);
@@ -135,13 +130,13 @@ TEST(GrooveGrid, CellsAreAWholeNumberPerAxisAndGrowToFitMaxCells) {
   json s = sceneWith({line(0.1, 0.1, 0.9, 0.1)});
   s["domain"]["size"] = {1.0, 0.31};
   const GrooveScene scene = parseOk(s);
-  GrooveGrid grid = buildOk(scene);
+  GrooveGrid grid = buildGridOk(scene);
   EXPECT_EQ(grid.cells[0], 50u);
   EXPECT_EQ(grid.cells[1], 16u);  // round(0.31 / 0.02)
   EXPECT_DOUBLE_EQ(grid.cellSize.v * grid.cells[1], 0.31);
   GridSettings small;
   small.maxCells = 100;
-  grid = buildOk(scene, small);
+  grid = buildGridOk(scene, small);
   EXPECT_LE(grid.cellCount(), 100u);
   EXPECT_GE(grid.cellCount(), 50u);  // grown in small steps, not to a single cell
   EXPECT_NEAR(grid.cellSize.u * grid.cells[0], 1.0, 1e-12);
@@ -151,7 +146,7 @@ TEST(GrooveGrid, ExplicitCellSizeAndItsErrors) {
   const GrooveScene scene = parseOk(sceneWith({line(0.1, 0.1, 0.9, 0.1)}));
   GridSettings settings;
   settings.cellSize = 0.1;
-  EXPECT_EQ(buildOk(scene, settings).cells[0], 10u);
+  EXPECT_EQ(buildGridOk(scene, settings).cells[0], 10u);
   settings.cellSize = 1e-4;  // 10^8 cells
   Result<GrooveGrid> r = buildGrooveGrid(scene, settings);
   ASSERT_FALSE(r.isOk());
@@ -171,14 +166,14 @@ TEST(GrooveGrid, ConservativeForLinesArcsCornersAndCurves) {
   grooves.push_back(groove({{"cubic", {{0.1, 0.1}, {0.5, 0.5}, {0.2, 0.9}, {0.9, 0.2}}}}));
   grooves.push_back(groove({{"svg", "M 0.7 0.9 L 0.9 0.9 A 0.05 0.05 0 0 0 0.9 0.8 L 0.7 0.75"}}));
   const GrooveScene scene = parseOk(sceneWith(grooves));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   expectCsrValid(grid, scene.primitives.size());
   expectConservative(scene, grid, 20000, 7);
 }
 
 TEST(GrooveGrid, ADiagonalLineListsOnlyTheCellsAlongIt) {
   const GrooveScene scene = parseOk(sceneWith({line(0.001, 0.001, 0.999, 0.999)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   ASSERT_EQ(grid.cells[0], 50u);
   // The band is 0.02 wide: about 50 diagonal cells plus two neighbours each; its box holds 2500.
   EXPECT_LE(grid.primitiveRefs.size(), 50u * 5);
@@ -194,10 +189,10 @@ TEST(GrooveGrid, IdenticalForAnyThreadCount) {
   const GrooveScene scene = parseOk(sceneWith(grooves, "none", 0.002));
   GridSettings settings;
   settings.threads = 1;
-  const GrooveGrid one = buildOk(scene, settings);
+  const GrooveGrid one = buildGridOk(scene, settings);
   for (const int threads : {2, 4}) {
     settings.threads = threads;
-    const GrooveGrid other = buildOk(scene, settings);
+    const GrooveGrid other = buildGridOk(scene, settings);
     EXPECT_EQ(one.cellStart, other.cellStart);
     EXPECT_EQ(one.primitiveRefs, other.primitiveRefs);
     EXPECT_EQ(one.recordStart, other.recordStart);
@@ -216,7 +211,7 @@ TEST(GrooveGrid, IdenticalForAnyThreadCount) {
 
 TEST(GrooveGrid, PerpendicularCrossingGivesOneIntersectionRecord) {
   const GrooveScene scene = parseOk(sceneWith({line(0.2, 0.5, 0.8, 0.5), line(0.4, 0.2, 0.4, 0.8)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   ASSERT_EQ(countKind(grid, SpecialRecord::Kind::Intersection), 1u);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::End), 4u);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::Corner), 0u);
@@ -242,7 +237,7 @@ TEST(GrooveGrid, PerpendicularCrossingGivesOneIntersectionRecord) {
 
 TEST(GrooveGrid, EndRecordsHoldTheCap) {
   const GrooveScene scene = parseOk(sceneWith({line(0.2, 0.5, 0.8, 0.5)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   ASSERT_EQ(grid.records.size(), 2u);
   const SpecialRecord& start = grid.records[0];
   EXPECT_EQ(start.kind, SpecialRecord::Kind::End);
@@ -254,7 +249,7 @@ TEST(GrooveGrid, EndRecordsHoldTheCap) {
 
 TEST(GrooveGrid, CornersOnlyAtPolylineVerticesNotInsideCurves) {
   const GrooveScene polyline = parseOk(sceneWith({groove({{"polyline", {{0.2, 0.2}, {0.5, 0.2}, {0.5, 0.5}}}})}));
-  GrooveGrid grid = buildOk(polyline);
+  GrooveGrid grid = buildGridOk(polyline);
   ASSERT_EQ(countKind(grid, SpecialRecord::Kind::Corner), 1u);
   const auto corner = std::find_if(grid.records.begin(), grid.records.end(),
                                    [](const SpecialRecord& r) { return r.kind == SpecialRecord::Kind::Corner; });
@@ -266,7 +261,7 @@ TEST(GrooveGrid, CornersOnlyAtPolylineVerticesNotInsideCurves) {
 
   const GrooveScene curve = parseOk(sceneWith({groove({{"cubic", {{0.1, 0.1}, {0.5, 0.9}, {0.6, 0.1}, {0.9, 0.8}}}})}));
   ASSERT_GT(curve.primitives.size(), 4u);
-  grid = buildOk(curve);
+  grid = buildGridOk(curve);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::Corner), 0u);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::Intersection), 0u);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::End), 2u);
@@ -277,7 +272,7 @@ TEST(GrooveGrid, ParallelBandsAndConcentricArcsAreNotSpecial) {
   json grooves = {line(0.1, 0.3, 0.9, 0.3), line(0.1, 0.305, 0.9, 0.305)};
   grooves.push_back(groove({{"arc", {{"centre", {0.5, 0.7}}, {"radius", 0.15}, {"start", 0}, {"end", 80}}}}));
   grooves.push_back(groove({{"arc", {{"centre", {0.5, 0.7}}, {"radius", 0.16}, {"start", 10}, {"end", 70}}}}));
-  const GrooveGrid grid = buildOk(parseOk(sceneWith(grooves)));
+  const GrooveGrid grid = buildGridOk(parseOk(sceneWith(grooves)));
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::Intersection), 0u);
   EXPECT_EQ(countKind(grid, SpecialRecord::Kind::End), 8u);
 }
@@ -286,7 +281,7 @@ TEST(GrooveGrid, ArcCrossingALineIsAnIntersectionAtTheCrossing) {
   json grooves = {line(0.1, 0.5, 0.9, 0.5)};
   grooves.push_back(groove({{"arc", {{"centre", {0.5, 0.3}}, {"radius", 0.25}, {"start", 20}, {"end", 80}}}}));
   const GrooveScene scene = parseOk(sceneWith(grooves));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   ASSERT_EQ(countKind(grid, SpecialRecord::Kind::Intersection), 1u);
   const auto it = std::find_if(grid.records.begin(), grid.records.end(),
                                [](const SpecialRecord& r) { return r.kind == SpecialRecord::Kind::Intersection; });
@@ -308,7 +303,7 @@ TEST(GrooveGrid, IntersectionBoxesHoldEveryPointOfTheOverlap) {
     grooves.push_back(groove({{"arc", {{"centre", {unit(random), unit(random)}}, {"radius", 0.05 + 0.2 * unit(random)},
                                         {"start", 360 * unit(random)}, {"end", 360 * unit(random)}}}}));
   const GrooveScene scene = parseOk(sceneWith(grooves, "none", 0.02));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   ASSERT_GT(gridStats(grid).intersections, 10u);
   std::uniform_real_distribution<double> anywhere(0, 1);
   int checked = 0;
@@ -338,21 +333,21 @@ TEST(GrooveGrid, SpiralTurnsThatOverlapAreIntersectionsButSmoothNeighboursAreNot
   auto spiral = [](double pitch) {
     return groove({{"spiral", {{"centre", {0.5, 0.5}}, {"startRadius", 0.1}, {"pitch", pitch}, {"turns", 3}, {"startAngle", 0}}}});
   };
-  const GrooveGrid overlapping = buildOk(parseOk(sceneWith({spiral(0.015)})));
+  const GrooveGrid overlapping = buildGridOk(parseOk(sceneWith({spiral(0.015)})));
   EXPECT_GT(gridStats(overlapping).intersections, 10u);
-  const GrooveGrid apart = buildOk(parseOk(sceneWith({spiral(0.05)})));
+  const GrooveGrid apart = buildGridOk(parseOk(sceneWith({spiral(0.05)})));
   EXPECT_EQ(gridStats(apart).intersections, 0u);
   EXPECT_EQ(gridStats(apart).corners, 0u);
   // Pitch 0.025 leaves gaps of 0.005 between the bands, less than the bulge of the arcs' hull polygons
   // over their chords: the turns are still apart (a record's grooves).
-  const GrooveGrid close = buildOk(parseOk(sceneWith({spiral(0.025)})));
+  const GrooveGrid close = buildGridOk(parseOk(sceneWith({spiral(0.025)})));
   EXPECT_EQ(gridStats(close).intersections, 0u);
 }
 
 TEST(GrooveGrid, RepeatingSceneWrapsBandsAndQueries) {
   // A line crossing the right border at v = 0.5: it continues at u = 0 in the wrapped copy.
   const GrooveScene scene = parseOk(sceneWith({line(0.7, 0.5, 1.2, 0.5), line(0.1, 0.3, 0.1, 0.7)}, "repeat"));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   expectCsrValid(grid, scene.primitives.size());
   EXPECT_TRUE(grid.wrapRepeat);
   std::vector<std::uint32_t> found;
@@ -380,14 +375,14 @@ TEST(GrooveGrid, ConservativeAcrossTheBordersOfARepeatingDomain) {
   grooves.push_back(groove({{"quadratic", {{-0.2, 0.5}, {0.1, 0.9}, {0.3, 1.2}}}}));
   grooves.push_back(line(0.3, -0.4, 0.6, 1.6));
   const GrooveScene scene = parseOk(sceneWith(grooves, "repeat"));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   expectCsrValid(grid, scene.primitives.size());
   expectConservative(scene, grid, 30000, 13);
 }
 
 TEST(GrooveGrid, BoxQueriesAreAscendingAndDeduplicated) {
   const GrooveScene scene = parseOk(sceneWith({line(0.1, 0.1, 0.9, 0.9), line(0.1, 0.9, 0.9, 0.1), line(0.5, 0.05, 0.5, 0.95)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   std::vector<std::uint32_t> found;
   grid.primitivesInBox({0.3, 0.3}, {0.7, 0.7}, found);
   EXPECT_EQ(found, std::vector<std::uint32_t>({0, 1, 2}));
@@ -402,7 +397,7 @@ TEST(GrooveGrid, BoxQueriesAreAscendingAndDeduplicated) {
 
 TEST(GrooveGrid, StatsCountReferencesAndRecords) {
   const GrooveScene scene = parseOk(sceneWith({line(0.2, 0.5, 0.8, 0.5), line(0.4, 0.2, 0.4, 0.8)}));
-  const GrooveGrid grid = buildOk(scene);
+  const GrooveGrid grid = buildGridOk(scene);
   const GridStats stats = gridStats(grid);
   EXPECT_DOUBLE_EQ(stats.meanRefsPerCell, double(grid.primitiveRefs.size()) / double(grid.cellCount()));
   EXPECT_EQ(stats.maxRefsPerCell, 2u);  // only the crossing cells hold both

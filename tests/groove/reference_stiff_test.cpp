@@ -49,9 +49,9 @@ double renderPixel(const GrooveScene& scene, double side, double theta, const Li
   ReferenceSettings s;
   s.samplesPerPixel = kStrata * kStrata;
   s.threads = 1;
-  const RgbImage image = renderReference(scene, view, light, s);
-  EXPECT_TRUE(std::isfinite(image.at(0, 0)[0]));
-  return image.at(0, 0)[0];
+  const Image image = renderReference(scene, view, light, s);
+  EXPECT_TRUE(std::isfinite(rgbAt(image, 0, 0)[0]));
+  return rgbAt(image, 0, 0)[0];
 }
 
 double lambert(double albedo, Vec3 normal, Vec3 toLight) {
@@ -88,13 +88,13 @@ TEST(GrooveReferenceStiff, LightBelowTheHorizonLeavesEverythingDark) {
   const View view = windowView({0.3, 0.3}, {0.7, 0.7}, 24, 70 * kDegree, 3.0);
   // Below the horizon every shadow ray meets the (infinite) base plane: black, exactly.
   for (double beta : {91.0, 100.0, 179.0}) {
-    const RgbImage image = renderReference(scene, view, lightAt(beta * kDegree), s);
-    for (float value : image.rgb) EXPECT_EQ(value, 0.0f) << beta;
+    const Image image = renderReference(scene, view, lightAt(beta * kDegree), s);
+    for (float value : image.pixels) EXPECT_EQ(value, 0.0f) << beta;
   }
   // At the horizon only the ridge's wall facing the light is lit (the floor has N.L = 0).
-  const RgbImage horizon = renderReference(scene, view, lightAt(90 * kDegree), s);
+  const Image horizon = renderReference(scene, view, lightAt(90 * kDegree), s);
   double sum = 0;
-  for (float value : horizon.rgb) {
+  for (float value : horizon.pixels) {
     EXPECT_TRUE(std::isfinite(value));
     EXPECT_GE(value, 0.0f);
     EXPECT_LE(value, 0.6 / kPi + 1e-6);
@@ -155,9 +155,9 @@ TEST(GrooveReferenceStiff, OneDegreeCrossing) {
   const GrooveScene scene = parseOk(profiles, first + "," + second);
   ReferenceSettings s;
   s.samplesPerPixel = 16;
-  const RgbImage image = renderReference(scene, windowView({0.2, 0.49}, {0.8, 0.51}, 60, 60 * kDegree, 0.3),
+  const Image image = renderReference(scene, windowView({0.2, 0.49}, {0.8, 0.51}, 60, 60 * kDegree, 0.3),
                                          lightAt(50 * kDegree), s);
-  for (float value : image.rgb) {
+  for (float value : image.pixels) {
     EXPECT_TRUE(std::isfinite(value));
     EXPECT_GE(value, 0.0f);
   }
@@ -180,9 +180,9 @@ TEST(GrooveReferenceStiff, CornerFoldedBackAlmostOntoItself) {
   EXPECT_NEAR(surface.height({0.3, 0.5}), -0.01, 1e-12);
   ReferenceSettings s;
   s.samplesPerPixel = 16;
-  const RgbImage image = renderReference(scene, windowView({0.5, 0.48}, {0.75, 0.53}, 50, 45 * kDegree, 1.0),
+  const Image image = renderReference(scene, windowView({0.5, 0.48}, {0.75, 0.53}, 50, 45 * kDegree, 1.0),
                                          lightAt(30 * kDegree), s);
-  for (float value : image.rgb) EXPECT_TRUE(std::isfinite(value));
+  for (float value : image.pixels) EXPECT_TRUE(std::isfinite(value));
 }
 
 

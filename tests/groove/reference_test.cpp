@@ -56,9 +56,9 @@ double pixelValue(const GrooveScene& scene, const View& view, const Lighting& li
   s.samplesPerPixel = spp;
   s.seed = seed;
   s.threads = 1;
-  const RgbImage image = renderReference(scene, view, lighting, s);
+  const Image image = renderReference(scene, view, lighting, s);
   EXPECT_EQ(image.width, view.width);
-  return image.at(0, 0)[0];
+  return rgbAt(image, 0, 0)[0];
 }
 
 // Lambert radiance of a facet of the V-groove: slopes down to +u (facet A, left) or -u (facet B).
@@ -75,11 +75,11 @@ TEST(GrooveReference, FlatPlaneIsAlbedoOverPiTimesCosine) {
     light.radiance = {2, 1, 0.5};
     ReferenceSettings s;
     s.samplesPerPixel = 4;
-    const RgbImage image = renderReference(scene, windowView({0.1, 0.1}, {0.9, 0.9}, 4, 0.5, 1.0), light, s);
+    const Image image = renderReference(scene, windowView({0.1, 0.1}, {0.9, 0.9}, 4, 0.5, 1.0), light, s);
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x)
         for (int c = 0; c < 3; ++c)
-          EXPECT_NEAR(image.at(x, y)[c], 0.6 / kPi * std::cos(beta) * light.radiance[c], 1e-6);
+          EXPECT_NEAR(rgbAt(image, x, y)[c], 0.6 / kPi * std::cos(beta) * light.radiance[c], 1e-6);
   }
 }
 
@@ -226,7 +226,7 @@ TEST(GrooveReference, WrapRepeatIsPeriodic) {
   EXPECT_NEAR(hit.point.w, -0.04, 1e-12);
 }
 
-RgbImage rowImage(const GrooveScene& scene, int spp, std::uint64_t seed, int threads) {
+Image rowImage(const GrooveScene& scene, int spp, std::uint64_t seed, int threads) {
   ReferenceSettings s;
   s.samplesPerPixel = spp;
   s.seed = seed;
@@ -246,15 +246,15 @@ GrooveScene crossingScene() {
 
 TEST(GrooveReference, ImagesDoNotDependOnTheThreadCount) {
   const GrooveScene scene = crossingScene();
-  const RgbImage one = rowImage(scene, 16, 3, 1), many = rowImage(scene, 16, 3, 3);
-  ASSERT_EQ(one.rgb.size(), many.rgb.size());
-  EXPECT_EQ(one.rgb, many.rgb);
+  const Image one = rowImage(scene, 16, 3, 1), many = rowImage(scene, 16, 3, 3);
+  ASSERT_EQ(one.pixels.size(), many.pixels.size());
+  EXPECT_EQ(one.pixels, many.pixels);
 }
 
 TEST(GrooveReference, SeedNoiseFallsWithTheSampleCount) {
   const GrooveScene scene = crossingScene();
-  const double coarse = compareImages(rowImage(scene, 16, 1, 0), rowImage(scene, 16, 2, 0)).rmse;
-  const double fine = compareImages(rowImage(scene, 256, 1, 0), rowImage(scene, 256, 2, 0)).rmse;
+  const double coarse = imageError(rowImage(scene, 16, 1, 0), rowImage(scene, 16, 2, 0)).rmse;
+  const double fine = imageError(rowImage(scene, 256, 1, 0), rowImage(scene, 256, 2, 0)).rmse;
   EXPECT_GT(fine, 0);
   // At least as fast as 1 / sqrt(spp) (a factor 4 here); stratification does better.
   EXPECT_LT(fine, coarse / 4 * 1.25);
@@ -262,7 +262,7 @@ TEST(GrooveReference, SeedNoiseFallsWithTheSampleCount) {
 
 TEST(GrooveReference, NonSquareSampleCountsRoundToTheNearestSquare) {
   const GrooveScene scene = crossingScene();
-  EXPECT_EQ(rowImage(scene, 15, 1, 1).rgb, rowImage(scene, 16, 1, 1).rgb);
+  EXPECT_EQ(rowImage(scene, 15, 1, 1).pixels, rowImage(scene, 16, 1, 1).pixels);
 }
 
 TEST(GrooveReference, ReferenceRadianceSeesWhatTheViewLineHits) {
@@ -393,8 +393,8 @@ TEST(GrooveReference, BenchmarkScenesLoadAndRender) {
     Lighting light = lightFrom(0.7, 0.4);
     light.maxBounces = 2;
     View view = windowView({0.2, 0.5}, {0.8, 0.52}, 24, 1.0, 0.3);
-    const RgbImage image = renderReference(*scene, view, light, s);
-    for (float value : image.rgb) {
+    const Image image = renderReference(*scene, view, light, s);
+    for (float value : image.pixels) {
       EXPECT_TRUE(std::isfinite(value)) << entry.path();
       EXPECT_GE(value, 0.0f) << entry.path();
     }

@@ -12,6 +12,7 @@
 #include "groove/line_sampling_section.h"
 #include "groove/scene.h"
 #include "groove/shade.h"
+#include "groove/groove_support.h"
 
 namespace bake::groove {
 namespace {
@@ -41,21 +42,6 @@ GrooveScene oneGroove(const std::string& points, const std::string& material = "
 
 std::string vee(double w, double d) {
   return "[[-" + num(w) + ", 0], [0, -" + num(d) + "], [" + num(w) + ", 0]]";
-}
-
-const Material& named(const GrooveScene& s, const std::string& name) {
-  for (const Material& m : s.materials)
-    if (m.name == name) return m;
-  ADD_FAILURE() << name;
-  return s.materials.front();
-}
-
-Lighting lightTowards(Vec3 d, int bounces = 0) {
-  const double n = std::sqrt(d.u * d.u + d.v * d.v + d.w * d.w);
-  Lighting l;
-  l.toLight = {d.u / n, d.v / n, d.w / n};
-  l.maxBounces = bounces;
-  return l;
 }
 
 Rgb shadeWithGrid(const GrooveScene& s, const Footprint& f, const Vec3& e, const Lighting& l) {
@@ -91,8 +77,8 @@ TEST(SeedShaderStiff, GrazingViewsUpTo89DegreesAndBeyond) {
   for (double degrees : {80.0, 85.0, 88.0, 89.0, 89.9, 90 - 1e-9}) {
     SCOPED_TRACE(degrees);
     const Vec3 e{0, std::sin(degrees * kDegree), std::cos(degrees * kDegree)};
-    const Rgb expected = mix((side - 2 * w) / side, directRadiance(named(s, "ground"), {0, 0, 1}, e, l),
-                             2 * w / side, directRadiance(named(s, "paint"), facing, e, l));
+    const Rgb expected = mix((side - 2 * w) / side, directRadiance(materialNamed(s, "ground"), {0, 0, 1}, e, l),
+                             2 * w / side, directRadiance(materialNamed(s, "paint"), facing, e, l));
     expectRgbNear(shadeWithGrid(s, square({0.5, 0.5}, side), e, l), expected, 1e-9);
   }
 }
@@ -110,7 +96,7 @@ TEST(SeedShaderStiff, LightAtAndBelowTheHorizon) {
   // At the horizon, from +v: only the ridge's wall facing +v is lit; seen from 60 degrees it covers
   // 0.03 tan(60) of the footprint's 0.2 (the base and the top have N.L = 0).
   const Lighting horizon = lightTowards({0, 1, 0});
-  const Rgb expected = mix(0.03 * std::tan(theta) / 0.2, directRadiance(named(s, "paint"), {0, 1, 0}, e, horizon), 0, {});
+  const Rgb expected = mix(0.03 * std::tan(theta) / 0.2, directRadiance(materialNamed(s, "paint"), {0, 1, 0}, e, horizon), 0, {});
   expectRgbNear(shadeWithGrid(s, f, e, horizon), expected, 1e-12);
 }
 
@@ -120,9 +106,9 @@ TEST(SeedShaderStiff, FootprintsFarSmallerAndFarLargerThanTheGroove) {
   const Vec3 e = directionFromAngles(0.3, 0.4);
   const Lighting l = lightTowards({-0.2, 0.1, 1});
   const Vec3 left{0, d / std::hypot(w, d), w / std::hypot(w, d)}, right{0, -left.v, left.w};
-  const Rgb leftValue = directRadiance(named(s, "paint"), left, e, l);
-  const Rgb rightValue = directRadiance(named(s, "paint"), right, e, l);
-  const Rgb flat = directRadiance(named(s, "ground"), {0, 0, 1}, e, l);
+  const Rgb leftValue = directRadiance(materialNamed(s, "paint"), left, e, l);
+  const Rgb rightValue = directRadiance(materialNamed(s, "paint"), right, e, l);
+  const Rgb flat = directRadiance(materialNamed(s, "ground"), {0, 0, 1}, e, l);
   // A footprint 1e-7 of the width, seen nearly from above: the one facet under it.
   expectRgbNear(shadeWithGrid(s, square({0.5, 0.5 - 0.3 * w}, 1e-9), e, l), leftValue, 1e-12);
   // Footprints 1000 and 1e6 groove widths wide (line sampling of the one straight groove): the
@@ -149,16 +135,16 @@ TEST(SeedShaderStiff, ZeroAreaFootprintsArePointSamples) {
   // (at b = -2w/3), not the flat base or the hidden right wall.
   const double theta = std::atan(2 * w / d);
   const Vec3 e{0, std::sin(theta), std::cos(theta)};
-  expectRgbNear(shadeWithGrid(s, point, e, l), directRadiance(named(s, "paint"), left, e, l), 1e-12);
+  expectRgbNear(shadeWithGrid(s, point, e, l), directRadiance(materialNamed(s, "paint"), left, e, l), 1e-12);
   // Beside the groove, the flat base; inside, from above, the facet under the point.
   const Vec3 up{0, 0, 1};
   expectRgbNear(shadeWithGrid(s, {{0.5, 0.3}, {0, 0}, {0, 0}}, up, l),
-                directRadiance(named(s, "ground"), up, up, l), 1e-12);
+                directRadiance(materialNamed(s, "ground"), up, up, l), 1e-12);
   expectRgbNear(shadeWithGrid(s, {{0.5, 0.5 - 0.5 * w}, {0, 0}, {0, 0}}, up, l),
-                directRadiance(named(s, "paint"), left, up, l), 1e-12);
+                directRadiance(materialNamed(s, "paint"), left, up, l), 1e-12);
   // A footprint collapsed to a segment along the groove is a point sample across it too.
   expectRgbNear(shadeWithGrid(s, {{0.5, 0.5 - 0.5 * w}, {0.01, 0}, {0, 0}}, up, l),
-                directRadiance(named(s, "paint"), left, up, l), 1e-12);
+                directRadiance(materialNamed(s, "paint"), left, up, l), 1e-12);
 }
 
 TEST(SeedShaderStiff, DeepMirrorGrooveWithManyBouncesStaysBounded) {

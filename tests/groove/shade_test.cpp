@@ -13,6 +13,7 @@
 #include "groove/reference.h"
 #include "groove/scene.h"
 #include "groove/shade.h"
+#include "groove/groove_support.h"
 
 namespace bake::groove {
 namespace {
@@ -47,28 +48,7 @@ std::string line(const std::string& profile, const std::string& material, Vec2 a
          ", " + num(a.v) + "], [" + num(b.u) + ", " + num(b.v) + "]]}}";
 }
 
-GrooveGrid gridOf(const GrooveScene& scene) {
-  Result<GrooveGrid> grid = buildGrooveGrid(scene, GridSettings{});
-  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
-  return grid.isOk() ? grid.value() : GrooveGrid{};
-}
-
-Lighting lightTowards(Vec3 d, int bounces = 0) {
-  const double n = std::sqrt(d.u * d.u + d.v * d.v + d.w * d.w);
-  Lighting l;
-  l.toLight = {d.u / n, d.v / n, d.w / n};
-  l.maxBounces = bounces;
-  return l;
-}
-
 Footprint square(Vec2 centre, double side) { return {centre, {side, 0}, {0, side}}; }
-
-const Material& named(const GrooveScene& s, const std::string& name) {
-  for (const Material& m : s.materials)
-    if (m.name == name) return m;
-  ADD_FAILURE() << name;
-  return s.materials.front();
-}
 
 void expectRgbNear(const Rgb& a, const Rgb& b, double tolerance) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], tolerance) << "channel " << c;
@@ -76,7 +56,7 @@ void expectRgbNear(const Rgb& a, const Rgb& b, double tolerance) {
 
 TEST(SeedShader, NoGrooveNearIsTheFlatBase) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}));
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const SeedShader shader(s, grid);
   const Vec3 e = directionFromAngles(0.6, 1.0);
   const Lighting l = lightTowards({0.2, 0.3, 1});
@@ -94,7 +74,7 @@ TEST(SeedShader, TheEnlargedBoxFindsARidgeSeenFromBeyondTheFootprint) {
   // far outside the band (enlarged by wmax: up to 0.425), and it sees only that wall, at heights
   // (0.52 - v) / tan(80) in [0.020, 0.022] < 0.03.
   const GrooveScene s = sceneOf(line("ridge", "paint", {0.1, 0.5}, {0.9, 0.5}));
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const SeedShader shader(s, grid);
   const double theta = 80 * kPi / 180;
   const Vec3 e{0, std::sin(theta), std::cos(theta)};
@@ -104,9 +84,9 @@ TEST(SeedShader, TheEnlargedBoxFindsARidgeSeenFromBeyondTheFootprint) {
   const Rgb value = shader.shade(f, e, l, &stats);
   EXPECT_GE(stats.primitives, 1u);
   EXPECT_FALSE(stats.special);
-  expectRgbNear(value, directRadiance(named(s, "paint"), {0, 1, 0}, e, l), 1e-12);
+  expectRgbNear(value, directRadiance(materialNamed(s, "paint"), {0, 1, 0}, e, l), 1e-12);
   // Seen from above the same footprint is flat ground.
-  expectRgbNear(shader.shade(f, {0, 0, 1}, l), directRadiance(named(s, "ground"), {0, 0, 1}, {0, 0, 1}, l), 1e-15);
+  expectRgbNear(shader.shade(f, {0, 0, 1}, l), directRadiance(materialNamed(s, "ground"), {0, 0, 1}, {0, 0, 1}, l), 1e-15);
 }
 
 TEST(SeedShader, TheEnlargedBoxFindsARidgeCastingAShadow) {
@@ -115,7 +95,7 @@ TEST(SeedShader, TheEnlargedBoxFindsARidgeCastingAShadow) {
   // [0.645, 0.655] is in the shadow (its shadow rays pass v = 0.52 at heights <= 0.024), the one at
   // [0.745, 0.755] is not (>= 0.0397).
   const GrooveScene s = sceneOf(line("ridge", "paint", {0.1, 0.5}, {0.9, 0.5}));
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const SeedShader shader(s, grid);
   const double phi = 80 * kPi / 180;
   const Lighting l = lightTowards({0, -std::sin(phi), std::cos(phi)});
@@ -128,7 +108,7 @@ TEST(SeedShader, TheEnlargedBoxFindsARidgeCastingAShadow) {
 TEST(SeedShader, SpecialCasesGoToAreaSampling) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}) + ", " +
                                 line("v", "paint", {0.5, 0.1}, {0.5, 0.9}));
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const SeedShader shader(s, grid);
   const Vec3 e = directionFromAngles(0.5, 0.7);
   const Lighting l = lightTowards({0.3, -0.2, 1});
@@ -151,14 +131,14 @@ TEST(SeedShader, WrappingSceneUsesTheNearestCopy) {
   // A groove along v at u = 0.995 in a repeating unit square: footprints at u = 0.005 and u = 1.005
   // are the same place.
   const GrooveScene s = sceneOf(line("v", "paint", {0.995, -0.2}, {0.995, 1.2}), true);
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const SeedShader shader(s, grid);
   const Vec3 e = directionFromAngles(0.7, 0.2);
   const Lighting l = lightTowards({-0.4, 0.1, 1});
   const Rgb a = shader.shade(square({0.005, 0.5}, 0.03), e, l);
   const Rgb b = shader.shade(square({1.005, 0.5}, 0.03), e, l);
   expectRgbNear(a, b, 1e-15);
-  const Rgb flat = directRadiance(named(s, "ground"), {0, 0, 1}, e, l);
+  const Rgb flat = directRadiance(materialNamed(s, "ground"), {0, 0, 1}, e, l);
   EXPECT_GT(std::abs(a[0] - flat[0]), 1e-3);
 }
 
@@ -172,7 +152,7 @@ TEST(SeedShader, WideFootprintsReadTheBoxBoundaryAndFindEveryLongGroove) {
     grooves += line("deep", "paint", {u, 0.02}, {u, 0.98});
   }
   const GrooveScene s = sceneOf(grooves);
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const Footprint wide = square({0.5, 0.5}, 0.6);
   ASSERT_GT(wide.axis1.u / grid.cellSize.u, 8.0);
   const Vec3 e = directionFromAngles(0.5, 0.3);
@@ -189,27 +169,27 @@ TEST(SeedShader, WideFootprintsReadTheBoxBoundaryAndFindEveryLongGroove) {
 TEST(SeedShader, RenderIsTheSameForAnyThreadCount) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.45}, {0.9, 0.55}) + ", " +
                                 line("ridge", "chrome", {0.2, 0.3}, {0.8, 0.3}));
-  const GrooveGrid grid = gridOf(s);
+  const GrooveGrid grid = buildGridOk(s);
   const View view = windowView({0.2, 0.2}, {0.8, 0.8}, 24, 0.8, 2.0);
   const Lighting l = lightTowards({0.3, 0.4, 1}, 2);
-  const RgbImage one = renderSeed(s, grid, view, l, 1), two = renderSeed(s, grid, view, l, 3);
-  ASSERT_EQ(one.rgb.size(), std::size_t(24 * 24 * 3));
-  EXPECT_EQ(one.rgb, two.rgb);
+  const Image one = renderSeed(s, grid, view, l, 1), two = renderSeed(s, grid, view, l, 3);
+  ASSERT_EQ(one.pixels.size(), std::size_t(24 * 24 * 3));
+  EXPECT_EQ(one.pixels, two.pixels);
 }
 
 // The seed's method against the reference over a small view, within 3x the reference's noise floor
 // (the RMSE between two reference seeds).
 double expectMatchesReference(const GrooveScene& s, const View& view, const Lighting& l,
                               const SeedSettings& method = {}) {
-  const GrooveGrid grid = gridOf(s);
-  const RgbImage seed = renderSeed(s, grid, view, l, 0, method);
+  const GrooveGrid grid = buildGridOk(s);
+  const Image seed = renderSeed(s, grid, view, l, 0, method);
   ReferenceSettings settings;
   settings.samplesPerPixel = 64;
-  const RgbImage a = renderReference(s, view, l, settings);
+  const Image a = renderReference(s, view, l, settings);
   settings.seed = 2;
-  const RgbImage b = renderReference(s, view, l, settings);
-  const double noise = compareImages(a, b).rmse;
-  const ImageError error = compareImages(seed, a);
+  const Image b = renderReference(s, view, l, settings);
+  const double noise = imageError(a, b).rmse;
+  const ImageError error = imageError(seed, a);
   EXPECT_LT(error.rmse, 3 * noise + 1e-9) << "noise floor " << noise;
   return error.rmse;
 }

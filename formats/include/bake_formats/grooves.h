@@ -12,6 +12,11 @@ namespace bake::format::grooves {
 inline constexpr const char* kExtension = "BAKE_grooves";
 inline constexpr int kVersion = 1;
 
+// The shading's reach (the CPU method in libbake/groove and the runtime shader, passed as MAX_REACH):
+// the footprint box is enlarged along a direction d by at most this many heights, |d_uv| / d_w capped
+// here (about 89.4 degrees from the normal), so a view or light at the horizon stays finite.
+inline constexpr double kMaxReach = 100;
+
 // Every bufferView of the extension starts at a multiple of this (GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT
 // and GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT are at most 256 on every implementation we know).
 inline constexpr std::uint32_t kBufferAlignment = 256;
