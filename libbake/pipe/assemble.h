@@ -1,0 +1,33 @@
+// Merges the baked packages of a scene into one scene package (formats/scene.md, "What the plan
+// leaves out"): each object's nodes under one node named after it, placed by the scene's position and
+// scale; its material replaced by the scene's; meshes, materials, images, textures and blobs
+// renumbered; and, unless asked to keep them, the data no material reads not copied: unread geodesic
+// fields, an unread displacement map or base colour, an unread threshold texture, special-case
+// records a material does not read. Per-technique rules live in assemble_<technique>.cpp.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/status.h"
+#include "io/glb.h"
+#include "pipe/scene.h"
+
+namespace bake::pipe {
+
+struct AssembleSettings {
+  bool keepUnused = false;
+};
+
+struct AssembleReport {
+  std::vector<std::string> dropped;  // "pretzel: field 'rims' (_GEODESIC_2)", ...
+  std::uint64_t inputBytes = 0;      // the packages' sizes
+};
+
+// packages[i] is the package of scene.objects[i].
+Result<glb::Package> assemble(const Scene& scene, const std::vector<std::filesystem::path>& packages,
+                              const AssembleSettings& settings, AssembleReport* report = nullptr);
+
+}  // namespace bake::pipe
