@@ -36,6 +36,7 @@ json optionsOf(const Settings& settings) {
           {"verify", settings.verifySamples},
           {"weldTolerance", settings.weldTolerance},
           {"draco", settings.draco},
+          {"fields", settings.onlyFields},
           {"threads", settings.common.threads}};
 }
 

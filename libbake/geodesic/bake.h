@@ -49,6 +49,9 @@ struct Settings {
   unsigned autoSources = 0;  // farthest-point sampling
   bool combine = false;
   std::string sourcesFile;  // JSON: {"fields": [{"name": ..., "sources": [{"vertex": i} | {"point": [x,y,z]} | {"node": "N"}]}]}
+  // Bake only these fields of the sources file (by name, kept in file order); empty: all. A scene
+  // whose materials read fewer fields leaves the others out (formats/scene.md).
+  std::vector<std::string> onlyFields;
 
   Method method = Method::Exact;
   Normalization normalization = Normalization::PerField;

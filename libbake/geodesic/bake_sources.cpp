@@ -123,6 +123,24 @@ Status resolveOne(const SourceSpec& spec, const TriangleMesh& mesh, const Surfac
   return {};
 }
 
+// --fields: the named fields of the sources file, in file order; a name the file lacks is an error.
+Result<std::vector<FieldSpec>> selectFields(std::vector<FieldSpec> specs, const Settings& settings) {
+  if (settings.onlyFields.empty()) return specs;
+  for (const std::string& name : settings.onlyFields) {
+    bool found = false;
+    for (const FieldSpec& spec : specs) found = found || spec.name == name;
+    if (!found) return invalidInput("--fields: no field named \"" + name + "\"", {settings.sourcesFile, "fields"});
+  }
+  std::vector<FieldSpec> kept;
+  for (FieldSpec& spec : specs)
+    for (const std::string& name : settings.onlyFields)
+      if (spec.name == name) {
+        kept.push_back(std::move(spec));
+        break;
+      }
+  return kept;
+}
+
 }  // namespace
 
 Result<std::vector<ResolvedField>> resolveFields(const Settings& settings, const TriangleMesh& mesh,
@@ -133,6 +151,7 @@ Result<std::vector<ResolvedField>> resolveFields(const Settings& settings, const
   std::vector<FieldSpec> specs;
   if (!settings.sourcesFile.empty()) {
     BAKE_ASSIGN_OR_RETURN(specs, readSourcesFile(settings.sourcesFile));
+    BAKE_ASSIGN_OR_RETURN(specs, selectFields(std::move(specs), settings));
   }
   std::vector<SourceSpec> loose = commandLineSources(settings);
   if (settings.autoSources > 0) {

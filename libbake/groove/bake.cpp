@@ -30,6 +30,7 @@ json optionsOf(const BakeSettings& settings) {
   return {{"scene", settings.scene},
           {"cellSize", settings.cellSize},
           {"maxCells", settings.maxCells},
+          {"specialCases", settings.specialCases},
           {"threads", settings.common.threads}};
 }
 
@@ -109,9 +110,10 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
   gridSettings.maxCells = settings.maxCells;
   gridSettings.threads = int(session.threads());
   grid_detail::GridStageTimes times;
-  BAKE_ASSIGN_OR_RETURN(const GrooveGrid grid, grid_detail::buildGrooveGridTimed(scene, gridSettings, times));
+  BAKE_ASSIGN_OR_RETURN(GrooveGrid grid, grid_detail::buildGrooveGridTimed(scene, gridSettings, times));
   report.addStage("grid", times.cells);
   report.addStage("records", times.records);
+  if (!settings.specialCases) report.setStatistic("recordsLeftOut", dropSpecialCases(grid));
   progress.update(3);
 
   glb::Package package;

@@ -19,6 +19,7 @@ struct BakeSettings {
   std::string output;                 // OUT.glb
   double cellSize = 0;                // texture units; 0 = automatic (mean groove width)
   std::uint64_t maxCells = 1u << 22;  // the automatic cell size grows until the grid fits
+  bool specialCases = true;           // false: no special-case records (line sampling everywhere)
   CommonOptions common;               // --report, --depfile, --threads, --quiet, --print-inputs
 };
 

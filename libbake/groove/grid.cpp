@@ -255,4 +255,12 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
   return grid;
 }
 
+std::size_t dropSpecialCases(GrooveGrid& grid) {
+  const std::size_t count = grid.records.size();
+  grid.records.clear();
+  grid.recordRefs.clear();
+  std::fill(grid.recordStart.begin(), grid.recordStart.end(), 0u);
+  return count;
+}
+
 }  // namespace bake::groove

@@ -68,4 +68,8 @@ GridStats gridStats(const GrooveGrid& grid);
 
 Result<GrooveGrid> buildGrooveGrid(const GrooveScene& scene, const GridSettings& settings);
 
+// Removes every special-case record (recordStart all zero, no references): the grid of a material
+// that line-samples everywhere (formats/scene.md, reads.specialCases). Returns how many there were.
+std::size_t dropSpecialCases(GrooveGrid& grid);
+
 }  // namespace bake::groove

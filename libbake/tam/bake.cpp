@@ -66,6 +66,7 @@ json optionsOf(const Settings& settings) {
   if (settings.candidates != -1) options["candidates"] = settings.candidates;
   if (settings.resolution != -1) options["resolution"] = settings.resolution;
   if (settings.seed != -1) options["seed"] = settings.seed;
+  if (settings.skipLevels != 0) options["skipLevels"] = settings.skipLevels;
   const MaterialSettings& m = settings.material;
   if (!m.package.empty()) {
     options["applyTo"] = m.mesh;
@@ -208,11 +209,13 @@ Status bake(const Settings& settings, BakeSession& session) {
   writeOptions.zstd = settings.zstd;
   {
     StageTimer timer(&report, "encode");
-    BAKE_ASSIGN_OR_RETURN(const ktx2::Texture texture, tamTexture(state.tam, state.style));
+    BAKE_ASSIGN_OR_RETURN(ktx2::Texture texture, tamTexture(state.tam, state.style));
     for (int level = 0; level < state.tam.strokeLevels; ++level) state.storedDarkness.push_back(storedDarkness(texture, level));
+    BAKE_RETURN_IF_ERROR(dropFinestLevels(texture, settings.skipLevels));
     BAKE_ASSIGN_OR_RETURN(state.tamBytes, ktx2::encode(texture, writeOptions));
     if (!settings.threshold.empty()) {
-      BAKE_ASSIGN_OR_RETURN(const ktx2::Texture threshold, thresholdKtx(state.tam, state.style));
+      BAKE_ASSIGN_OR_RETURN(ktx2::Texture threshold, thresholdKtx(state.tam, state.style));
+      BAKE_RETURN_IF_ERROR(dropFinestLevels(threshold, settings.skipLevels));
       BAKE_ASSIGN_OR_RETURN(state.thresholdBytes, ktx2::encode(threshold, writeOptions));
     }
   }
@@ -232,6 +235,7 @@ Status bake(const Settings& settings, BakeSession& session) {
                               {"resolution", state.tam.resolution},
                               {"strokeLevels", state.tam.strokeLevels},
                               {"mipLevels", state.tam.mipLevels},
+                              {"skippedLevels", settings.skipLevels},
                               {"format", state.tam.coloured ? "R8G8B8A8_UNORM" : "R8_UNORM"},
                               {"strokes", state.tam.strokes.size()},
                               {"bytes", state.tamBytes.size()}});

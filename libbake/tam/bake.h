@@ -35,6 +35,10 @@ struct Settings {
   int candidates = -1;
   int resolution = -1;
   long long seed = -1;
+  // Leave the N finest mip levels out of the written TAM and threshold texture (the base level
+  // becomes level N): a scene whose closest view never samples them does not need them
+  // (formats/scene.md). The TAM is built in full first, so the levels kept are the full bake's.
+  int skipLevels = 0;
   MaterialSettings material;
   CommonOptions common;         // --report, --depfile, --threads, --quiet
 };

@@ -45,6 +45,10 @@ std::vector<double> storedDarkness(const ktx2::Texture& texture, std::uint32_t l
 // The threshold texture (build.h thresholdTexture) as a KTX2 2D R8 texture with the same mip chain.
 Result<ktx2::Texture> thresholdKtx(const Tam& tam, const Style& style);
 
+// Removes the `count` finest levels of a texture (the base becomes level `count`) and records it in
+// the TAM metadata ("skippedLevels"; "strokeLevels" counts the stroke levels that remain).
+Status dropFinestLevels(ktx2::Texture& texture, int count);
+
 // Smooth vertex normals (area-weighted face normals) for a mesh without normals; existing normals
 // are normalised. Vertices no triangle gives a direction get +Z. Returns how many were computed.
 std::size_t ensureUnitNormals(TriangleMesh& mesh);

@@ -116,4 +116,19 @@ Result<ktx2::Texture> thresholdKtx(const Tam& tam, const Style& style) {
   return texture;
 }
 
+Status dropFinestLevels(ktx2::Texture& texture, int count) {
+  if (count <= 0) return {};
+  if (count >= int(texture.levels.size()))
+    return usageError("--skip-levels " + std::to_string(count) + ": the TAM has only " +
+                      std::to_string(texture.levels.size()) + " mip levels (at least one must remain)");
+  texture.width = texture.levelWidth(std::uint32_t(count));
+  texture.height = texture.levelHeight(std::uint32_t(count));
+  texture.levels.erase(texture.levels.begin(), texture.levels.begin() + count);
+  json metadata = json::parse(texture.text(fmt::kMetadataKey));
+  metadata["skippedLevels"] = count;
+  metadata["strokeLevels"] = std::max(0, metadata["strokeLevels"].get<int>() - count);
+  texture.setText(fmt::kMetadataKey, metadata.dump());
+  return {};
+}
+
 }  // namespace bake::tam
