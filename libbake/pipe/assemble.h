@@ -4,6 +4,9 @@
 // renumbered; and, unless asked to keep them, the data no material reads not copied: unread geodesic
 // fields, an unread displacement map or base colour, an unread threshold texture, special-case
 // records a material does not read. Per-technique rules live in assemble_<technique>.cpp.
+//
+// Cameras and KHR_lights_punctual lights of the packages are not copied (the scene's cameras frame
+// the view; each omission is listed). Meshes are written uncompressed, whatever the packages used.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +26,7 @@ struct AssembleSettings {
 
 struct AssembleReport {
   std::vector<std::string> dropped;  // "pretzel: field 'rims' (_GEODESIC_2)", ...
+  std::vector<std::string> kept;     // unread data that had to stay, and why
   std::uint64_t inputBytes = 0;      // the packages' sizes
 };
 

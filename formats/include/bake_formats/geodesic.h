@@ -27,4 +27,13 @@ inline constexpr const char* kNormalizationPerField = "per-field";
 inline constexpr const char* kNormalizationGlobal = "global";
 inline constexpr const char* kNormalizationNone = "none";
 
+// Keys of the root extension object ("fields" is also the material's list of field indices) and of
+// each of its field entries.
+inline constexpr const char* kKeyFields = "fields";
+inline constexpr const char* kKeyEncoding = "encoding";
+inline constexpr const char* kKeyNormalization = "normalization";
+inline constexpr const char* kFieldAttribute = "attribute";
+inline constexpr const char* kFieldName = "name";
+inline constexpr const char* kFieldMaxDistance = "maxDistance";
+
 }  // namespace bake::format::geodesic

@@ -105,4 +105,9 @@ struct alignas(16) Material {
 };
 static_assert(sizeof(Material) == 48);
 
+// Keys of the extension object: the bufferView of each array (by kArrayKeys) and the item count of
+// each (by the same keys, plus "cells").
+inline constexpr const char* kBufferViews = "bufferViews";
+inline constexpr const char* kCounts = "counts";
+
 }  // namespace bake::format::grooves

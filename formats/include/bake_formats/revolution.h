@@ -44,4 +44,11 @@ inline constexpr float kHitEpsilonTexels = 0.05f;
 // Most proxy bands a package may carry (the shader's uniform array).
 inline constexpr int kMaxProxyBands = 64;
 
+// Keys of the material extension that name bufferViews: each of these objects holds one
+// "bufferView" (displacementMap and arcLengthMap are optional).
+inline constexpr const char* kShapeMap = "shapeMap";
+inline constexpr const char* kDisplacementMap = "displacementMap";
+inline constexpr const char* kArcLengthMap = "arcLengthMap";
+inline constexpr const char* kBufferView = "bufferView";
+
 }  // namespace bake::format::revolution

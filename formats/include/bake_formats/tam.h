@@ -36,4 +36,8 @@ inline constexpr const char* kOrientationAcrossLight = "across-light";
 // Adjacent triangles whose normals make an angle above 90 degrees do not blend (seed 004 section 3.3).
 inline constexpr float kMinBlendCosine = 0.0f;
 
+// Keys of the BAKE_hatching extension that hold indices into the package's images.
+inline constexpr const char* kTamImage = "tam";
+inline constexpr const char* kThresholdImage = "threshold";
+
 }  // namespace bake::format::tam
