@@ -99,8 +99,9 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   NinjaSettings settings;
   settings.toolDirectory = toolDirectoryOf(command.pipe);
   settings.bakepipe = locateTool("bakepipe", settings.toolDirectory);
-  settings.assembled = defaultAssembledPackage(loaded.plan.packages.empty() ? fs::path() : loaded.plan.packages[0].parent_path(),
-                                               loaded.scene.name);
+  settings.assembled = defaultAssembledPackage(loaded.plan.packages.front().parent_path(), loaded.scene.name);
+  settings.ninjaFile = fs::absolute(command.output).lexically_normal();
+  settings.keepUnused = command.pipe.keepUnused;
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
   const std::string text = ninjaFile(loaded.scene, loaded.plan, settings);

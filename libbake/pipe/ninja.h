@@ -15,6 +15,8 @@ struct NinjaSettings {
   std::filesystem::path toolDirectory;  // where geobake etc. are (empty: PATH)
   std::filesystem::path bakepipe;       // this tool, for the assemble and validate edges
   std::filesystem::path assembled;      // the scene package (default: <out>/<scene>.glb)
+  std::filesystem::path ninjaFile;      // the file being written: rewritten when the scene changes
+  bool keepUnused = false;              // the plan was made with --keep-unused (passed on)
 };
 
 std::string ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings);
