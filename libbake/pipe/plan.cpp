@@ -334,12 +334,14 @@ Result<Plan> makePlan(const Scene& scene, const PlanSettings& settings) {
     if (!status.isOk()) return status.atElement("object \"" + object.name + "\"");
   }
   planner.generatedSteps();
-  // No two steps may write one file (a generated file named like a baked one, say).
+  // No two steps may write one file (a generated file named like a baked one, say), whether or not
+  // the generated file is needed.
   std::map<fs::path, std::string> writers;
+  for (const Generated& g : scene.generated) writers.emplace(settings.outputDirectory / g.output, "bakeshape:" + g.output);
   for (const Step& step : planner.plan.steps)
     for (const fs::path& output : step.outputs) {
       const auto [at, added] = writers.emplace(output, step.id);
-      if (!added)
+      if (!added && at->second != step.id)
         return invalidInput("both " + at->second + " and " + step.id + " would write " + output.string(),
                             {scene.file.string(), "/objects"});
     }

@@ -1,15 +1,95 @@
-// The scene description reader (pipe/scene.h): what it accepts, and errors that name the element.
+// The scene description reader (pipe/scene.h): the example scenes, and errors that name the element.
 #include <gtest/gtest.h>
 
 #include "pipe/scene.h"
 
+namespace bake::pipe {
 namespace {
 
-TEST(PipeScene, RejectsMissingObjects) {
-  const auto scene = bake::pipe::parseScene(nlohmann::json{{"version", 1}, {"materials", nlohmann::json::array()}},
-                                            "scene.json");
-  ASSERT_FALSE(scene.isOk());
-  EXPECT_EQ(scene.status().code(), bake::ExitCode::InvalidInput);
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kGeodesic = std::string(BAKE_SOURCE_DIR) + "/pipelines/geodesic/";
+
+json geodesicScene() {
+  return {{"version", 1},
+          {"objects", {{{"name", "p"}, {"technique", "geodesic"}, {"input", kGeodesic + "sources.json"},
+                        {"sources", kGeodesic + "sources.json"}, {"material", "m"}}}},
+          {"materials", {{{"name", "m"}, {"technique", "geodesic"}, {"geotexture", {{"fields", {"rims"}}}}}}}};
+}
+
+// The error of parsing `document`: its element and a fragment of its message.
+void expectError(const json& document, const std::string& element, const std::string& fragment) {
+  const Result<Scene> scene = parseScene(document, fs::path(BAKE_TEST_TMP) / "scene.json");
+  ASSERT_FALSE(scene.isOk()) << document.dump();
+  EXPECT_EQ(scene.status().code(), ExitCode::InvalidInput);
+  EXPECT_EQ(scene.status().where().element, element) << scene.status().describe();
+  EXPECT_NE(scene.status().message().find(fragment), std::string::npos) << scene.status().describe();
+}
+
+TEST(PipeScene, ReadsTheExampleScenes) {
+  for (const char* name : {"geodesic", "revolution", "hatching", "grooves"}) {
+    const Result<Scene> scene = readScene(fs::path(BAKE_SOURCE_DIR) / "pipelines" / name / "scene.json");
+    ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+    EXPECT_EQ(scene->name, name);
+    EXPECT_FALSE(scene->objects.empty());
+  }
+  const Result<Scene> geodesic = readScene(kGeodesic + "scene.json");
+  ASSERT_TRUE(geodesic.isOk());
+  EXPECT_EQ(geodesic->objects[0].fieldNames, (std::vector<std::string>{"left tip", "right tip", "rims"}));
+  EXPECT_EQ(geodesic->fieldsRead(geodesic->objects[0]), (std::vector<std::string>{"left tip"}));
+  EXPECT_TRUE(geodesic->objects[0].input.generated);
+}
+
+TEST(PipeScene, DefaultFieldIsTheFirst) {
+  json document = geodesicScene();
+  document["materials"][0].erase("geotexture");
+  const Result<Scene> scene = parseScene(document, fs::path(BAKE_TEST_TMP) / "scene.json");
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  EXPECT_EQ(scene->fieldsRead(scene->objects[0]), (std::vector<std::string>{"left tip"}));
+}
+
+TEST(PipeScene, ErrorsNameTheElement) {
+  expectError({{"version", 1}, {"materials", json::array()}}, "/objects", "is missing");
+  expectError({{"version", 2}, {"objects", json::array()}, {"materials", json::array()}}, "/version", "must be 1");
+  json typo = geodesicScene();
+  typo["objects"][0]["postion"] = {0, 0, 0};
+  expectError(typo, "/objects/0/postion", "did you mean \"position\"");
+  json field = geodesicScene();
+  field["materials"][0]["geotexture"]["fields"] = {"nose"};
+  expectError(field, "/materials/0/geotexture/fields/0", "no field \"nose\"");
+  json technique = geodesicScene();
+  technique["materials"][0]["technique"] = "grooves";
+  technique["materials"][0].erase("geotexture");
+  expectError(technique, "/objects/0/material", "is a grooves material");
+  json missing = geodesicScene();
+  missing["objects"][0]["input"] = "no-such-mesh.obj";
+  expectError(missing, "/objects/0/input", "is not a file");
+  json name = geodesicScene();
+  name["objects"][0]["name"] = "a/b";
+  expectError(name, "/objects/0/name", "letters, digits");
+  json twice = geodesicScene();
+  twice["objects"].push_back(twice["objects"][0]);
+  expectError(twice, "/objects/1/name", "names two objects");
+  json nan = geodesicScene();
+  nan["objects"][0]["scale"] = -1;
+  expectError(nan, "/objects/0/scale", "must be positive");
+  json reads = geodesicScene();
+  reads["materials"][0]["reads"] = {{"threshold", true}};
+  expectError(reads, "/materials/0/reads/threshold", "hatching materials only");
+  json camera = geodesicScene();
+  camera["cameras"] = {{{"eye", {0, 0, 1}}, {"target", {0, 0, 1}}, {"yfov", 40}, {"width", 64}, {"height", 64}}};
+  expectError(camera, "/cameras/0/target", "must differ from the eye");
+}
+
+TEST(PipeScene, UnreadableFilesAreIoErrors) {
+  const Result<Scene> missing = readScene(fs::path(BAKE_TEST_TMP) / "no-such-scene.json");
+  ASSERT_FALSE(missing.isOk());
+  EXPECT_EQ(missing.status().code(), ExitCode::Io);
+  const Result<Scene> directory = readScene(BAKE_SOURCE_DIR);
+  ASSERT_FALSE(directory.isOk());
+  EXPECT_EQ(directory.status().code(), ExitCode::Io);
 }
 
 }  // namespace
+}  // namespace bake::pipe
