@@ -26,6 +26,10 @@ void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet whi
     app.add_flag("--print-inputs", options.printInputs,
                  "List every file the run would read, one per line, and exit");
   }
+  if (which.cacheDir) {
+    app.add_option("--cache-dir", options.cacheDir,
+                   "Content-addressed cache of outputs: reuse a verified earlier bake of the same inputs and options");
+  }
 }
 
 int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,

@@ -1,10 +1,11 @@
 // Command-line plumbing shared by every tool: the common option group (--quiet, --report,
-// --depfile, --threads, --print-inputs), --version, and one fatal path that maps CLI11's own errors
+// --depfile, --threads, --print-inputs, --cache-dir), --version, and one fatal path that maps CLI11's own errors
 // onto ExitCode::Usage and a failed Status onto its exit code with a "TOOL: error: ..." line.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -21,6 +22,15 @@ struct CommonOptions {
   std::string depfilePath;
   unsigned threads = 0;  // 0 = all hardware threads
   bool printInputs = false;
+  std::string cacheDir;  // --cache-dir: content-addressed cache of outputs (core/cache.h)
+
+  // Set by runCachedBake (core/session.h) when the cache missed: the bake's session stores what it
+  // commits under `key`, provided it read no file but `inputs` and wrote exactly `outputs`.
+  struct CacheStore {
+    std::string key;
+    std::vector<std::string> inputs;
+    std::vector<std::string> outputs;
+  } cacheStore;
 };
 
 // Which of the common options a tool offers.
@@ -30,6 +40,7 @@ struct CommonOptionSet {
   bool depfile = true;
   bool threads = true;
   bool printInputs = true;
+  bool cacheDir = false;  // bakers that run through runCachedBake (core/session.h) turn it on
 };
 
 void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet which = {});

@@ -2,13 +2,18 @@
 // report's hashes and the depfile), outputs are staged in temporary files and committed together
 // only when the whole bake succeeded, then the depfile and the --report are written. A failed bake
 // leaves no output and every earlier output untouched; its report still says what went wrong.
+// With --cache-dir (core/cache.h), runCachedBake looks the run up before any work: a hit copies the cached
+// outputs through the same session (atomic commit, depfile, report); a miss bakes, and the session
+// stores what it committed.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "core/cache.h"
 #include "core/cli.h"
 #include "core/diagnostics.h"
 #include "core/report.h"
@@ -33,7 +38,15 @@ class BakeSession {
   // (always, when asked for). Returns the first failure.
   Status finish(Status outcome);
 
+  // A cache hit: records the run's inputs, stages the entry's outputs at the run's output paths,
+  // gives the report the options, statistics and accuracy of the bake that made the entry and
+  // "cache": "hit", and finishes.
+  Status finishFromCache(const RunFiles& files, const CacheEntry& entry);
+
  private:
+  void storeInCache(const std::vector<std::filesystem::path>& committed);
+
+  bool cacheHit_ = false;
   CommonOptions options_;
   Diagnostics& diagnostics_;
   Report report_;
@@ -41,5 +54,13 @@ class BakeSession {
   std::vector<std::filesystem::path> inputs_;
   std::vector<std::filesystem::path> written_;
 };
+
+// One bake with the conventions around it. `files` is the tool's one "files of this run" function:
+// --print-inputs prints its inputs and returns; with --cache-dir, a verified entry for the run's key
+// (tool, version, normalised options of `app`, input contents) becomes the outputs without any work;
+// otherwise `bake` runs (a session made from `common` then stores what it commits). Without either
+// option, `files` is not called.
+Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions& common, Diagnostics& diagnostics,
+               const std::function<Result<RunFiles>()>& files, const std::function<Status()>& bake);
 
 }  // namespace bake

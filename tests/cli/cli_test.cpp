@@ -195,6 +195,10 @@ class CliCase : public ::testing::TestWithParam<Case> {
       const fs::path path = expand(rawPath);
       if (expected.contains("exists")) EXPECT_EQ(fs::exists(path), expected["exists"].get<bool>()) << path;
       if (expected.contains("text")) EXPECT_EQ(readText(path), expected["text"].get<std::string>()) << path;
+      if (expected.contains("sameBytesAs")) {
+        const fs::path other = expand(expected["sameBytesAs"].get<std::string>());
+        EXPECT_TRUE(fs::exists(path) && readAll(path) == readAll(other)) << path << " differs from " << other;
+      }
       if (expected.contains("contains")) {
         for (const json& fragment : expected["contains"]) {
           EXPECT_NE(readText(path).find(expand(fragment)), std::string::npos) << path << " lacks " << expand(fragment);
@@ -272,6 +276,18 @@ TEST_P(CliCase, Behaves) {
   checkStreams(result);
   checkFiles();
   checkThreadDeterminism();
+  // Further runs in the same ${tmp}, each with its own args and expectations.
+  const json steps = spec_.value("then", json::array());
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    SCOPED_TRACE("then[" + std::to_string(i) + "]");
+    json next = {{"tool", spec_["tool"]}, {"args", spec_["args"]}, {"exit", 0}};
+    next.update(steps[i]);
+    spec_ = next;
+    const ProcessResult again = run();
+    EXPECT_EQ(again.exitCode, spec_["exit"].get<int>()) << "stderr:\n" << again.err << "\nstdout:\n" << again.out;
+    checkStreams(again);
+    checkFiles();
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CliCase, ::testing::ValuesIn(allCases()),

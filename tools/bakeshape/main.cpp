@@ -1,5 +1,5 @@
 // bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
-#include "core/cli.h"
+#include "core/session.h"
 #include "mesh/patterns.h"
 #include "mesh/shape_tool.h"
 
@@ -20,9 +20,11 @@ int main(int argc, char** argv) {
                  "Grid cells along the longest side (shapes, default 64) or pixels per side (patterns)")
       ->default_str("64");
   bake::addCommonOptions(app, settings.common, {.version = true, .report = true, .depfile = true, .threads = false,
-                                                .printInputs = false});
+                                                .printInputs = false, .cacheDir = true});
   return bake::runTool(app, diagnostics, argc, argv, [&] {
     diagnostics.setQuiet(settings.common.quiet);
-    return bake::runShapeTool(settings, diagnostics);
+    const auto files = [&]() -> bake::Result<bake::RunFiles> { return bake::RunFiles{{}, {settings.output}}; };
+    return bake::runCachedBake("bakeshape", app, settings.common, diagnostics, files,
+                               [&] { return bake::runShapeTool(settings, diagnostics); });
   });
 }

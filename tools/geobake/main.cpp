@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "core/cli.h"
+#include "core/session.h"
 #include "geodesic/bake.h"
 
 namespace {
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   app.add_option("--geotexture", settings.geotexture,
                  "Add a material choosing this GeoTexture preset for bakeplay (formats/geodesic-material.md)");
   app.add_flag("--draco", settings.draco, "Compress the mesh with Draco (KHR_draco_mesh_compression)");
-  bake::addCommonOptions(app, settings.common);
+  bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
@@ -86,11 +86,12 @@ int main(int argc, char** argv) {
       if (!parsePoint(text, point)) return bake::usageError("--source-point " + text + ": expected X,Y,Z");
       settings.sourcePoints.push_back(point);
     }
-    if (settings.common.printInputs) {
-      std::printf("%s\n", settings.input.c_str());
-      if (!settings.sourcesFile.empty()) std::printf("%s\n", settings.sourcesFile.c_str());
-      return {};
-    }
-    return run(settings, diagnostics);
+    // The files of this run, for --print-inputs and --cache-dir.
+    const auto files = [&]() -> bake::Result<bake::RunFiles> {
+      bake::RunFiles run{{settings.input}, {settings.output}};
+      if (!settings.sourcesFile.empty()) run.inputs.push_back(settings.sourcesFile);
+      return run;
+    };
+    return bake::runCachedBake("geobake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
   });
 }

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/cli.h"
+#include "core/session.h"
 #include "groove/bake.h"
 
 int main(int argc, char** argv) {
@@ -22,14 +22,13 @@ int main(int argc, char** argv) {
       ->default_str("0");
   app.add_option("--max-cells", settings.maxCells, "Largest cell count; the automatic cell size grows to fit")
       ->default_str(std::to_string(settings.maxCells));
-  bake::addCommonOptions(app, settings.common);
+  bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
-    if (settings.common.printInputs) {
-      for (const std::string& input : bakeInputs(settings)) std::printf("%s\n", input.c_str());
-      return {};
-    }
-    return runBake(settings, diagnostics);
+    // The files of this run, for --print-inputs and --cache-dir.
+    const auto files = [&]() -> bake::Result<bake::RunFiles> { return bake::RunFiles{bakeInputs(settings), {settings.output}}; };
+    return bake::runCachedBake("groovebake", app, settings.common, diagnostics, files,
+                               [&] { return runBake(settings, diagnostics); });
   });
 }

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <map>
 
-#include "core/cli.h"
+#include "core/session.h"
 #include "revolution/bake.h"
 
 int main(int argc, char** argv) {
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
       ->default_str("32");
   app.add_option("--over-relaxation", settings.overRelaxation, "Sphere-tracing over-relaxation in [1, 2)")
       ->default_str("1.6");
-  bake::addCommonOptions(app, settings.common);
+  bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
@@ -68,12 +68,13 @@ int main(int argc, char** argv) {
                                                                 &settings.position[1], &settings.position[2]) == 3;
     if (!positionParsed || !std::isfinite(settings.position[0] + settings.position[1] + settings.position[2]))
       return bake::usageError("--position " + position + ": expected X,Y,Z");
-    if (settings.common.printInputs) {
-      std::printf("%s\n", settings.input.c_str());
-      if (!settings.heightMap.empty()) std::printf("%s\n", settings.heightMap.c_str());
-      if (!settings.baseColorTexture.empty()) std::printf("%s\n", settings.baseColorTexture.c_str());
-      return {};
-    }
-    return run(settings, diagnostics);
+    // The files of this run, for --print-inputs and --cache-dir.
+    const auto files = [&]() -> bake::Result<bake::RunFiles> {
+      bake::RunFiles run{{settings.input}, {settings.output}};
+      if (!settings.heightMap.empty()) run.inputs.push_back(settings.heightMap);
+      if (!settings.baseColorTexture.empty()) run.inputs.push_back(settings.baseColorTexture);
+      return run;
+    };
+    return bake::runCachedBake("revolbake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
   });
 }

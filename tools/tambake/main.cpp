@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/cli.h"
+#include "core/session.h"
 #include "tam/bake.h"
 #include "tam/style.h"
 
@@ -57,20 +57,23 @@ int main(int argc, char** argv) {
   app.add_option("--base-colour", baseColour, "Colour material the TAM is combined with: R,G,B in [0, 1]");
   app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation)");
   app.add_option("--scale", material.scale, "Uniform scale of the object's node")->default_str("1");
-  bake::addCommonOptions(app, settings.common);
+  bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
     if (!parseTriple(baseColour, material.baseColour)) return bake::usageError("--base-colour " + baseColour + ": expected R,G,B");
     if (!parseTriple(position, material.position)) return bake::usageError("--position " + position + ": expected X,Y,Z");
     if (!parsePair(translation, material.translation)) return bake::usageError("--translation " + translation + ": expected U,V");
-    if (settings.common.printInputs) {
-      // The stroke image is listed, not read: a build system asks before the inputs exist.
+    // The files of this run, for --print-inputs and --cache-dir. The stroke image is listed, not
+    // read: a build system asks before the inputs exist.
+    const auto files = [&]() -> bake::Result<bake::RunFiles> {
       BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style, false));
-      for (const std::string& input : style.inputs()) std::printf("%s\n", input.c_str());
-      if (!material.mesh.empty()) std::printf("%s\n", material.mesh.c_str());
-      return {};
-    }
-    return run(settings, diagnostics);
+      bake::RunFiles run{style.inputs(), {settings.output}};
+      if (!material.mesh.empty()) run.inputs.push_back(material.mesh);
+      if (!settings.threshold.empty()) run.outputs.push_back(settings.threshold);
+      if (!material.mesh.empty()) run.outputs.push_back(material.package);
+      return run;
+    };
+    return bake::runCachedBake("tambake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
   });
 }
