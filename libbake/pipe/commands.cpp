@@ -96,6 +96,10 @@ Status runPlanCommand(const PlanCommand& command, Diagnostics&) {
 
 Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   BAKE_ASSIGN_OR_RETURN(const Loaded loaded, load(command.pipe));
+  if (command.pipe.common.printInputs) {
+    std::printf("%s\n", loaded.scene.file.c_str());
+    return {};
+  }
   NinjaSettings settings;
   settings.toolDirectory = toolDirectoryOf(command.pipe);
   settings.bakepipe = locateTool("bakepipe", settings.toolDirectory);
@@ -111,6 +115,11 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
 
 Status runAssembleCommand(const AssembleCommand& command, Diagnostics& diagnostics) {
   BAKE_ASSIGN_OR_RETURN(const Loaded loaded, load(command.pipe));
+  if (command.pipe.common.printInputs) {
+    std::printf("%s\n", loaded.scene.file.c_str());
+    for (const fs::path& package : loaded.plan.packages) std::printf("%s\n", package.c_str());
+    return {};
+  }
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   const auto body = [&]() -> Status {
     session.addInput(loaded.scene.file);
@@ -142,7 +151,10 @@ Status runValidateCommand(const ValidateCommand& command, Diagnostics&) {
   if (command.pipe.common.quiet) arguments.push_back("-q");
   arguments.push_back(package.string());
   BAKE_ASSIGN_OR_RETURN(const int code, runProcess(arguments));
-  if (code != 0) return Status(ExitCode(code), "bakeplay validate failed on " + package.string());
+  if (code != 0) {
+    const ExitCode exit = code >= 1 && code <= int(ExitCode::Unsupported) ? ExitCode(code) : ExitCode::Internal;
+    return Status(exit, "bakeplay validate failed on " + package.string());
+  }
   return {};
 }
 

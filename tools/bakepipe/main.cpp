@@ -9,7 +9,7 @@ namespace {
 const bake::CommonOptionSet kNoOutputs = {.version = false, .report = false, .depfile = false, .threads = false,
                                           .printInputs = false};
 const bake::CommonOptionSet kOutputs = {.version = false, .report = true, .depfile = true, .threads = false,
-                                        .printInputs = false};
+                                        .printInputs = true};
 
 void addPipeOptions(CLI::App& command, bake::pipe::PipeSettings& pipe) {
   command.add_option("scene", pipe.scene, "Scene description (.json, formats/scene.schema.json)")->required();
