@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
   sources->add_option("--sources", settings.sourcesFile,
                       "JSON file of fields: {\"fields\": [{\"name\": ..., \"sources\": [{\"vertex\": i} | "
                       "{\"point\": [x, y, z]} | {\"node\": \"name\"}]}]}");
+  sources->add_option("--fields", settings.onlyFields,
+                      "Bake only these fields of the --sources file, by name (comma-separated or repeated)")
+      ->delimiter(',');
   sources->add_option("--auto-sources", settings.autoSources, "Add N sources by farthest-point sampling");
   app.add_flag("--combine", settings.combine,
                "One field of all command-line sources (distance to the nearest) instead of one field each");
@@ -81,6 +84,8 @@ int main(int argc, char** argv) {
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
     diagnostics.setQuiet(settings.common.quiet);
+    if (!settings.onlyFields.empty() && settings.sourcesFile.empty())
+      return bake::usageError("--fields selects fields of a --sources file; give one");
     for (const std::string& text : points) {
       std::array<double, 3> point{};
       if (!parsePoint(text, point)) return bake::usageError("--source-point " + text + ": expected X,Y,Z");

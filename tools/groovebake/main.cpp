@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
       ->default_str("0");
   app.add_option("--max-cells", settings.maxCells, "Largest cell count; the automatic cell size grows to fit")
       ->default_str(std::to_string(settings.maxCells));
+  app.add_flag("--no-special-cases{false}", settings.specialCases,
+               "Write no special-case records: every footprint is line-sampled (for patterns seen only from far)");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {

@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
   app.add_option("--candidates", settings.candidates, "Override the style's candidate strokes per step (K)");
   app.add_option("--resolution", settings.resolution, "Override the style's finest level side (power of two)");
   app.add_option("--seed", settings.seed, "Override the style's random seed");
+  app.add_option("--skip-levels", settings.skipLevels,
+                 "Leave out the N finest mip levels (the base level becomes level N), for scenes never seen close enough to sample them")
+      ->check(CLI::NonNegativeNumber);
   MaterialSettings& material = settings.material;
   app.add_option("--apply-to", material.mesh, "Mesh to apply the TAM to (.obj .ply .off .stl .gltf .glb)");
   app.add_option("--package", material.package, "Package to write with --apply-to (.glb, BAKE_hatching material)");
