@@ -53,6 +53,10 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
 // Reads the extension and its arrays, checking sizes, counts and every index they hold. Without
 // `cellLists`, the four CSR arrays are left empty (and unchecked): enough to measure the geometry.
 Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std::string& name, bool cellLists = true);
+// The same for one material's extension object, for packages with several groove materials (an
+// assembled scene).
+Result<GroovePackage> decodeGrooveExtension(const glb::Package& package, const nlohmann::json& extension,
+                                            const std::string& name, bool cellLists = true);
 Result<GroovePackage> readGroovePackage(const std::filesystem::path& path);
 
 // Largest distance between the stored fp32 geometry, rebuilt in double, and the scene's geometry:

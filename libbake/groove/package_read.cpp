@@ -184,7 +184,13 @@ Result<GroovePackage> decodeGroovePackage(const glb::Package& package, const std
       extension = &material["extensions"][fmt::kExtension];
   if (!extension || !extension->is_object())
     return invalidInput(std::string("no material carries ") + fmt::kExtension, {name, "materials"});
-  const Reader reader{package, name, *extension};
+  return decodeGrooveExtension(package, *extension, name, cellLists);
+}
+
+Result<GroovePackage> decodeGrooveExtension(const glb::Package& package, const json& extension, const std::string& name,
+                                            bool cellLists) {
+  if (!extension.is_object()) return invalidInput(std::string(fmt::kExtension) + " is not an object", {name, "materials"});
+  const Reader reader{package, name, extension};
   GroovePackage out;
   BAKE_RETURN_IF_ERROR(readHeader(reader, out.header));
   BAKE_RETURN_IF_ERROR(readArrays(reader, cellLists, out));

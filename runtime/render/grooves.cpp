@@ -98,8 +98,9 @@ GroovesRenderer::~GroovesRenderer() {
 
 Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_t>& instances,
                                 gl::ShaderLibrary& shaders) {
-  std::map<std::size_t, std::size_t> uploadOfPackage;
-  std::map<std::size_t, std::vector<std::string>> definesOfPackage;
+  // Keyed by (package, material): an assembled scene package holds one groove grid per material.
+  std::map<std::pair<std::size_t, int>, std::size_t> uploadOfPackage;
+  std::map<std::pair<std::size_t, int>, std::vector<std::string>> definesOfPackage;
   GLint storageAlignment = 256;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storageAlignment);
   const std::size_t alignment = std::max<std::size_t>(fmt::kBufferAlignment, std::size_t(std::max(1, storageAlignment)));
@@ -111,9 +112,11 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     const Location where{file, "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(instance.primitive)};
     if (!primitive.find("TEXCOORD_0")) return invalidInput(std::string(fmt::kExtension) + " needs TEXCOORD_0 on the mesh", where);
 
-    if (!uploadOfPackage.count(instance.package)) {
-      BAKE_ASSIGN_OR_RETURN(const groove::GroovePackage decoded, groove::decodeGroovePackage(package, file));
-      const auto views = viewIndices(scene.material(instance)["extensions"][fmt::kExtension]);
+    const auto key = std::make_pair(instance.package, primitive.material);
+    if (!uploadOfPackage.count(key)) {
+      const nlohmann::json& extension = scene.material(instance)["extensions"][fmt::kExtension];
+      BAKE_ASSIGN_OR_RETURN(const groove::GroovePackage decoded, groove::decodeGrooveExtension(package, extension, file));
+      const auto views = viewIndices(extension);
       Upload upload;
       std::size_t total = 0;
       for (std::size_t k = 0; k < fmt::kArrayCount; ++k) {
@@ -130,12 +133,12 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       glCreateBuffers(1, &upload.header);
       glNamedBufferStorage(upload.header, sizeof header, &header, 0);
       bytes_ += bytes.size() + sizeof header;
-      uploadOfPackage[instance.package] = uploads_.size();
-      definesOfPackage[instance.package] = packageDefines(decoded);
+      uploadOfPackage[key] = uploads_.size();
+      definesOfPackage[key] = packageDefines(decoded);
       uploads_.push_back(upload);
     }
 
-    gl::Variant variant{{"grooves/grooves.vert", "grooves/grooves.frag", "", "", ""}, definesOfPackage[instance.package]};
+    gl::Variant variant{{"grooves/grooves.vert", "grooves/grooves.frag", "", "", ""}, definesOfPackage[key]};
     std::map<std::string, int> locations = {{"POSITION", kPositionLocation}, {"TEXCOORD_0", kTexcoordLocation}};
     if (primitive.find("NORMAL")) {
       variant.defines.push_back("HAS_NORMALS");
@@ -146,7 +149,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     BAKE_ASSIGN_OR_RETURN(item.program, shaders.program(variant));
     BAKE_ASSIGN_OR_RETURN(item.mesh, GpuPrimitive::upload(primitive, locations));
     item.world = instance.world;
-    item.upload = uploadOfPackage[instance.package];
+    item.upload = uploadOfPackage[key];
     items_.push_back(std::move(item));
   }
   return {};

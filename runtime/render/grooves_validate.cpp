@@ -19,7 +19,10 @@ Status checkGroovesPackage(const glb::Package& package, const std::string& name)
     any = any || carries[m];
   }
   if (!any) return {};
-  BAKE_RETURN_IF_ERROR(groove::decodeGroovePackage(package, name).status());
+  for (std::size_t m = 0; m < package.materials.size(); ++m)  // an assembled scene has several
+    if (carries[m])
+      BAKE_RETURN_IF_ERROR(
+          groove::decodeGrooveExtension(package, package.materials[m]["extensions"][format::grooves::kExtension], name).status());
   for (std::size_t mesh = 0; mesh < package.meshes.size(); ++mesh) {
     for (std::size_t p = 0; p < package.meshes[mesh].primitives.size(); ++p) {
       const glb::Primitive& primitive = package.meshes[mesh].primitives[p];

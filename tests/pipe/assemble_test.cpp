@@ -9,6 +9,7 @@
 #include <bake_formats/geodesic.h>
 #include <bake_formats/grooves.h>
 #include <bake_formats/revolution.h>
+#include <bake_formats/tam.h>
 
 #include <algorithm>
 #include <fstream>
@@ -23,6 +24,7 @@
 #include "mesh/shape_tool.h"
 #include "pipe/assemble.h"
 #include "revolution/bake.h"
+#include "tam/bake.h"
 #include "support/golden.h"
 
 namespace bake::pipe {
@@ -97,6 +99,27 @@ fs::path bakeRevolution(const fs::path& dir) {
   const Status status = revolution::run(settings, diagnostics);
   EXPECT_TRUE(status.isOk()) << status.describe();
   return settings.output;
+}
+
+// A small TAM with its threshold texture, applied to a torus.
+fs::path bakeHatching(const fs::path& dir) {
+  Diagnostics diagnostics("test", true);
+  ShapeToolSettings shape;
+  shape.shape.name = "torus";
+  shape.shape.resolution = 12;
+  shape.output = (dir / "torus.glb").string();
+  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
+  writeText(dir / "style.json", R"({"tones": 3, "resolution": 32, "levels": 1, "candidates": 2})");
+  tam::Settings settings;
+  settings.style = (dir / "style.json").string();
+  settings.output = (dir / "tam.ktx2").string();
+  settings.threshold = (dir / "threshold.ktx2").string();
+  settings.material.mesh = shape.output;
+  settings.material.package = (dir / "hatched.glb").string();
+  settings.common.quiet = true;
+  const Status status = tam::run(settings, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  return settings.material.package;
 }
 
 Object objectOf(const std::string& name, Technique technique, std::size_t material) {
@@ -399,6 +422,41 @@ TEST(PipeAssemble, RevolutionWithoutBaseColourDropsTheImage) {
   EXPECT_TRUE(assembled->materials[0]["extensions"][rev::kExtension].contains(rev::kDisplacementMap));
   ASSERT_EQ(report.dropped.size(), 1u);
   EXPECT_NE(report.dropped[0].find("vase: base colour texture"), std::string::npos);
+}
+
+TEST(PipeAssemble, HatchingDropsTheUnreadThresholdTextureAndKeepsTheTam) {
+  const fs::path dir = test::freshTempDir("assemble_hatching");
+  const fs::path hatched = bakeHatching(dir);
+  const glb::Package original = readBack(hatched);
+  namespace tam = format::tam;
+  const json& baked = original.materials[0]["extensions"][tam::kExtension];
+  ASSERT_TRUE(baked.contains(tam::kThresholdImage));
+  const auto imageBytes = [](const glb::Package& p, int image) {
+    return p.blobs.at(p.images.at(std::size_t(image))["bufferView"].get<std::size_t>()).bytes;
+  };
+  Scene scene = torusAndPlate();
+  scene.objects.push_back(objectOf("pen", Technique::Hatching, 2));
+  scene.materials.push_back(materialOf("ink", Technique::Hatching));  // reads no threshold (the default)
+
+  AssembleReport report;
+  auto pruned = assemble(scene, {inputs().geodesic, inputs().grooves, hatched}, {}, &report);
+  ASSERT_TRUE(pruned.isOk()) << pruned.status().describe();
+  const int ink = materialNamed(*pruned, "ink");
+  ASSERT_GE(ink, 0);
+  const json& extension = (*pruned).materials[std::size_t(ink)]["extensions"][tam::kExtension];
+  EXPECT_FALSE(extension.contains(tam::kThresholdImage));
+  EXPECT_EQ(pruned->images.size(), 1u);
+  EXPECT_EQ(imageBytes(*pruned, extension[tam::kTamImage].get<int>()), imageBytes(original, baked[tam::kTamImage].get<int>()));
+  EXPECT_NE(std::find(report.dropped.begin(), report.dropped.end(),
+                      "pen: threshold texture (image " + std::to_string(baked[tam::kThresholdImage].get<int>()) + ")"),
+            report.dropped.end());
+
+  AssembleSettings keep;
+  keep.keepUnused = true;
+  auto kept = assemble(scene, {inputs().geodesic, inputs().grooves, hatched}, keep);
+  ASSERT_TRUE(kept.isOk()) << kept.status().describe();
+  EXPECT_EQ(kept->images.size(), 2u);  // the threshold texture stays, unreferenced
+  EXPECT_FALSE(kept->materials[std::size_t(ink)]["extensions"][tam::kExtension].contains(tam::kThresholdImage));
 }
 
 TEST(PipeAssemble, AMissingPackageOrTheWrongTechniqueNamesTheFileAndTheObject) {

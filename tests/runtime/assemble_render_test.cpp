@@ -1,0 +1,195 @@
+// Scene packages made by `bakepipe assemble` (pipe/assemble.h) in the runtime: leaving out what no
+// material reads must not change a pixel. For a geodesic torus that reads one of three fields and for
+// two groove plates (one reading special cases, one not), the pruned and the keep-unused packages are
+// rendered by `bakeplay render`'s entry point and must be identical (largest channel difference 0),
+// the pruned file smaller, and both must pass `bakeplay validate`. (bakeplay's groove shader does not
+// area-sample special cases yet, so at this view the records change no pixel even where a material
+// reads them, measured; the groove case mostly guards the layout of the emptied record arrays and
+// that each plate of one package draws with its own grid.)
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "core/diagnostics.h"
+#include "geodesic/bake.h"
+#include "groove/grid.h"
+#include "groove/package.h"
+#include "groove/scene.h"
+#include "io/image.h"
+#include "io/image_compare.h"
+#include "mesh/shape_tool.h"
+#include "pipe/assemble.h"
+#include "play/render.h"
+#include "play/validate.h"
+#include "support/golden.h"
+
+namespace bake::play {
+namespace {
+
+namespace fs = std::filesystem;
+using pipe::Technique;
+
+fs::path bakeTorusFields(const fs::path& dir) {
+  Diagnostics diagnostics("test", true);
+  ShapeToolSettings shape;
+  shape.shape.name = "torus";
+  shape.shape.resolution = 16;
+  shape.output = (dir / "torus.glb").string();
+  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
+  std::ofstream(dir / "sources.json") << R"({"fields": [
+    {"name": "a", "sources": [{"vertex": 0}]},
+    {"name": "b", "sources": [{"vertex": 40}]},
+    {"name": "c", "sources": [{"vertex": 80}, {"vertex": 120}]}]})";
+  geodesic::Settings settings;
+  settings.input = shape.output;
+  settings.sourcesFile = (dir / "sources.json").string();
+  settings.output = (dir / "torus-fields.glb").string();
+  settings.common.quiet = true;
+  const Status status = geodesic::run(settings, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  return settings.output;
+}
+
+// A polyline and a line crossing it: ends, a corner and an intersection (records to leave out).
+fs::path bakePlate(const fs::path& dir, const std::string& name, const std::string& albedo) {
+  const std::string text = R"({"version": 1, "domain": {"size": [10, 10]},
+    "profiles": {"vee": {"points": [[-0.4, 0], [0, -0.3], [0.4, 0]]}},
+    "materials": {"steel": {"albedo": )" + albedo + R"(, "specular": [0.5, 0.5, 0.5], "shininess": 40}},
+    "base": "steel",
+    "grooves": [{"profile": "vee", "path": {"polyline": [[1, 1], [8, 1], [8, 8]]}},
+                {"profile": "vee", "path": {"line": [[5, 0.5], [5, 6]]}}]})";
+  auto scene = groove::parseGrooveScene(text, name + ".json");
+  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+  auto grid = groove::buildGrooveGrid(*scene, {});
+  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
+  auto package = groove::buildGroovePackage(*scene, *grid);
+  EXPECT_TRUE(package.isOk()) << package.status().describe();
+  const fs::path file = dir / (name + ".glb");
+  EXPECT_TRUE(glb::write(file, *package).isOk());
+  return file;
+}
+
+struct Rendered {
+  Image image;
+  std::uintmax_t bytes = 0;
+};
+
+// Assembles, writes and renders the scene; the image (sRGB PNG read back) and the file size.
+Rendered assembleAndRender(const pipe::Scene& scene, const std::vector<fs::path>& packages, bool keepUnused,
+                           const fs::path& file, const std::string& camera) {
+  pipe::AssembleSettings settings;
+  settings.keepUnused = keepUnused;
+  auto assembled = pipe::assemble(scene, packages, settings);
+  EXPECT_TRUE(assembled.isOk()) << assembled.status().describe();
+  if (!assembled.isOk()) return {};
+  EXPECT_TRUE(glb::write(file, *assembled).isOk());
+  RenderSettings render;
+  render.view.scenes = {file.string()};
+  render.view.width = 160;
+  render.view.height = 120;
+  render.view.camera = camera;
+  render.view.light = "0.3,0.5,1";
+  render.output = fs::path(file).replace_extension(".png").string();
+  Diagnostics diagnostics("bakeplay", true);
+  const Status status = runRender(render, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  auto image = readImage(render.output);
+  EXPECT_TRUE(image.isOk()) << image.status().describe();
+  return {image.isOk() ? *image : Image{}, fs::file_size(file)};
+}
+
+Status validate(const fs::path& file, std::string& verdicts) {
+  ValidateSettings settings;
+  settings.size = 32;
+  settings.common.quiet = true;
+  settings.packages = {file.string()};
+  Diagnostics diagnostics("bakeplay", true);
+  std::FILE* out = std::tmpfile();
+  const Status status = runValidate(settings, diagnostics, out);
+  std::rewind(out);
+  char line[4096];
+  while (std::fgets(line, sizeof line, out)) verdicts += line;
+  std::fclose(out);
+  return status;
+}
+
+// Renders both assemblies; they must match exactly, the pruned one be smaller, and both validate.
+void expectSameImageSmallerFile(const pipe::Scene& scene, const std::vector<fs::path>& packages, const fs::path& dir,
+                                const std::string& camera) {
+  const Rendered pruned = assembleAndRender(scene, packages, false, dir / "pruned.glb", camera);
+  const Rendered kept = assembleAndRender(scene, packages, true, dir / "kept.glb", camera);
+  auto difference = compareImages(pruned.image, kept.image, 0.0);
+  ASSERT_TRUE(difference.isOk()) << difference.status().describe();
+  EXPECT_EQ(difference->maxError, 0.0) << describe(*difference);
+  EXPECT_LT(pruned.bytes, kept.bytes);
+  ::testing::Test::RecordProperty("prunedBytes", std::to_string(pruned.bytes));
+  ::testing::Test::RecordProperty("keptBytes", std::to_string(kept.bytes));
+  // The picture shows something: not a single flat colour.
+  float lo = 1, hi = 0;
+  for (float v : pruned.image.pixels) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  EXPECT_GT(hi - lo, 0.2f);
+  for (const char* name : {"pruned.glb", "kept.glb"}) {
+    std::string verdicts;
+    const Status status = validate(dir / name, verdicts);
+    EXPECT_TRUE(status.isOk()) << name << ": " << status.describe() << "\n" << verdicts;
+  }
+}
+
+TEST(AssembleRender, GeodesicFieldsLeftOutDoNotChangeThePicture) {
+  const fs::path dir = test::freshTempDir("assemble_render_geodesic");
+  pipe::Scene scene;
+  pipe::Object torus;
+  torus.name = "torus";
+  torus.technique = Technique::Geodesic;
+  torus.fieldNames = {"a", "b", "c"};
+  torus.position = {0.5, 0, 0};
+  scene.objects = {torus};
+  pipe::Material sand;
+  sand.name = "sand";
+  sand.technique = Technique::Geodesic;
+  sand.fields = {"b"};
+  sand.geotexture = {{"version", 1}, {"texture", "isolines"}, {"fields", {"b"}}};
+  scene.materials = {sand};
+  expectSameImageSmallerFile(scene, {bakeTorusFields(dir)}, dir, "0.5,2,3:0.5,0,0");
+}
+
+TEST(AssembleRender, GrooveRecordsLeftOutDoNotChangeThePicture) {
+  const fs::path dir = test::freshTempDir("assemble_render_grooves");
+  pipe::Scene scene;
+  for (const char* name : {"near", "far"}) {
+    pipe::Object plate;
+    plate.name = name;
+    plate.technique = Technique::Grooves;
+    plate.material = scene.objects.size();
+    plate.position = {scene.objects.empty() ? -10.5 : 0.5, -5, 0};
+    scene.objects.push_back(plate);
+    pipe::Material material;
+    material.name = name;
+    material.technique = Technique::Grooves;
+    material.readsSpecialCases = scene.objects.size() == 1;  // "near" reads them, "far" does not
+    scene.materials.push_back(material);
+  }
+  const std::vector<fs::path> packages = {bakePlate(dir, "near-plate", "[0.7, 0.3, 0.2]"),
+                                          bakePlate(dir, "far-plate", "[0.2, 0.3, 0.7]")};
+  const std::string camera = "0,-6,16:0,0,0";
+  expectSameImageSmallerFile(scene, packages, dir, camera);
+
+  // Each plate draws with its own grid and materials (one package, two groove materials): the
+  // reddish plate on the left, the bluish one on the right.
+  const Rendered pruned = assembleAndRender(scene, packages, false, dir / "pruned.glb", camera);
+  const Image& image = pruned.image;
+  ASSERT_GE(image.channels, 3);
+  double left[3] = {0, 0, 0}, right[3] = {0, 0, 0};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) (x < image.width / 2 ? left : right)[c] += image.at(x, y, c);
+  EXPECT_GT(left[0], left[2]);
+  EXPECT_GT(right[2], right[0]);
+}
+
+}  // namespace
+}  // namespace bake::play
