@@ -140,6 +140,36 @@ TEST(TamBake, ThresholdTextureMarksTheFirstInkedTone) {
   EXPECT_EQ(parsed["levelCount"], 7);
 }
 
+// --skip-levels: the TAM and the threshold texture lose their finest levels; what remains is the full
+// bake's levels, byte for byte, and the metadata says how many were left out.
+TEST(TamBake, SkipLevelsKeepsTheFullBakesCoarserLevels) {
+  const fs::path dir = test::freshTempDir("tam_bake_skip");
+  Settings full = smallSettings(dir);
+  full.threshold = (dir / "threshold.ktx2").string();
+  Settings skipped = smallSettings(dir);
+  skipped.output = (dir / "skipped.ktx2").string();
+  skipped.threshold = (dir / "skipped-threshold.ktx2").string();
+  skipped.skipLevels = 2;
+  ASSERT_TRUE(runQuietly(full).isOk());
+  ASSERT_TRUE(runQuietly(skipped).isOk());
+  for (const auto& [whole, part] : {std::pair{full.output, skipped.output}, std::pair{full.threshold, skipped.threshold}}) {
+    Result<ktx2::Texture> a = ktx2::read(whole);
+    Result<ktx2::Texture> b = ktx2::read(part);
+    ASSERT_TRUE(a.isOk() && b.isOk());
+    EXPECT_EQ(b->width, a->width / 4);
+    ASSERT_EQ(b->levels.size() + 2, a->levels.size());
+    for (std::size_t level = 0; level < b->levels.size(); ++level) EXPECT_EQ(b->levels[level], a->levels[level + 2]) << level;
+    const json metadata = json::parse(b->text("BAKE_tam"));
+    EXPECT_EQ(metadata["skippedLevels"], 2);
+    EXPECT_EQ(metadata["strokeLevels"], std::max(0, json::parse(a->text("BAKE_tam"))["strokeLevels"].get<int>() - 2));
+  }
+  Settings tooMany = smallSettings(dir);
+  tooMany.output = (dir / "none.ktx2").string();
+  tooMany.skipLevels = 7;  // 64 x 64 has 7 levels: none would remain
+  EXPECT_EQ(runQuietly(tooMany).code(), ExitCode::Usage);
+  EXPECT_FALSE(fs::exists(tooMany.output));
+}
+
 TEST(TamBake, ZstdKeepsTheTexelsAndThreadsKeepTheBytes) {
   const fs::path dir = test::freshTempDir("tam_bake_zstd");
   Settings plain = smallSettings(dir);
