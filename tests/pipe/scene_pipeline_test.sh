@@ -43,11 +43,23 @@ for name in "$@"; do
 
   # The same image from the pruned and the full package, and fewer bytes.
   read -r -a view <<<"$(camera_of "$scene")"
-  "$bakeplay" render -q "$work/pruned/$name.glb" "${view[@]}" -o "$work/pruned.png"
-  "$bakeplay" render -q "$work/full/$name.glb" "${view[@]}" -o "$work/full.png"
+  for variant in pruned full; do
+    "$bakeplay" render -q "$work/$variant/$name.glb" "${view[@]}" -o "$work/$variant.png" --report "$work/$variant.render.json"
+  done
   cmp -s "$work/pruned.png" "$work/full.png" || fail "$name: the pruned package renders differently from the full one"
   pruned=$(stat -c %s "$work/pruned/$name.glb") full=$(stat -c %s "$work/full/$name.glb")
   ((pruned < full)) || fail "$name: the pruned package ($pruned bytes) is not smaller than the full one ($full bytes)"
+  # The runtime uploads and compiles no more for the pruned package: GPU bytes, and shader variants
+  # a subset of the full package's.
+  node -e '
+    const [a, b] = process.argv.slice(1).map(f => JSON.parse(require("fs").readFileSync(f)).statistics);
+    const extra = a.shaderVariants.filter(v => !b.shaderVariants.includes(v));
+    if (a.gpuBytes > b.gpuBytes || extra.length) {
+      console.error(`FAIL: pruned ${a.gpuBytes} GPU bytes vs ${b.gpuBytes}; variants only in pruned: ${extra}`);
+      process.exit(1);
+    }
+    console.log(`GPU bytes ${a.gpuBytes} pruned vs ${b.gpuBytes} full; ${a.shaderVariants.length} vs ${b.shaderVariants.length} shader variants`);
+  ' "$work/pruned.render.json" "$work/full.render.json" || fail "$name: the pruned package costs the runtime more"
   echo "$name: same image, $pruned bytes pruned vs $full full"
 done
 
