@@ -20,6 +20,7 @@ void writeText(const fs::path& path, const std::string& text) { std::ofstream(pa
 struct Command {
   std::string input, output, mode = "fast";
   double size = 1;
+  std::vector<int> sources;
   CommonOptions common;
 };
 
@@ -31,6 +32,7 @@ std::string keyOf(const std::vector<std::string>& args) {
   app.add_option("-o,--output", command.output)->required();
   app.add_option("--size", command.size);
   app.add_option("--mode", command.mode)->check(CLI::IsMember({"fast", "exact"}));
+  app.add_option_group("Sources")->add_option("--source", command.sources);
   addCommonOptions(app, command.common, {.cacheDir = true});
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   app.parse(reversed);
@@ -62,6 +64,13 @@ TEST_F(CacheKey, ChangesWithAnOption) {
   const std::string key = keyOf({input_, "-o", "out.glb", "--size", "2"});
   EXPECT_NE(key, keyOf({input_, "-o", "out.glb", "--size", "3"}));
   EXPECT_NE(key, keyOf({input_, "-o", "out.glb", "--size", "2", "--mode", "exact"}));
+}
+
+TEST_F(CacheKey, CountsOptionsInOptionGroups) {
+  const std::string key = keyOf({input_, "-o", "out.glb", "--source", "1"});
+  EXPECT_NE(key, keyOf({input_, "-o", "out.glb", "--source", "2"}));
+  EXPECT_NE(key, keyOf({input_, "-o", "out.glb", "--source", "1", "--source", "2"}));
+  EXPECT_NE(key, keyOf({input_, "-o", "out.glb"}));
 }
 
 TEST_F(CacheKey, ChangesWithOneInputByte) {
