@@ -37,6 +37,9 @@ for name in "$@"; do
     ninja -f "$work/$variant.ninja" >"$work/$variant.log" || { cat "$work/$variant.log"; fail "$name $variant: ninja failed"; }
     [[ -f "$work/$variant/$name.glb.validated" ]] || fail "$name $variant: not validated"
   done
+  # Assembling again gives the same bytes.
+  "$bakepipe" assemble "$scene" --out-dir "$work/pruned" --tools "$tools/bakepipe" -q -o "$work/again.glb"
+  cmp -s "$work/again.glb" "$work/pruned/$name.glb" || fail "$name: a second assembly differs from the first"
   # A second run executes nothing.
   again=$(ninja -f "$work/pruned.ninja" | ran)
   [[ -z "$again" ]] || fail "$name: a second run executed: $again"
