@@ -1,6 +1,8 @@
 // Scene packages made by `bakepipe assemble` (pipe/assemble.h) in the runtime: leaving out what no
-// material reads must not change a pixel. For a geodesic torus that reads one of three fields and for
-// two groove plates (one reading special cases, one not), the pruned and the keep-unused packages are
+// material reads must not change a pixel. For a geodesic torus that reads one of three fields, a
+// revolved vase whose material reads no displacement map beside a hatched torus (no threshold
+// texture), and two groove plates (one reading special cases, one not), the pruned and the keep-unused
+// packages are
 // rendered by `bakeplay render`'s entry point and must be identical (largest channel difference 0),
 // the pruned file smaller, and both must pass `bakeplay validate`. (bakeplay's groove shader does not
 // area-sample special cases yet, so at this view the records change no pixel even where a material
@@ -20,6 +22,9 @@
 #include "io/image_compare.h"
 #include "mesh/shape_tool.h"
 #include "pipe/assemble.h"
+#include "revolution/bake.h"
+#include "tam/bake.h"
+#include "mesh/patterns.h"
 #include "play/render.h"
 #include "play/validate.h"
 #include "support/golden.h"
@@ -68,6 +73,50 @@ fs::path bakePlate(const fs::path& dir, const std::string& name, const std::stri
   const fs::path file = dir / (name + ".glb");
   EXPECT_TRUE(glb::write(file, *package).isOk());
   return file;
+}
+
+// A revolved profile with a displacement map and a base colour texture.
+fs::path bakeVase(const fs::path& dir) {
+  for (const char* pattern : {"hammered", "glaze"}) {
+    auto image = makePattern(pattern, 64);
+    EXPECT_TRUE(image.isOk()) << image.status().describe();
+    EXPECT_TRUE(writeImage(dir / (std::string(pattern) + ".png"), *image, PixelType::U8).isOk());
+  }
+  std::ofstream(dir / "profile.json") << R"({"contours": [{"closed": false, "points": [[0.3, 0], [0.4, 0.5], [0.2, 1]]}]})";
+  revolution::Settings settings;
+  settings.input = (dir / "profile.json").string();
+  settings.output = (dir / "vase.glb").string();
+  settings.resolution = 128;
+  settings.heightMap = (dir / "hammered.png").string();
+  settings.heightScale = 0.02;
+  settings.baseColorTexture = (dir / "glaze.png").string();
+  settings.common.quiet = true;
+  Diagnostics diagnostics("test", true);
+  const Status status = revolution::run(settings, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  return settings.output;
+}
+
+// A small TAM with its threshold texture on a torus.
+fs::path bakeHatchedTorus(const fs::path& dir) {
+  Diagnostics diagnostics("test", true);
+  ShapeToolSettings shape;
+  shape.shape.name = "torus";
+  shape.shape.resolution = 16;
+  shape.output = (dir / "torus.glb").string();
+  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
+  std::ofstream(dir / "style.json") << R"({"tones": 4, "resolution": 64, "levels": 2, "candidates": 4})";
+  tam::Settings settings;
+  settings.style = (dir / "style.json").string();
+  settings.output = (dir / "tam.ktx2").string();
+  settings.threshold = (dir / "threshold.ktx2").string();
+  settings.material.mesh = shape.output;
+  settings.material.package = (dir / "hatched.glb").string();
+  settings.material.tilesPerUnit = 2;
+  settings.common.quiet = true;
+  const Status status = tam::run(settings, diagnostics);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  return settings.material.package;
 }
 
 struct Rendered {
@@ -155,6 +204,31 @@ TEST(AssembleRender, GeodesicFieldsLeftOutDoNotChangeThePicture) {
   sand.geotexture = {{"version", 1}, {"texture", "isolines"}, {"fields", {"b"}}};
   scene.materials = {sand};
   expectSameImageSmallerFile(scene, {bakeTorusFields(dir)}, dir, "0.5,2,3:0.5,0,0");
+}
+
+TEST(AssembleRender, DisplacementAndThresholdLeftOutDoNotChangeThePicture) {
+  const fs::path dir = test::freshTempDir("assemble_render_revolution_hatching");
+  pipe::Scene scene;
+  pipe::Object vase;
+  vase.name = "vase";
+  vase.technique = Technique::Revolution;
+  vase.position = {-0.8, -0.5, 0};
+  pipe::Object torus;
+  torus.name = "torus";
+  torus.technique = Technique::Hatching;
+  torus.material = 1;
+  torus.position = {0.8, 0, 0};
+  torus.scale = 0.6;
+  scene.objects = {vase, torus};
+  pipe::Material smooth;
+  smooth.name = "smooth";
+  smooth.technique = Technique::Revolution;
+  smooth.readsDisplacement = false;
+  pipe::Material ink;
+  ink.name = "ink";
+  ink.technique = Technique::Hatching;
+  scene.materials = {smooth, ink};
+  expectSameImageSmallerFile(scene, {bakeVase(dir), bakeHatchedTorus(dir)}, dir, "0,1,3.5:0,0,0");
 }
 
 TEST(AssembleRender, GrooveRecordsLeftOutDoNotChangeThePicture) {
