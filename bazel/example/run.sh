@@ -12,6 +12,7 @@ set -euo pipefail
 build=$1 work=$2
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "FAIL: $*" >&2; exit 1; }
+[ -d "$work" ] && chmod -R u+w "$work"  # Bazel leaves its output tree read-only
 rm -rf "$work"
 mkdir -p "$work"
 
