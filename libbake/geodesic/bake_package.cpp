@@ -109,8 +109,8 @@ glb::Package buildPackage(const TriangleMesh& mesh, const SurfaceBuild& build,
     primitive.attributes.push_back(encodeField(attribute, distances[f], build.vertexMap, scale, settings.encoding));
     std::size_t unreachable = 0;
     for (std::uint32_t v : build.vertexMap) unreachable += distances[f][v] == kUnreachable ? 1 : 0;
-    json field = {{"attribute", attribute},      {"name", fields[f].name},
-                  {"maxDistance", largest},      {"scale", scale},
+    json field = {{fmt::kFieldAttribute, attribute},      {fmt::kFieldName, fields[f].name},
+                  {fmt::kFieldMaxDistance, largest},      {"scale", scale},
                   {"unreachableVertices", unreachable}, {"sources", json::array()}};
     for (std::size_t s = 0; s < fields[f].specs.size(); ++s)
       field["sources"].push_back(describeSource(fields[f].specs[s], fields[f].points[s], fields[f].snapDistances[s]));
@@ -137,10 +137,10 @@ glb::Package buildPackage(const TriangleMesh& mesh, const SurfaceBuild& build,
   package.extensions[fmt::kExtension] = {
       {"version", fmt::kVersion},
       {"method", methodName(settings.method)},
-      {"encoding", asFloat ? fmt::kEncodingFloat : fmt::kEncodingUnorm16},
-      {"normalization", normalizationName(settings.normalization)},
+      {fmt::kKeyEncoding, asFloat ? fmt::kEncodingFloat : fmt::kEncodingUnorm16},
+      {fmt::kKeyNormalization, normalizationName(settings.normalization)},
       {"unreachableValue", asFloat ? json(fmt::kUnreachableFloat) : json(fmt::kUnreachableUnorm16)},
-      {"fields", std::move(described)}};
+      {fmt::kKeyFields, std::move(described)}};
   return package;
 }
 

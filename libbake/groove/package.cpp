@@ -228,7 +228,7 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
       {"hmax", scene.hmax},
       {"dmax", scene.dmax},
       {"baseMaterial", scene.baseMaterial},
-      {"counts", {{"cells", grid.cellCount()},
+      {fmt::kCounts, {{"cells", grid.cellCount()},
                   {"primitiveRefs", grid.primitiveRefs.size()},
                   {"recordRefs", grid.recordRefs.size()},
                   {"records", grid.records.size()},
@@ -243,7 +243,7 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
                    {"profiles", sizeof(fmt::Profile)},
                    {"profilePoints", fmt::kProfilePointSize},
                    {"materials", sizeof(fmt::Material)}}},
-      {"bufferViews", views},
+      {fmt::kBufferViews, views},
       {"profileNames", namesOf(scene.profiles)},
       {"materialNames", namesOf(scene.materials)}};
   if (!scene.units.empty()) extension["units"] = scene.units;

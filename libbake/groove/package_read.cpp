@@ -35,14 +35,14 @@ struct Reader {
   }
 
   Result<std::uint64_t> count(const char* key) const {
-    const json& counts = extension.value("counts", json::object());
+    const json& counts = extension.value(fmt::kCounts, json::object());
     if (!counts.contains(key) || !isIndex(counts[key])) return fail(std::string("counts/") + key, "missing count");
     return counts[key].get<std::uint64_t>();
   }
 
   template <class T>
   Status array(const char* key, std::uint64_t items, std::size_t stride, std::vector<T>& out) const {
-    const json& views = extension.value("bufferViews", json::object());
+    const json& views = extension.value(fmt::kBufferViews, json::object());
     if (!views.contains(key) || !isIndex(views[key])) return fail(std::string("bufferViews/") + key, "missing bufferView");
     const std::uint64_t view = views[key].get<std::uint64_t>();
     if (view >= package.blobs.size()) return fail(std::string("bufferViews/") + key, "bufferView " + std::to_string(view) + " does not exist");

@@ -113,7 +113,7 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   json extension = {{"version", fmt::kVersion}};
 
   package.blobs.push_back({state.encoded.bytes, 16});
-  extension["shapeMap"] = {{"bufferView", 0},
+  extension[fmt::kShapeMap] = {{fmt::kBufferView, 0},
                            {"width", grid.width},
                            {"height", grid.height},
                            {"texelSize", grid.texelSize},
@@ -128,7 +128,7 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   for (const ProxyBand& band : state.bands) bands.push_back({band.hMin, band.hMax, band.rMax});
   extension["proxyBands"] = bands;
   if (state.displacement) {
-    extension["displacementMap"] = {{"bufferView", package.blobs.size()},
+    extension[fmt::kDisplacementMap] = {{fmt::kBufferView, package.blobs.size()},
                                     {"width", state.displacement->width},
                                     {"height", state.displacement->height},
                                     {"derivativeScale", state.displacement->derivativeScale},
@@ -137,7 +137,7 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   }
   extension["projection"] = projectionJson(state);
   if (!state.arcLengthMap.empty()) {
-    extension["arcLengthMap"] = {{"bufferView", package.blobs.size()}};
+    extension[fmt::kArcLengthMap] = {{fmt::kBufferView, package.blobs.size()}};
     package.blobs.push_back({state.arcLengthMap, 16});
   }
 

@@ -76,9 +76,9 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
 
   package.blobs.push_back({state.tamBytes, 16});
   package.images.push_back({{"name", "tonal art map"}, {"bufferView", 0}, {"mimeType", fmt::kKtx2MimeType}});
-  json extension = {{"version", fmt::kVersion}, {"tam", 0}};
+  json extension = {{"version", fmt::kVersion}, {fmt::kTamImage, 0}};
   if (!state.thresholdBytes.empty()) {
-    extension["threshold"] = package.images.size();
+    extension[fmt::kThresholdImage] = package.images.size();
     package.images.push_back({{"name", "threshold texture"}, {"bufferView", package.blobs.size()}, {"mimeType", fmt::kKtx2MimeType}});
     package.blobs.push_back({state.thresholdBytes, 16});
   }

@@ -127,8 +127,8 @@ Status readFields(const Reader& in, GeoTextureParams& params) {
     if (combine != "min" && combine != "separate") return in.error("combine must be \"separate\" or \"min\"");
     params.combineMin = combine == "min";
   }
-  if (body.contains("fields")) {
-    const nlohmann::json& list = body["fields"];
+  if (body.contains(fmt::kKeyFields)) {
+    const nlohmann::json& list = body[fmt::kKeyFields];
     if (!list.is_array() || list.empty() || list.size() > std::size_t(kMaxSlots)) {
       return in.error("fields must be a list of 1 to 4 field indices");
     }
@@ -281,7 +281,7 @@ Result<std::vector<int>> resolveFields(const GeoTextureParams& params, const glb
 // Whether the package stores distances in model units (normalization "none") rather than in [0, 1].
 bool storesModelUnits(const glb::Package& package) {
   const nlohmann::json& root = package.extensions.value(fmt::kExtension, nlohmann::json::object());
-  return root.is_object() && root.value("normalization", "") == fmt::kNormalizationNone;
+  return root.is_object() && root.value(fmt::kKeyNormalization, "") == fmt::kNormalizationNone;
 }
 
 // Factor from a stored value to the normalised distance the presets use: 1, or 1 / maxDistance for
@@ -289,9 +289,9 @@ bool storesModelUnits(const glb::Package& package) {
 float normalisingFactor(const glb::Package& package, const std::string& attribute) {
   if (!storesModelUnits(package)) return 1;
   for (const nlohmann::json& field :
-       package.extensions[fmt::kExtension].value("fields", nlohmann::json::array())) {
-    if (field.is_object() && field.value("attribute", "") == attribute) {
-      const double maxDistance = field.value("maxDistance", 0.0);
+       package.extensions[fmt::kExtension].value(fmt::kKeyFields, nlohmann::json::array())) {
+    if (field.is_object() && field.value(fmt::kFieldAttribute, "") == attribute) {
+      const double maxDistance = field.value(fmt::kFieldMaxDistance, 0.0);
       return maxDistance > 0 ? float(1.0 / maxDistance) : 1.0f;
     }
   }
@@ -326,13 +326,13 @@ Status checkRootExtension(const glb::Package& package, const std::string& name) 
   const Location where{name, std::string("extensions.") + fmt::kExtension};
   if (!root.is_object()) return invalidInput("BAKE_geodesic must be an object", where);
   std::string encoding;
-  if (root.contains("encoding")) {
-    encoding = root["encoding"].is_string() ? root["encoding"].get<std::string>() : "";
+  if (root.contains(fmt::kKeyEncoding)) {
+    encoding = root[fmt::kKeyEncoding].is_string() ? root[fmt::kKeyEncoding].get<std::string>() : "";
     if (encoding != fmt::kEncodingFloat && encoding != fmt::kEncodingUnorm16) {
       return invalidInput("encoding must be \"float\" or \"unorm16\"", where);
     }
   }
-  const nlohmann::json fields = root.value("fields", nlohmann::json::array());
+  const nlohmann::json fields = root.value(fmt::kKeyFields, nlohmann::json::array());
   if (!fields.is_array()) return invalidInput("fields must be a list", where);
   for (std::size_t m = 0; m < package.meshes.size(); ++m) {
     for (std::size_t p = 0; p < package.meshes[m].primitives.size(); ++p) {
@@ -340,7 +340,7 @@ Status checkRootExtension(const glb::Package& package, const std::string& name) 
       if (geodesicFieldsOf(primitive).empty()) continue;
       const Location here{name, "mesh " + std::to_string(m) + " primitive " + std::to_string(p)};
       for (const nlohmann::json& field : fields) {
-        const std::string attribute = field.is_object() ? field.value("attribute", "") : "";
+        const std::string attribute = field.is_object() ? field.value(fmt::kFieldAttribute, "") : "";
         if (!fieldIndexOf(attribute))
           return invalidInput("fields entry without a valid _GEODESIC_k attribute", where);
         const glb::Attribute* a = primitive.find(attribute);

@@ -61,7 +61,7 @@ HeaderBlock headerBlock(const groove::GroovePackage& package) {
 // checked that they exist).
 std::array<std::size_t, fmt::kArrayCount> viewIndices(const nlohmann::json& extension) {
   std::array<std::size_t, fmt::kArrayCount> views{};
-  for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[k] = extension["bufferViews"][fmt::kArrayKeys[k]].get<std::size_t>();
+  for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[k] = extension[fmt::kBufferViews][fmt::kArrayKeys[k]].get<std::size_t>();
   return views;
 }
 

@@ -169,16 +169,16 @@ Result<HatchingParams> parseHatching(const nlohmann::json& extension, const glb:
       }
     }
   }
-  BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, embeddedKtx2(package, e["tam"], "tam", where));
-  p.tamImage = e["tam"].get<int>();
+  BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> bytes, embeddedKtx2(package, e[fmt::kTamImage], fmt::kTamImage, where));
+  p.tamImage = e[fmt::kTamImage].get<int>();
   auto decoded = ktx2::decode(bytes, where.file + " " + where.element + " " + ext + ".tam (image " +
                                          std::to_string(p.tamImage) + ")");
   if (!decoded.isOk()) return invalidInput(ext + ".tam does not decode: " + decoded.status().message(), where);
   p.tam = std::move(decoded).value();
   BAKE_RETURN_IF_ERROR(checkTam(p.tam, p, where));
 
-  if (e.contains("threshold")) {
-    BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> t, embeddedKtx2(package, e["threshold"], "threshold", where));
+  if (e.contains(fmt::kThresholdImage)) {
+    BAKE_ASSIGN_OR_RETURN(const std::span<const std::uint8_t> t, embeddedKtx2(package, e[fmt::kThresholdImage], fmt::kThresholdImage, where));
     auto threshold = ktx2::decode(t, where.file + " " + ext + ".threshold");
     if (!threshold.isOk()) return invalidInput(ext + ".threshold does not decode: " + threshold.status().message(), where);
     if (threshold->layers != 0 || threshold->format != ktx2::Format::R8 || threshold->width != p.tam.width ||

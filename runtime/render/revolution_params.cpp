@@ -92,7 +92,7 @@ std::size_t texelBytesOf(ShapeEncoding encoding) {
 }
 
 Status readShapeMap(const Fields& root, const glb::Package& package, RevolutionParams::ShapeMap& map) {
-  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("shapeMap"));
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object(fmt::kShapeMap));
   BAKE_ASSIGN_OR_RETURN(map.width, in.integer("width", 1, 16384));
   BAKE_ASSIGN_OR_RETURN(map.height, in.integer("height", 1, 16384));
   BAKE_ASSIGN_OR_RETURN(const double texel, in.positive("texelSize"));
@@ -113,7 +113,7 @@ Status readShapeMap(const Fields& root, const glb::Package& package, RevolutionP
     BAKE_ASSIGN_OR_RETURN(const double scale, in.positive("distanceScale"));
     map.distanceScale = float(scale);
   }
-  BAKE_ASSIGN_OR_RETURN(map.bufferView, in.integer("bufferView", 0, 1 << 30));
+  BAKE_ASSIGN_OR_RETURN(map.bufferView, in.integer(fmt::kBufferView, 0, 1 << 30));
   return checkBufferView(in, "bufferView", map.bufferView, package,
                          std::size_t(map.width) * std::size_t(map.height), texelBytesOf(map.encoding),
                          std::to_string(map.width) + "x" + std::to_string(map.height) + " RGBA " + encoding);
@@ -164,8 +164,8 @@ Status readBands(const Fields& root, RevolutionParams& params) {
 }
 
 Status readDisplacement(const Fields& root, const glb::Package& package, RevolutionParams& params) {
-  if (!root.has("displacementMap")) return {};
-  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("displacementMap"));
+  if (!root.has(fmt::kDisplacementMap)) return {};
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object(fmt::kDisplacementMap));
   RevolutionParams::Displacement d;
   BAKE_ASSIGN_OR_RETURN(d.width, in.integer("width", 1, 16384));
   BAKE_ASSIGN_OR_RETURN(d.height, in.integer("height", 1, 16384));
@@ -175,7 +175,7 @@ Status readDisplacement(const Fields& root, const glb::Package& package, Revolut
     BAKE_ASSIGN_OR_RETURN(const double height, in.number("heightScale", 0, 1e30));
     d.heightScale = float(height);
   }
-  BAKE_ASSIGN_OR_RETURN(d.bufferView, in.integer("bufferView", 0, 1 << 30));
+  BAKE_ASSIGN_OR_RETURN(d.bufferView, in.integer(fmt::kBufferView, 0, 1 << 30));
   BAKE_RETURN_IF_ERROR(checkBufferView(in, "bufferView", d.bufferView, package,
                                        std::size_t(d.width) * std::size_t(d.height), 4,
                                        std::to_string(d.width) + "x" + std::to_string(d.height) + " RG unorm16"));
@@ -212,9 +212,9 @@ Status readProjection(const Fields& root, const glb::Package& package, Revolutio
       params.sphereCentreH = float(centre);
     }
   }
-  if (root.has("arcLengthMap")) {
-    BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("arcLengthMap"));
-    BAKE_ASSIGN_OR_RETURN(const int view, in.integer("bufferView", 0, 1 << 30));
+  if (root.has(fmt::kArcLengthMap)) {
+    BAKE_ASSIGN_OR_RETURN(const Fields in, root.object(fmt::kArcLengthMap));
+    BAKE_ASSIGN_OR_RETURN(const int view, in.integer(fmt::kBufferView, 0, 1 << 30));
     BAKE_RETURN_IF_ERROR(checkBufferView(in, "bufferView", view, package,
                                          std::size_t(map.width) * std::size_t(map.height), 2,
                                          "one R unorm16 per shape-map texel"));
