@@ -46,6 +46,7 @@ Result<Loaded> load(const PipeSettings& settings) {
   planSettings.outputDirectory = settings.outputDirectory.empty() ? defaultOutputDirectory(loaded.scene.name)
                                                                   : fs::absolute(settings.outputDirectory);
   planSettings.keepUnused = settings.keepUnused;
+  if (!settings.cacheDirectory.empty()) planSettings.cacheDirectory = fs::absolute(settings.cacheDirectory);
   BAKE_ASSIGN_OR_RETURN(loaded.plan, makePlan(loaded.scene, planSettings));
   return loaded;
 }
@@ -106,6 +107,7 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   settings.assembled = defaultAssembledPackage(loaded.plan.packages.front().parent_path(), loaded.scene.name);
   settings.ninjaFile = fs::absolute(command.output).lexically_normal();
   settings.keepUnused = command.pipe.keepUnused;
+  if (!command.pipe.cacheDirectory.empty()) settings.cacheDirectory = fs::absolute(command.pipe.cacheDirectory);
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
   const std::string text = ninjaFile(loaded.scene, loaded.plan, settings);

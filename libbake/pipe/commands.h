@@ -16,6 +16,7 @@ struct PipeSettings {
   std::filesystem::path outputDirectory;  // default: out/<scene name> beside the current directory
   std::filesystem::path toolDirectory;    // default: the directory bakepipe runs from
   bool keepUnused = false;
+  std::filesystem::path cacheDirectory;  // passed to every bake step as --cache-dir
   CommonOptions common;
 };
 

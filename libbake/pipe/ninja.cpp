@@ -44,6 +44,7 @@ std::string pipeOptions(const Scene& scene, const Plan& plan, const NinjaSetting
   if (!plan.packages.empty()) line += " --out-dir " + shellQuote(plan.packages.front().parent_path().string());
   if (!settings.toolDirectory.empty()) line += " --tools " + shellQuote(settings.toolDirectory.string());
   if (keepUnused) line += " --keep-unused";
+  if (!settings.cacheDirectory.empty()) line += " --cache-dir " + shellQuote(settings.cacheDirectory.string());
   return line;
 }
 

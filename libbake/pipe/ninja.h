@@ -17,6 +17,7 @@ struct NinjaSettings {
   std::filesystem::path assembled;      // the scene package (default: <out>/<scene>.glb)
   std::filesystem::path ninjaFile;      // the file being written: rewritten when the scene changes
   bool keepUnused = false;              // the plan was made with --keep-unused (passed on)
+  std::filesystem::path cacheDirectory; // the plan's --cache-dir (passed on)
 };
 
 std::string ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings);

@@ -252,9 +252,15 @@ struct Planner {
     }
     if (object.technique != Technique::Hatching) step.arguments.insert(step.arguments.end(), {"-o", step.outputs[0].string()});
     step.arguments.push_back("-q");
+    cached(step);
     plan.packages.push_back(step.outputs[0]);
     plan.steps.push_back(std::move(step));
     return {};
+  }
+
+  void cached(Step& step) const {
+    if (!settings.cacheDirectory.empty())
+      step.arguments.insert(step.arguments.end(), {"--cache-dir", settings.cacheDirectory.string()});
   }
 
   // bakeshape steps for the generated files a kept step reads, before the bakes; the others are
@@ -271,6 +277,7 @@ struct Planner {
       step.tool = "bakeshape";
       step.arguments = {g.shape, "-o", out(g.output).string(), "-q"};
       if (g.resolution) step.arguments.insert(step.arguments.begin() + 1, {"--resolution", std::to_string(*g.resolution)});
+      cached(step);
       step.outputs = {out(g.output)};
       steps.push_back(std::move(step));
     }

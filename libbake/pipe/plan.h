@@ -17,6 +17,7 @@ namespace bake::pipe {
 struct PlanSettings {
   std::filesystem::path outputDirectory;  // where generated files and packages go
   bool keepUnused = false;                // leave nothing out (the full bakes, for comparison)
+  std::filesystem::path cacheDirectory;   // given to every step as --cache-dir (empty: none)
 };
 
 // One tool run. Paths are absolute; `tool` is a tool name ("geobake"), resolved by whoever runs it.

@@ -159,3 +159,16 @@ TEST(PipePlan, CommandLinesQuoteWordsAShellWouldSplit) {
 
 }  // namespace
 }  // namespace bake::pipe
+
+namespace bake::pipe {
+namespace {
+
+TEST(PipePlan, CacheDirectoryIsGivenToEveryStep) {
+  PlanSettings settings{kOut, false, kOut / "cache"};
+  Result<Plan> plan = makePlan(exampleScene("revolution"), settings);
+  ASSERT_TRUE(plan.isOk()) << plan.status().describe();
+  for (const Step& step : plan->steps) EXPECT_EQ(argumentAfter(step, "--cache-dir"), (kOut / "cache").string()) << step.id;
+}
+
+}  // namespace
+}  // namespace bake::pipe

@@ -17,6 +17,8 @@ void addPipeOptions(CLI::App& command, bake::pipe::PipeSettings& pipe) {
   command.add_option("--tools", pipe.toolDirectory,
                      "Directory of the bakers (default: bakepipe's own; the build tree's tools/<tool>/ also works)");
   command.add_flag("--keep-unused", pipe.keepUnused, "Leave nothing out: full bakes, every baked part assembled");
+  command.add_option("--cache-dir", pipe.cacheDirectory,
+                     "Give every bake step this content-addressed cache (--cache-dir of the bakers)");
 }
 
 }  // namespace
