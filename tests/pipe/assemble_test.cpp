@@ -404,6 +404,16 @@ TEST(PipeAssemble, RevolutionDropsAnUnreadDisplacementMapAndKeepsItsOtherMaps) {
   EXPECT_EQ(assembled->blobs.size(), grv::kArrayCount + 2 + arcLength);
   EXPECT_EQ(report.dropped.size(), 1u);
   EXPECT_NE(report.dropped.at(0).find("ring: displacement map"), std::string::npos);
+
+  // Keeping unused data, the displacement map's bytes are in the package, but unreferenced.
+  AssembleSettings keep;
+  keep.keepUnused = true;
+  auto kept = assemble(scene, {inputs().grooves, vase}, keep);
+  ASSERT_TRUE(kept.isOk()) << kept.status().describe();
+  EXPECT_EQ(kept->blobs.size(), grv::kArrayCount + 3 + arcLength);
+  const auto& displacement = original.blobs.at(baked[rev::kDisplacementMap][rev::kBufferView].get<std::size_t>()).bytes;
+  EXPECT_TRUE(std::any_of(kept->blobs.begin(), kept->blobs.end(), [&](const glb::Blob& b) { return b.bytes == displacement; }));
+  EXPECT_FALSE(kept->materials[std::size_t(materialNamed(*kept, "smooth"))]["extensions"][rev::kExtension].contains(rev::kDisplacementMap));
 }
 
 TEST(PipeAssemble, RevolutionWithoutBaseColourDropsTheImage) {

@@ -1,13 +1,12 @@
 // Scene packages made by `bakepipe assemble` (pipe/assemble.h) in the runtime: leaving out what no
 // material reads must not change a pixel. For a geodesic torus that reads one of three fields, a
 // revolved vase whose material reads no displacement map beside a hatched torus (no threshold
-// texture), and two groove plates (one reading special cases, one not), the pruned and the keep-unused
-// packages are
-// rendered by `bakeplay render`'s entry point and must be identical (largest channel difference 0),
-// the pruned file smaller, and both must pass `bakeplay validate`. (bakeplay's groove shader does not
-// area-sample special cases yet, so at this view the records change no pixel even where a material
-// reads them, measured; the groove case mostly guards the layout of the emptied record arrays and
-// that each plate of one package draws with its own grid.)
+// texture), and two groove plates (one reading special cases, one not), the pruned and the
+// keep-unused packages are rendered by `bakeplay render`'s entry point and must be identical
+// (largest channel difference 0), the pruned file smaller, and both must pass `bakeplay validate`.
+// (bakeplay's groove shader does not area-sample special cases yet, so at this view the records
+// change no pixel even where a material reads them, measured; the groove case mostly guards the
+// layout of the emptied record arrays and that each plate of one package draws with its own grid.)
 #include <gtest/gtest.h>
 
 #include <cstdio>
