@@ -485,6 +485,29 @@ TEST(PipeAssemble, AMissingPackageOrTheWrongTechniqueNamesTheFileAndTheObject) {
   EXPECT_NE(swapped.status().describe().find(geo::kExtension), std::string::npos);
 }
 
+TEST(PipeAssemble, GeodesicObjectsShareTheRootFieldListOnlyWhenItAgrees) {
+  Scene scene = torusAndPlate();
+  Object second = scene.objects[0];
+  second.name = "torus2";
+  scene.objects[1] = second;  // two geodesic objects with the same material: one field list
+  auto same = assemble(scene, {inputs().geodesic, inputs().geodesic}, {});
+  ASSERT_TRUE(same.isOk()) << same.status().describe();
+  EXPECT_EQ(same->extensions[geo::kExtension][geo::kKeyFields].size(), 1u);
+  EXPECT_EQ(same->meshes.size(), 2u);
+  EXPECT_EQ(same->materials.size(), 2u);
+
+  Material other = scene.materials[0];
+  other.name = "other";
+  other.fields = {"c"};
+  other.geotexture["fields"] = {"c"};
+  scene.materials[1] = other;
+  scene.objects[1].material = 1;  // field "c" is _GEODESIC_0 there, "b" here: the lists differ
+  auto differ = assemble(scene, {inputs().geodesic, inputs().geodesic}, {});
+  ASSERT_FALSE(differ.isOk());
+  EXPECT_EQ(differ.status().code(), ExitCode::Unsupported);
+  EXPECT_NE(differ.status().describe().find("torus2"), std::string::npos);
+}
+
 TEST(PipeAssemble, AFieldThePackageLacksIsAnError) {
   Scene scene = torusAndPlate();
   scene.materials[0].fields = {"d"};
