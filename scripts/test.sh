@@ -2,7 +2,7 @@
 # The test command: installs what is missing, builds, and runs the whole test suite with CTest.
 #   scripts/test.sh              normal build (build/)
 #   scripts/test.sh --sanitize   ASan + UBSan build (build-sanitize/)
-#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli data)
+#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
