@@ -7,6 +7,7 @@
 #include "pipe/assemble.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <system_error>
 
@@ -278,6 +279,42 @@ Status assembleObject(const Scene& scene, std::size_t index, const fs::path& pat
   return {};
 }
 
+// The scene's cameras as glTF perspective cameras on nodes of their own (looking down local -Z from
+// the eye at the target, +Y up as near the world's +Y as the view allows), so a viewer opens the
+// assembled scene in the view the scene was planned for; the first is the one bakeplay takes.
+void addCameras(const Scene& scene, glb::Package& out) {
+  for (const Camera& camera : scene.cameras) {
+    std::array<double, 3> back{}, up{0, 1, 0}, right{}, trueUp{};
+    double length = 0;
+    for (int k = 0; k < 3; ++k) {
+      back[k] = camera.eye[k] - camera.target[k];
+      length += back[k] * back[k];
+    }
+    for (double& b : back) b /= std::sqrt(length);
+    if (std::abs(back[1]) > 0.999) up = {0, 0, -1};
+    const auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    right = cross(up, back);
+    const double r = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+    for (double& x : right) x /= r;
+    trueUp = cross(back, right);
+    glb::Node node;
+    node.name = camera.name.empty() ? "camera" : camera.name;
+    node.matrix = std::array<double, 16>{right[0], right[1], right[2], 0, trueUp[0], trueUp[1], trueUp[2], 0,
+                                         back[0],  back[1],  back[2],  0, camera.eye[0], camera.eye[1], camera.eye[2], 1};
+    node.camera = int(out.cameras.size());
+    out.cameras.push_back({{"type", "perspective"},
+                           {"name", node.name},
+                           {"perspective",
+                            {{"yfov", camera.yfovDegrees * std::acos(-1.0) / 180.0},
+                             {"aspectRatio", double(camera.width) / camera.height},
+                             {"znear", 0.01}}}});
+    out.sceneRoots.push_back(int(out.nodes.size()));
+    out.nodes.push_back(std::move(node));
+  }
+}
+
 }  // namespace
 
 Result<glb::Package> assemble(const Scene& scene, const std::vector<fs::path>& packages, const AssembleSettings& settings,
@@ -290,6 +327,7 @@ Result<glb::Package> assemble(const Scene& scene, const std::vector<fs::path>& p
   glb::Package assembled;
   for (std::size_t k = 0; k < scene.objects.size(); ++k)
     BAKE_RETURN_IF_ERROR(assembleObject(scene, k, packages[k], settings, out, assembled));
+  addCameras(scene, assembled);
   return assembled;
 }
 

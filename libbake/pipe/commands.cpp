@@ -132,7 +132,9 @@ Status runAssembleCommand(const AssembleCommand& command, Diagnostics& diagnosti
     BAKE_ASSIGN_OR_RETURN(const glb::Package package, assemble(loaded.scene, loaded.plan.packages, settings, &report));
     BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, glb::encode(package));
     for (const std::string& item : report.dropped) diagnostics.info("left out " + item);
+    for (const std::string& item : report.kept) diagnostics.info("kept " + item);
     session.report().setStatistic("dropped", report.dropped);
+    session.report().setStatistic("kept", report.kept);
     session.report().setStatistic("inputBytes", report.inputBytes);
     session.report().setStatistic("outputBytes", bytes.size());
     const fs::path output = command.output.empty()

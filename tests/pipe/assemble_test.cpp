@@ -236,6 +236,40 @@ TEST(PipeAssemble, PlacesEachObjectUnderItsNode) {
   EXPECT_GT(report.inputBytes, fs::file_size(inputs().geodesic));
 }
 
+// The scene's camera becomes a glTF perspective camera on a root node at the eye, looking down its
+// local -Z at the target, with +Y up as near the world's +Y as the view allows.
+TEST(PipeAssemble, TheScenesCameraFramesTheAssembledScene) {
+  Scene scene = torusAndPlate();
+  Camera camera;
+  camera.name = "front";
+  camera.eye = {0, 3, 4};
+  camera.target = {0, 0, 0};
+  camera.yfovDegrees = 45;
+  camera.width = 800;
+  camera.height = 400;
+  scene.cameras = {camera};
+  auto assembled = assemble(scene, {inputs().geodesic, inputs().grooves}, {});
+  ASSERT_TRUE(assembled.isOk()) << assembled.status().describe();
+  const glb::Package p = encodedAndRead(*assembled);
+  ASSERT_EQ(p.cameras.size(), 1u);
+  EXPECT_EQ(p.cameras[0]["type"], "perspective");
+  EXPECT_NEAR(p.cameras[0]["perspective"]["yfov"].get<double>(), 45 * std::acos(-1.0) / 180, 1e-12);
+  EXPECT_DOUBLE_EQ(p.cameras[0]["perspective"]["aspectRatio"].get<double>(), 2.0);
+  ASSERT_EQ(p.sceneRoots.size(), 3u);
+  const glb::Node& node = p.nodes.at(std::size_t(p.sceneRoots[2]));
+  EXPECT_EQ(node.name, "front");
+  EXPECT_EQ(node.camera, 0);
+  const std::array<double, 16> m = node.localMatrix();
+  EXPECT_NEAR(m[12], 0, 1e-12);  // translation: the eye
+  EXPECT_NEAR(m[13], 3, 1e-12);
+  EXPECT_NEAR(m[14], 4, 1e-12);
+  EXPECT_NEAR(-m[8], 0, 1e-12);  // -Z: towards the target, (0, -3, -4) / 5
+  EXPECT_NEAR(-m[9], -0.6, 1e-12);
+  EXPECT_NEAR(-m[10], -0.8, 1e-12);
+  EXPECT_NEAR(m[0], 1, 1e-12);  // +X: to the right, level
+  EXPECT_NEAR(m[5], 0.8, 1e-12);  // +Y: up, tilted with the view
+}
+
 TEST(PipeAssemble, KeepsOnlyTheFieldsTheMaterialReadsRenumbered) {
   const Scene scene = torusAndPlate();
   const glb::Package original = readBack(inputs().geodesic);
