@@ -8,9 +8,10 @@
 #   b. touching one input re-runs only what depends on it: ring.json re-bakes and re-validates the
 #      ring alone; hatching.json runs tambake once for its two outputs (grouped targets); the
 #      re-baked files are byte-identical to the first bake's (same options, a second run);
-#   c. determinism: a second full bake with every baker at -j 1 (run a had -j 2) is byte-identical
-#      to run a, file by file. Reports (*.report.json: timings, absolute paths) and depfiles (*.d:
-#      absolute paths) legitimately differ and are not compared; the validation stamps are empty.
+#   c. determinism: a second full bake with the same options, and a third with every baker at -j 1
+#      (runs a and b have -j 2), are byte-identical to run a, file by file. Reports (*.report.json:
+#      timings, absolute paths) and depfiles (*.d: absolute paths) legitimately differ and are not
+#      compared; the validation stamps (empty files) are not compared either. bakeshape has no -j.
 set -euo pipefail
 
 if [[ $# -ne 3 ]]; then
@@ -40,6 +41,7 @@ changed() { { diff <(echo "$1") <(echo "$2") || true; } | sed -n 's/^[<>] \(.*\)
 
 a="$tmp/a"
 b="$tmp/b"
+c="$tmp/c"
 baked=(pretzel.glb torus.glb glaze.png bands.png hammered.png knurl.png pretzel-fields.glb vase.glb ring.glb
        plate.glb hatching.ktx2 torus-hatched.glb stippling.ktx2 pretzel-stippled.glb grooves-tiles.glb
        grooves-record.glb grooves-plate.glb)
@@ -97,22 +99,29 @@ for file in ring.glb hatching.ktx2 torus-hatched.glb; do
   cmp -s "$tmp/first/$file" "$a/$file" || fail "b: the re-baked $file differs from the first bake"
 done
 
-# c. A second full bake, every baker at one thread, is byte-identical.
-step "c: make -j2 all into $b with THREADS=1"
-mk -j2 OUT="$b" THREADS=1 all
-step "c: compare $a and $b"
+# c. Two more full bakes: the same options (run to run) and every baker at one thread (run a had
+# two) are byte-identical to run a.
 compared() { (cd "$1" && find . -type f ! -name '*.report.json' ! -name '*.d' ! -path './stamps/*' -printf '%P\n' | LC_ALL=C sort); }
-files_a="$(compared "$a")"
-files_b="$(compared "$b")"
-[[ "$files_a" == "$files_b" ]] || fail "c: the two bakes wrote different files: $(diff <(echo "$files_a") <(echo "$files_b") | tr '\n' ' ')"
-count=0
-while read -r file; do
-  [[ -n "$file" ]] || continue
-  count=$((count + 1))
-  cmp -s "$a/$file" "$b/$file" || fail "c: $file differs between the -j 2 and the -j 1 bake ($(cmp "$a/$file" "$b/$file" 2>&1 | head -1))"
-done <<<"$files_a"
-[[ $count -ge ${#baked[@]} ]] || fail "c: compared only $count files"
-echo "compared $count files byte for byte"
+compare() {  # compare DIR WHAT: every compared file of DIR equals run a's
+  local files_a files_x count=0
+  files_a="$(compared "$a")"
+  files_x="$(compared "$1")"
+  [[ "$files_a" == "$files_x" ]] ||
+    fail "c: $2 wrote other files than run a: $(diff <(echo "$files_a") <(echo "$files_x") | tr '\n' ' ')"
+  while read -r file; do
+    [[ -n "$file" ]] || continue
+    count=$((count + 1))
+    cmp -s "$a/$file" "$1/$file" || fail "c: $file differs between run a and $2 ($(cmp "$a/$file" "$1/$file" 2>&1 | head -1))"
+  done <<<"$files_a"
+  [[ $count -ge ${#baked[@]} ]] || fail "c: compared only $count files"
+  echo "$2: $count files byte-identical to run a"
+}
+step "c: make -j2 all into $b with THREADS=2 (run to run)"
+mk -j2 OUT="$b" THREADS=2 all
+compare "$b" "the second bake"
+step "c: make -j2 all into $c with THREADS=1"
+mk -j2 OUT="$c" THREADS=1 all
+compare "$c" "the one-thread bake"
 
 step "done"
 if [[ $failures -ne 0 ]]; then
