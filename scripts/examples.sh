@@ -2,7 +2,8 @@
 # The main job: installs what is missing, builds the tools, bakes the example scenes of pipelines/
 # into out/examples/ (make -f Makefile.examples: parallel and incremental), describes the packages
 # with bakeinfo, validates them and renders each (and the bundled example scene) headless with
-# bakeplay into out/examples/.
+# bakeplay into out/examples/; then bakes, assembles and renders the example scene descriptions with
+# bakepipe and Ninja.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
@@ -55,5 +56,18 @@ done
   --report "$out/grooves-plate.render.json" -o "$out/grooves-plate.png"
 
 "$bin/bakeplay/bakeplay" render -q -o "$out/bundled-example.png" --frames 30 --report "$out/bundled-example.report.json"
+
+# Scene descriptions (pipelines/*/scene.json): bakepipe plans only what each scene's materials read,
+# Ninja bakes, assembles one pruned scene package and validates it (incrementally), and bakeplay draws
+# it from the scene's camera into out/examples/scene-<name>.png.
+mkdir -p "$out/scenes"
+for scene in geodesic revolution hatching grooves; do
+  "$bin/bakepipe/bakepipe" plan "$here/pipelines/$scene/scene.json" --out-dir "$out/scenes/$scene" | sed -n '/# left out/,$p'
+  "$bin/bakepipe/bakepipe" ninja "$here/pipelines/$scene/scene.json" --out-dir "$out/scenes/$scene" \
+    -o "$out/scenes/$scene.ninja" -q
+  ninja -f "$out/scenes/$scene.ninja" --quiet
+  size=$(sed -n 's/.*"width": *\([0-9]*\), *"height": *\([0-9]*\).*/\1x\2/p' "$here/pipelines/$scene/scene.json" | head -1)
+  "$bin/bakeplay/bakeplay" render -q "$out/scenes/$scene/$scene.glb" --size "$size" -o "$out/scene-$scene.png"
+done
 echo "rendered: $(cd "$out" && ls *.png | tr '\n' ' ')(in out/examples/)"
 echo "open a window on a package: $bin/bakeplay/bakeplay view pipelines/example/wavy-grid.glb"
