@@ -58,7 +58,11 @@ std::string ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings&
   std::ostringstream n;
   n << "# Bake steps of the scene " << scene.name << " (" << scene.file.string() << "), written by bakepipe ninja.\n"
     << "# Run: ninja -f THIS_FILE. Edit the scene, not this file: it is rewritten when the scene changes.\n"
-    << "ninja_required_version = 1.10\n\n"
+    << "ninja_required_version = 1.10\n"
+    // Ninja's log and dependency database live beside the outputs, not in whatever directory it
+    // was started from.
+    << "builddir = " << ninjaValue(plan.packages.empty() ? std::string(".") : plan.packages.front().parent_path().string())
+    << "\n\n"
     << "pool " << format::scene::kGlPool << "\n  depth = 1\n\n"
     << "rule bake\n  command = $cmd --depfile $quoteddep\n  depfile = $dep\n  deps = gcc\n  restat = 1\n"
     << "  description = $desc\n\n"
