@@ -2,6 +2,7 @@
 #include "core/json_keys.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -48,6 +49,29 @@ std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::init
     return UnknownKey{key, message};
   }
   return std::nullopt;
+}
+
+Status JsonReader::error(const std::string& where, const std::string& message) const {
+  return invalidInput(message, {file, where.empty() ? "/" : where});
+}
+
+Status JsonReader::object(const nlohmann::json& node, const std::string& where,
+                          std::initializer_list<const char*> known) const {
+  if (!node.is_object()) return error(where, "must be a JSON object");
+  if (const auto unknown = findUnknownKey(node, known)) return error(jsonPointerChild(where, unknown->key), unknown->message);
+  return Status::ok();
+}
+
+Result<double> JsonReader::number(const nlohmann::json& node, const std::string& where) const {
+  if (!node.is_number()) return error(where, "must be a number");
+  const double x = node.get<double>();
+  if (!std::isfinite(x)) return error(where, "must be a finite number (NaN or Inf)");
+  return x;
+}
+
+Result<std::string> JsonReader::string(const nlohmann::json& node, const std::string& where) const {
+  if (!node.is_string()) return error(where, "must be a string");
+  return node.get<std::string>();
 }
 
 }  // namespace bake

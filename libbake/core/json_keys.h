@@ -1,6 +1,7 @@
-// Small pieces shared by the JSON input readers (style files, groove scenes): JSON pointers to name
-// the element at fault (RFC 6901 escaping), and the check that an object holds only known keys, with
-// the nearest known key suggested for a typo (Levenshtein distance).
+// Small pieces shared by the JSON input readers (style files, groove scenes, scene descriptions): JSON
+// pointers to name the element at fault (RFC 6901 escaping), the check that an object holds only
+// known keys, with the nearest known key suggested for a typo (Levenshtein distance), and the checks
+// every strict reader starts from.
 #pragma once
 
 #include <cstddef>
@@ -9,6 +10,8 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "core/status.h"
 
 namespace bake {
 
@@ -27,5 +30,18 @@ struct UnknownKey {
 // The first key of `object` that is not one of `known`, with a message suggesting the nearest known
 // key when it is close (distance <= max(2, length / 3)); nothing when every key is known.
 std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known);
+
+// The checks every strict JSON reader shares; each failure is invalid input naming `file` and the
+// JSON pointer of the element. Readers derive from it and add their own value kinds.
+struct JsonReader {
+  std::string file;
+
+  Status error(const std::string& where, const std::string& message) const;
+  // A JSON object holding only `known` keys.
+  Status object(const nlohmann::json& node, const std::string& where, std::initializer_list<const char*> known) const;
+  // A finite number (NaN and Inf are refused even where the parser let them through).
+  Result<double> number(const nlohmann::json& node, const std::string& where) const;
+  Result<std::string> string(const nlohmann::json& node, const std::string& where) const;
+};
 
 }  // namespace bake

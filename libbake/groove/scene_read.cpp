@@ -25,23 +25,7 @@ constexpr double kDegree = std::numbers::pi / 180;
 std::string child(const std::string& parent, const std::string& key) { return jsonPointerChild(parent, key); }
 std::string child(const std::string& parent, std::size_t index) { return jsonPointerChild(parent, index); }
 
-struct Reader {
-  std::string file;
-
-  Status error(const std::string& where, const std::string& message) const {
-    return invalidInput(message, {file, where.empty() ? "/" : where});
-  }
-  Status object(const json& node, const std::string& where, std::initializer_list<const char*> known) const {
-    if (!node.is_object()) return error(where, "must be a JSON object");
-    if (const auto unknown = findUnknownKey(node, known)) return error(child(where, unknown->key), unknown->message);
-    return Status::ok();
-  }
-  Result<double> number(const json& node, const std::string& where) const {
-    if (!node.is_number()) return error(where, "must be a number");
-    const double x = node.get<double>();
-    if (!std::isfinite(x)) return error(where, "must be a finite number (NaN or Inf)");
-    return x;
-  }
+struct Reader : JsonReader {
   Result<Vec2> point(const json& node, const std::string& where) const {
     if (!node.is_array() || node.size() != 2) return error(where, "must be a pair of numbers [u, v]");
     BAKE_ASSIGN_OR_RETURN(const double u, number(node[0], child(where, std::size_t(0))));
@@ -65,10 +49,6 @@ struct Reader {
       if (out[i] < 0 || (unit && out[i] > 1)) return error(child(where, i), "must be within [0, 1]");
     }
     return Status::ok();
-  }
-  Result<std::string> string(const json& node, const std::string& where) const {
-    if (!node.is_string()) return error(where, "must be a string");
-    return node.get<std::string>();
   }
   Result<double> positive(const json& node, const std::string& where) const {
     BAKE_ASSIGN_OR_RETURN(const double x, number(node, where));

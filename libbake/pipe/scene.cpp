@@ -22,27 +22,11 @@ namespace key = bake::format::scene;
 std::string child(const std::string& parent, const std::string& name) { return jsonPointerChild(parent, name); }
 std::string child(const std::string& parent, std::size_t index) { return jsonPointerChild(parent, index); }
 
-struct Reader {
-  std::string file;
-
-  Status error(const std::string& where, const std::string& message) const {
-    return invalidInput(message, {file, where.empty() ? "/" : where});
-  }
-  Status object(const json& node, const std::string& where, std::initializer_list<const char*> known) const {
-    if (!node.is_object()) return error(where, "must be a JSON object");
-    if (const auto unknown = findUnknownKey(node, known)) return error(child(where, unknown->key), unknown->message);
-    return Status::ok();
-  }
+struct Reader : JsonReader {
   Status required(const json& node, const std::string& where, std::initializer_list<const char*> keys) const {
     for (const char* name : keys)
       if (!node.contains(name)) return error(child(where, name), "is missing");
     return Status::ok();
-  }
-  Result<double> number(const json& node, const std::string& where) const {
-    if (!node.is_number()) return error(where, "must be a number");
-    const double x = node.get<double>();
-    if (!std::isfinite(x)) return error(where, "must be a finite number (NaN or Inf)");
-    return x;
   }
   Result<double> positive(const json& node, const std::string& where) const {
     BAKE_ASSIGN_OR_RETURN(const double x, number(node, where));
@@ -55,10 +39,6 @@ struct Reader {
     if (x < lowest || x > highest)
       return error(where, "must be in [" + std::to_string(lowest) + ", " + std::to_string(highest) + "]");
     return int(x);
-  }
-  Result<std::string> string(const json& node, const std::string& where) const {
-    if (!node.is_string()) return error(where, "must be a string");
-    return node.get<std::string>();
   }
   Result<bool> boolean(const json& node, const std::string& where) const {
     if (!node.is_boolean()) return error(where, "must be true or false");
