@@ -1,9 +1,10 @@
-// Scene assembly (pipe/assemble.h): packages baked here with the bakers' library entry points (a
-// geodesic torus with three fields, groove plates with and without special-case records, a revolved
-// profile with a displacement map and a base colour) are merged, and the result is checked against
-// the originals: node placement, counts, every extension index pointing at the same bytes as before,
-// the renumbered geodesic fields, the dropped list, that keepUnused copies every baked byte while the
-// materials still read only what the scene says, and that the checked readers accept the result.
+// Scene assembly (pipe/assemble.h): packages baked with the bakers' library entry points
+// (pipe/assemble_support.h: a geodesic torus with three fields, groove plates with and without
+// special-case records, a revolved profile with a displacement map and a base colour) are merged,
+// and the result is checked against the originals: node placement, counts, every extension index
+// pointing at the same bytes as before, the renumbered geodesic fields, the dropped list, that
+// keepUnused copies every baked byte while the materials still read only what the scene says, and
+// that the checked readers accept the result.
 #include <gtest/gtest.h>
 
 #include <bake_formats/geodesic.h>
@@ -12,19 +13,12 @@
 #include <bake_formats/tam.h>
 
 #include <algorithm>
-#include <fstream>
+#include <cstring>
 
-#include "core/diagnostics.h"
 #include "geodesic/bake.h"
-#include "groove/grid.h"
 #include "groove/package.h"
-#include "groove/scene.h"
-#include "io/image.h"
-#include "mesh/patterns.h"
-#include "mesh/shape_tool.h"
 #include "pipe/assemble.h"
-#include "revolution/bake.h"
-#include "tam/bake.h"
+#include "pipe/assemble_support.h"
 #include "support/golden.h"
 
 namespace bake::pipe {
@@ -36,106 +30,8 @@ namespace geo = format::geodesic;
 namespace grv = format::grooves;
 namespace rev = format::revolution;
 
-void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-// Three fields on a small torus, float encoding; `normalize` as geobake's option.
-fs::path bakeGeodesic(const fs::path& dir, geodesic::Normalization normalization = geodesic::Normalization::PerField) {
-  Diagnostics diagnostics("test", true);
-  ShapeToolSettings shape;
-  shape.shape.name = "torus";
-  shape.shape.resolution = 12;
-  shape.output = (dir / "torus.glb").string();
-  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
-  writeText(dir / "sources.json", R"({"fields": [
-    {"name": "a", "sources": [{"vertex": 0}]},
-    {"name": "b", "sources": [{"vertex": 10}]},
-    {"name": "c", "sources": [{"vertex": 20}, {"vertex": 30}]}]})");
-  geodesic::Settings settings;
-  settings.input = shape.output;
-  settings.sourcesFile = (dir / "sources.json").string();
-  settings.output = (dir / "torus-fields.glb").string();
-  settings.normalization = normalization;
-  settings.common.quiet = true;
-  const Status status = geodesic::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.output;
-}
-
-// An open polyline and a crossing line: ends, a corner and an intersection, so records exist.
-fs::path bakeGrooves(const fs::path& dir, const std::string& name) {
-  const std::string text = R"({"version": 1, "domain": {"size": [10, 10]},
-    "profiles": {"vee": {"points": [[-0.2, 0], [0, -0.1], [0.2, 0]]}},
-    "materials": {"steel": {"albedo": [0.55, 0.55, 0.6], "specular": [0.5, 0.5, 0.5], "shininess": 40}},
-    "base": "steel",
-    "grooves": [{"profile": "vee", "path": {"polyline": [[1, 1], [8, 1], [8, 8]]}},
-                {"profile": "vee", "path": {"line": [[5, 0.2], [5, 6]]}}]})";
-  auto scene = groove::parseGrooveScene(text, name + ".json");
-  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = groove::buildGrooveGrid(*scene, {});
-  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
-  auto package = groove::buildGroovePackage(*scene, *grid);
-  EXPECT_TRUE(package.isOk()) << package.status().describe();
-  const fs::path file = dir / (name + ".glb");
-  EXPECT_TRUE(glb::write(file, *package).isOk());
-  return file;
-}
-
-// A vase-like profile with a displacement map and a base colour texture.
-fs::path bakeRevolution(const fs::path& dir) {
-  for (const char* pattern : {"hammered", "glaze"}) {
-    auto image = makePattern(pattern, 64);
-    EXPECT_TRUE(image.isOk()) << image.status().describe();
-    EXPECT_TRUE(writeImage(dir / (std::string(pattern) + ".png"), *image, PixelType::U8).isOk());
-  }
-  writeText(dir / "profile.json", R"({"contours": [{"closed": false, "points": [[0.3, 0], [0.4, 0.5], [0.2, 1]]}]})");
-  revolution::Settings settings;
-  settings.input = (dir / "profile.json").string();
-  settings.output = (dir / "vase.glb").string();
-  settings.resolution = 64;
-  settings.heightMap = (dir / "hammered.png").string();
-  settings.baseColorTexture = (dir / "glaze.png").string();
-  settings.common.quiet = true;
-  Diagnostics diagnostics("test", true);
-  const Status status = revolution::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.output;
-}
-
-// A small TAM with its threshold texture, applied to a torus.
-fs::path bakeHatching(const fs::path& dir) {
-  Diagnostics diagnostics("test", true);
-  ShapeToolSettings shape;
-  shape.shape.name = "torus";
-  shape.shape.resolution = 12;
-  shape.output = (dir / "torus.glb").string();
-  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
-  writeText(dir / "style.json", R"({"tones": 3, "resolution": 32, "levels": 1, "candidates": 2})");
-  tam::Settings settings;
-  settings.style = (dir / "style.json").string();
-  settings.output = (dir / "tam.ktx2").string();
-  settings.threshold = (dir / "threshold.ktx2").string();
-  settings.material.mesh = shape.output;
-  settings.material.package = (dir / "hatched.glb").string();
-  settings.common.quiet = true;
-  const Status status = tam::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.material.package;
-}
-
-Object objectOf(const std::string& name, Technique technique, std::size_t material) {
-  Object object;
-  object.name = name;
-  object.technique = technique;
-  object.material = material;
-  return object;
-}
-
-Material materialOf(const std::string& name, Technique technique) {
-  Material material;
-  material.name = name;
-  material.technique = technique;
-  return material;
-}
+using test::materialOf;
+using test::objectOf;
 
 // A torus reading field "b" (sand-water) and a groove plate without special cases.
 Scene torusAndPlate() {
@@ -165,8 +61,8 @@ const Inputs& inputs() {
   static const Inputs baked = [] {
     Inputs in;
     in.dir = test::freshTempDir("assemble_inputs");
-    in.geodesic = bakeGeodesic(in.dir);
-    in.grooves = bakeGrooves(in.dir, "plate");
+    in.geodesic = test::bakeTorusFields(in.dir);
+    in.grooves = test::bakeGroovePlate(in.dir, "plate");
     return in;
   }();
   return baked;
@@ -388,7 +284,7 @@ TEST(PipeAssemble, KeepUnusedCopiesEveryBakedByteButReadsTheSame) {
 
 TEST(PipeAssemble, GlobalNormalizationKeepsEveryFieldAndSaysWhy) {
   const fs::path dir = test::freshTempDir("assemble_global");
-  const fs::path global = bakeGeodesic(dir, geodesic::Normalization::Global);
+  const fs::path global = test::bakeTorusFields(dir, {.normalization = geodesic::Normalization::Global});
   Scene scene = torusAndPlate();
   scene.objects.resize(1);
   AssembleReport report;
@@ -403,7 +299,7 @@ TEST(PipeAssemble, GlobalNormalizationKeepsEveryFieldAndSaysWhy) {
 
 TEST(PipeAssemble, RevolutionDropsAnUnreadDisplacementMapAndKeepsItsOtherMaps) {
   const fs::path dir = test::freshTempDir("assemble_revolution");
-  const fs::path vase = bakeRevolution(dir);
+  const fs::path vase = test::bakeVase(dir);
   const glb::Package original = readBack(vase);
   const json& baked = original.materials[0]["extensions"][rev::kExtension];
   ASSERT_TRUE(baked.contains(rev::kDisplacementMap));
@@ -452,7 +348,7 @@ TEST(PipeAssemble, RevolutionDropsAnUnreadDisplacementMapAndKeepsItsOtherMaps) {
 
 TEST(PipeAssemble, RevolutionWithoutBaseColourDropsTheImage) {
   const fs::path dir = test::freshTempDir("assemble_revolution_colour");
-  const fs::path vase = bakeRevolution(dir);
+  const fs::path vase = test::bakeVase(dir);
   Scene scene;
   scene.objects = {objectOf("vase", Technique::Revolution, 0)};
   scene.materials = {materialOf("plain", Technique::Revolution)};
@@ -470,7 +366,7 @@ TEST(PipeAssemble, RevolutionWithoutBaseColourDropsTheImage) {
 
 TEST(PipeAssemble, HatchingDropsTheUnreadThresholdTextureAndKeepsTheTam) {
   const fs::path dir = test::freshTempDir("assemble_hatching");
-  const fs::path hatched = bakeHatching(dir);
+  const fs::path hatched = test::bakeHatchedTorus(dir);
   const glb::Package original = readBack(hatched);
   namespace tam = format::tam;
   const json& baked = original.materials[0]["extensions"][tam::kExtension];

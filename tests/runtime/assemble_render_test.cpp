@@ -10,20 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <fstream>
 
 #include "core/diagnostics.h"
-#include "geodesic/bake.h"
-#include "groove/grid.h"
-#include "groove/package.h"
-#include "groove/scene.h"
 #include "io/image.h"
 #include "io/image_compare.h"
-#include "mesh/shape_tool.h"
 #include "pipe/assemble.h"
-#include "revolution/bake.h"
-#include "tam/bake.h"
-#include "mesh/patterns.h"
+#include "pipe/assemble_support.h"
 #include "play/render.h"
 #include "play/validate.h"
 #include "support/golden.h"
@@ -34,89 +26,11 @@ namespace {
 namespace fs = std::filesystem;
 using pipe::Technique;
 
-fs::path bakeTorusFields(const fs::path& dir) {
-  Diagnostics diagnostics("test", true);
-  ShapeToolSettings shape;
-  shape.shape.name = "torus";
-  shape.shape.resolution = 16;
-  shape.output = (dir / "torus.glb").string();
-  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
-  std::ofstream(dir / "sources.json") << R"({"fields": [
-    {"name": "a", "sources": [{"vertex": 0}]},
-    {"name": "b", "sources": [{"vertex": 40}]},
-    {"name": "c", "sources": [{"vertex": 80}, {"vertex": 120}]}]})";
-  geodesic::Settings settings;
-  settings.input = shape.output;
-  settings.sourcesFile = (dir / "sources.json").string();
-  settings.output = (dir / "torus-fields.glb").string();
-  settings.common.quiet = true;
-  const Status status = geodesic::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.output;
-}
-
-// A polyline and a line crossing it: ends, a corner and an intersection (records to leave out).
-fs::path bakePlate(const fs::path& dir, const std::string& name, const std::string& albedo) {
-  const std::string text = R"({"version": 1, "domain": {"size": [10, 10]},
-    "profiles": {"vee": {"points": [[-0.4, 0], [0, -0.3], [0.4, 0]]}},
-    "materials": {"steel": {"albedo": )" + albedo + R"(, "specular": [0.5, 0.5, 0.5], "shininess": 40}},
-    "base": "steel",
-    "grooves": [{"profile": "vee", "path": {"polyline": [[1, 1], [8, 1], [8, 8]]}},
-                {"profile": "vee", "path": {"line": [[5, 0.5], [5, 6]]}}]})";
-  auto scene = groove::parseGrooveScene(text, name + ".json");
-  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = groove::buildGrooveGrid(*scene, {});
-  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
-  auto package = groove::buildGroovePackage(*scene, *grid);
-  EXPECT_TRUE(package.isOk()) << package.status().describe();
-  const fs::path file = dir / (name + ".glb");
-  EXPECT_TRUE(glb::write(file, *package).isOk());
-  return file;
-}
-
-// A revolved profile with a displacement map and a base colour texture.
-fs::path bakeVase(const fs::path& dir) {
-  for (const char* pattern : {"hammered", "glaze"}) {
-    auto image = makePattern(pattern, 64);
-    EXPECT_TRUE(image.isOk()) << image.status().describe();
-    EXPECT_TRUE(writeImage(dir / (std::string(pattern) + ".png"), *image, PixelType::U8).isOk());
-  }
-  std::ofstream(dir / "profile.json") << R"({"contours": [{"closed": false, "points": [[0.3, 0], [0.4, 0.5], [0.2, 1]]}]})";
-  revolution::Settings settings;
-  settings.input = (dir / "profile.json").string();
-  settings.output = (dir / "vase.glb").string();
-  settings.resolution = 128;
-  settings.heightMap = (dir / "hammered.png").string();
-  settings.heightScale = 0.02;
-  settings.baseColorTexture = (dir / "glaze.png").string();
-  settings.common.quiet = true;
-  Diagnostics diagnostics("test", true);
-  const Status status = revolution::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.output;
-}
-
-// A small TAM with its threshold texture on a torus.
-fs::path bakeHatchedTorus(const fs::path& dir) {
-  Diagnostics diagnostics("test", true);
-  ShapeToolSettings shape;
-  shape.shape.name = "torus";
-  shape.shape.resolution = 16;
-  shape.output = (dir / "torus.glb").string();
-  EXPECT_TRUE(runShapeTool(shape, diagnostics).isOk());
-  std::ofstream(dir / "style.json") << R"({"tones": 4, "resolution": 64, "levels": 2, "candidates": 4})";
-  tam::Settings settings;
-  settings.style = (dir / "style.json").string();
-  settings.output = (dir / "tam.ktx2").string();
-  settings.threshold = (dir / "threshold.ktx2").string();
-  settings.material.mesh = shape.output;
-  settings.material.package = (dir / "hatched.glb").string();
-  settings.material.tilesPerUnit = 2;
-  settings.common.quiet = true;
-  const Status status = tam::run(settings, diagnostics);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  return settings.material.package;
-}
+// This file's variants of the baked inputs (pipe/assemble_support.h): tori of resolution 16 (the
+// geodesic and the hatched one), and a larger TAM tiled twice per object unit.
+const test::TorusFieldsOptions kTorusFields{.torusResolution = 16, .sourceStep = 40};
+const test::HatchedTorusOptions kHatchedTorus{
+    .torusResolution = 16, .style = R"({"tones": 4, "resolution": 64, "levels": 2, "candidates": 4})", .tilesPerUnit = 2};
 
 struct Rendered {
   Image image;
@@ -190,64 +104,49 @@ void expectSameImageSmallerFile(const pipe::Scene& scene, const std::vector<fs::
 TEST(AssembleRender, GeodesicFieldsLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_geodesic");
   pipe::Scene scene;
-  pipe::Object torus;
-  torus.name = "torus";
-  torus.technique = Technique::Geodesic;
+  pipe::Object torus = test::objectOf("torus", Technique::Geodesic);
   torus.fieldNames = {"a", "b", "c"};
   torus.position = {0.5, 0, 0};
   scene.objects = {torus};
-  pipe::Material sand;
-  sand.name = "sand";
-  sand.technique = Technique::Geodesic;
+  pipe::Material sand = test::materialOf("sand", Technique::Geodesic);
   sand.fields = {"b"};
   sand.geotexture = {{"version", 1}, {"texture", "isolines"}, {"fields", {"b"}}};
   scene.materials = {sand};
-  expectSameImageSmallerFile(scene, {bakeTorusFields(dir)}, dir, "0.5,2,3:0.5,0,0");
+  expectSameImageSmallerFile(scene, {test::bakeTorusFields(dir, kTorusFields)}, dir, "0.5,2,3:0.5,0,0");
 }
 
 TEST(AssembleRender, DisplacementAndThresholdLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_revolution_hatching");
   pipe::Scene scene;
-  pipe::Object vase;
-  vase.name = "vase";
-  vase.technique = Technique::Revolution;
+  pipe::Object vase = test::objectOf("vase", Technique::Revolution);
   vase.position = {-0.8, -0.5, 0};
-  pipe::Object torus;
-  torus.name = "torus";
-  torus.technique = Technique::Hatching;
-  torus.material = 1;
+  pipe::Object torus = test::objectOf("torus", Technique::Hatching, 1);
   torus.position = {0.8, 0, 0};
   torus.scale = 0.6;
   scene.objects = {vase, torus};
-  pipe::Material smooth;
-  smooth.name = "smooth";
-  smooth.technique = Technique::Revolution;
+  pipe::Material smooth = test::materialOf("smooth", Technique::Revolution);
   smooth.readsDisplacement = false;
-  pipe::Material ink;
-  ink.name = "ink";
-  ink.technique = Technique::Hatching;
-  scene.materials = {smooth, ink};
-  expectSameImageSmallerFile(scene, {bakeVase(dir), bakeHatchedTorus(dir)}, dir, "0,1,3.5:0,0,0");
+  scene.materials = {smooth, test::materialOf("ink", Technique::Hatching)};
+  const std::vector<fs::path> packages = {test::bakeVase(dir, {.resolution = 128, .heightScale = 0.02}),
+                                          test::bakeHatchedTorus(dir, kHatchedTorus)};
+  expectSameImageSmallerFile(scene, packages, dir, "0,1,3.5:0,0,0");
 }
 
 TEST(AssembleRender, GrooveRecordsLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_grooves");
   pipe::Scene scene;
   for (const char* name : {"near", "far"}) {
-    pipe::Object plate;
-    plate.name = name;
-    plate.technique = Technique::Grooves;
-    plate.material = scene.objects.size();
+    pipe::Object plate = test::objectOf(name, Technique::Grooves, scene.objects.size());
     plate.position = {scene.objects.empty() ? -10.5 : 0.5, -5, 0};
     scene.objects.push_back(plate);
-    pipe::Material material;
-    material.name = name;
-    material.technique = Technique::Grooves;
+    pipe::Material material = test::materialOf(name, Technique::Grooves);
     material.readsSpecialCases = scene.objects.size() == 1;  // "near" reads them, "far" does not
     scene.materials.push_back(material);
   }
-  const std::vector<fs::path> packages = {bakePlate(dir, "near-plate", "[0.7, 0.3, 0.2]"),
-                                          bakePlate(dir, "far-plate", "[0.2, 0.3, 0.7]")};
+  test::GroovePlateOptions plate{.halfWidth = 0.4, .depth = 0.3, .lineStart = 0.5, .albedo = {0.7, 0.3, 0.2}};
+  const fs::path nearPlate = test::bakeGroovePlate(dir, "near-plate", plate);
+  plate.albedo = {0.2, 0.3, 0.7};
+  const std::vector<fs::path> packages = {nearPlate, test::bakeGroovePlate(dir, "far-plate", plate)};
   const std::string camera = "0,-6,16:0,0,0";
   expectSameImageSmallerFile(scene, packages, dir, camera);
 
