@@ -2,12 +2,22 @@
 # The test command: installs what is missing, builds, and runs the whole test suite with CTest.
 #   scripts/test.sh              normal build (build/)
 #   scripts/test.sh --sanitize   ASan + UBSan build (build-sanitize/)
+#   scripts/test.sh --fuzz       clang libFuzzer targets (build-fuzz/), each run briefly: ctest -L fuzz
 #   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
 
 export BUILD_DIR="${BUILD_DIR:-$here/build}"
+if [[ "${1:-}" == "--fuzz" ]]; then
+  # Only the fuzz targets (tests/fuzz) are built, with clang, ASan, UBSan and libFuzzer.
+  shift
+  BUILD_DIR="$here/build-fuzz"
+  CC=clang CXX=clang++ cmake -S "$here" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBAKE_FUZZ=ON >/dev/null
+  cmake --build "$BUILD_DIR" --parallel "$(nproc)" --target fuzz_targets
+  cd "$BUILD_DIR"
+  exec ctest --output-on-failure -L fuzz "$@"
+fi
 cmake_args=()
 if [[ "${1:-}" == "--sanitize" ]]; then
   shift

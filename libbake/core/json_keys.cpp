@@ -36,7 +36,8 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known) {
-  for (const auto& [key, value] : object.items()) {
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();  // a named reference, not a structured binding: lambdas capture it
     if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) != known.end()) continue;
     std::string best;
     std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
