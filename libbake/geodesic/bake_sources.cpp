@@ -22,7 +22,7 @@ Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
   json document;
   try {
     document = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a parse error, or e.g. a number overflowing a double
     return invalidInput(std::string("not valid JSON: ") + e.what(), {path, ""});
   }
   if (!document.is_object() || !document.contains("fields") || !document["fields"].is_array())

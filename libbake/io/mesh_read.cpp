@@ -321,8 +321,11 @@ std::vector<std::uint32_t> assignCornerVertices(const PolygonSoup& soup, bool wi
       }
       if (withNormals) mesh.normals[vertex] = corner.normal;
       if (withTexcoords) mesh.texcoords[vertex] = corner.texcoord;
+      // `link` may point into `variants`, which push_back can move: no use of it after this.
       *link = std::int64_t(variants.size());
       variants.push_back({vertex, -1});
+      cornerVertex[c] = vertex;
+      continue;
     }
     cornerVertex[c] = variants[*link].vertex;
   }

@@ -7,6 +7,7 @@
 // counts go back to readMesh, which checks that they all arrived.
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <string>
@@ -173,6 +174,15 @@ Result<PlyHeader> parsePlyHeader(std::string_view text, const fs::path& path) {
     header.ascii = true;
   } else if (format[1] != "binary_little_endian" && format[1] != "binary_big_endian") {
     return lineError(path, line.number, "unknown PLY format " + inQuotes(format[1]));
+  }
+  // PLY has one version, 1.0; OpenMesh's reader loops forever on a version it cannot read as a number.
+  {
+    const std::string version(format[2]);
+    char* end = nullptr;
+    const double number = std::strtod(version.c_str(), &end);
+    if (version.empty() || end != version.c_str() + version.size() || number != 1.0) {
+      return lineError(path, line.number, "unknown PLY version " + inQuotes(format[2]) + " (expected 1.0)");
+    }
   }
   TextLine previous = line;
   while (true) {

@@ -99,6 +99,8 @@ Result<Profile> readProfileJson(const std::string& path) {
     document = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& error) {
     return invalidInput(std::string("not valid JSON: ") + error.what(), {path, "byte " + std::to_string(error.byte)});
+  } catch (const nlohmann::json::exception& error) {  // e.g. a number overflowing a double
+    return invalidInput(std::string("not valid JSON: ") + error.what(), {path, ""});
   }
   Profile profile;
   profile.source = path;

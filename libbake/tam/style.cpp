@@ -296,6 +296,8 @@ Result<Style> parseStyle(const std::string& jsonText, const std::string& source,
     document = json::parse(jsonText);
   } catch (const json::parse_error& e) {
     return invalidInput(std::string("malformed JSON: ") + e.what(), {source, "byte " + std::to_string(e.byte)});
+  } catch (const json::exception& e) {  // e.g. a number overflowing a double
+    return invalidInput(std::string("malformed JSON: ") + e.what(), {source, ""});
   }
   Style style;
   style.source = source;
