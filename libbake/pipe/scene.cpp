@@ -99,18 +99,24 @@ Result<Generated> readGenerated(const Reader& r, const json& node, const std::st
   return g;
 }
 
-// The field names of a geobake sources file, in order; unnamed fields are "field K".
-Result<std::vector<std::string>> sourceFieldNames(const fs::path& path, const std::string& where, const Reader& r) {
+// A JSON file, parsed; `what` names it in the error when it cannot be read ("scene file", ...).
+Result<json> readJsonFile(const fs::path& path, const std::string& what) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot read the sources file", {path.string(), ""});
+  if (!in) return ioError("cannot read the " + what, {path.string(), ""});
   std::stringstream text;
   text << in.rdbuf();
-  json doc;
   try {
-    doc = json::parse(text.str());
-  } catch (const json::exception& e) {
+    return json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), "byte " + std::to_string(e.byte)});
+  } catch (const json::exception& e) {  // e.g. a number too large for a double
     return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), ""});
   }
+}
+
+// The field names of a geobake sources file, in order; unnamed fields are "field K".
+Result<std::vector<std::string>> sourceFieldNames(const fs::path& path, const std::string& where, const Reader& r) {
+  BAKE_ASSIGN_OR_RETURN(const json doc, readJsonFile(path, "sources file"));
   if (!doc.is_object() || !doc.contains("fields") || !doc["fields"].is_array() || doc["fields"].empty())
     return r.error(where, path.string() + " has no \"fields\" list");
   std::vector<std::string> names;
@@ -344,18 +350,7 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
 Result<Scene> readScene(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return ioError("is a directory, not a scene file", {path.string(), ""});
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot read the scene file", {path.string(), ""});
-  std::stringstream text;
-  text << in.rdbuf();
-  json doc;
-  try {
-    doc = json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), "byte " + std::to_string(e.byte)});
-  } catch (const json::exception& e) {
-    return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), ""});
-  }
+  BAKE_ASSIGN_OR_RETURN(const json doc, readJsonFile(path, "scene file"));
   return parseScene(doc, path);
 }
 
