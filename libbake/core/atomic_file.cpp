@@ -1,5 +1,7 @@
 #include "core/atomic_file.h"
 
+#include "core/temporaries.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -15,6 +17,11 @@ namespace {
 
 std::string systemMessage(int err) { return std::strerror(err); }
 
+void removeTemporary(const fs::path& temporary) {
+  ::unlink(temporary.c_str());
+  unregisterTemporary(temporary);
+}
+
 // Writes `bytes` to a fresh temporary file in the target's directory; returns its path.
 Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uint8_t> bytes) {
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
@@ -29,6 +36,7 @@ Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uin
                    {target.string(), ""});
   }
   const fs::path temporary = pattern;
+  registerTemporary(temporary);
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
@@ -36,7 +44,7 @@ Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uin
       if (errno == EINTR) continue;
       const int err = errno;
       ::close(fd);
-      ::unlink(temporary.c_str());
+      removeTemporary(temporary);
       return ioError("write failed: " + systemMessage(err), {target.string(), ""});
     }
     written += std::size_t(n);
@@ -47,7 +55,7 @@ Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uin
   ::fchmod(fd, 0666 & ~mask);
   if (::fsync(fd) != 0 || ::close(fd) != 0) {
     const int err = errno;
-    ::unlink(temporary.c_str());
+    removeTemporary(temporary);
     return ioError("write failed: " + systemMessage(err), {target.string(), ""});
   }
   return temporary;
@@ -56,9 +64,10 @@ Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uin
 Status renameInto(const fs::path& temporary, const fs::path& target) {
   if (::rename(temporary.c_str(), target.c_str()) != 0) {
     const int err = errno;
-    ::unlink(temporary.c_str());
+    removeTemporary(temporary);
     return ioError("cannot replace the file: " + systemMessage(err), {target.string(), ""});
   }
+  unregisterTemporary(temporary);
   return {};
 }
 
@@ -117,7 +126,7 @@ Status OutputSet::commit() {
 }
 
 void OutputSet::discard() {
-  for (const fs::path& temporary : temporaries_) ::unlink(temporary.c_str());
+  for (const fs::path& temporary : temporaries_) removeTemporary(temporary);
   temporaries_.clear();
 }
 

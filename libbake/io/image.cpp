@@ -12,6 +12,7 @@
 #include "io/image.h"
 
 #include "core/path.h"
+#include "core/temporaries.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -133,7 +134,9 @@ Status checkFormatAllows(const std::string& extension, PixelType type, int chann
 class TemporaryFile {
  public:
   ~TemporaryFile() {
-    if (!path_.empty()) ::unlink(path_.c_str());
+    if (path_.empty()) return;
+    ::unlink(path_.c_str());
+    unregisterTemporary(path_);
   }
 
   Status create(const fs::path& target, const std::string& extension) {
@@ -146,6 +149,7 @@ class TemporaryFile {
     }
     ::close(fd);
     path_ = pattern;
+    registerTemporary(path_);
     return {};
   }
 
@@ -168,6 +172,7 @@ class TemporaryFile {
     std::error_code ec;
     fs::rename(path_, target, ec);
     if (ec) return ioError("cannot replace the file: " + ec.message(), {target.string(), ""});
+    unregisterTemporary(path_);
     path_.clear();
     return {};
   }
@@ -280,6 +285,7 @@ Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::st
   std::string pattern = (fs::temp_directory_path() / ("bake-image.XXXXXX" + extension)).string();
   const int fd = ::mkstemps(pattern.data(), int(extension.size()));
   if (fd < 0) return ioError(std::string("cannot create a temporary file: ") + std::strerror(errno), {name, ""});
+  registerTemporary(pattern);
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
@@ -291,6 +297,7 @@ Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::st
                             ? readImage(pattern)
                             : Result<Image>(ioError("cannot write a temporary file", {name, ""}));
   ::unlink(pattern.c_str());
+  unregisterTemporary(pattern);
   if (!image.isOk()) return Status(image.status().code(), image.status().message(), {name, ""});
   return image;
 }

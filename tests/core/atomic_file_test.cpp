@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 
@@ -61,6 +65,62 @@ TEST(AtomicFile, OutputSetCommitsAllOrNothing) {
   EXPECT_EQ(readText(dir / "a.txt"), "A");
   EXPECT_EQ(readText(dir / "b.txt"), "B");
   EXPECT_EQ(entriesIn(dir), 2u);
+}
+
+// Runs `work` in a child process and returns the signal that ended it (0 if it exited).
+template <class Work>
+int signalEndingChild(Work work) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    work();
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+}
+
+TEST(AtomicFile, KilledMidWriteLeavesEarlierOutputAndNoTemporary) {
+  const fs::path dir = test::freshTempDir("atomic_killed");
+  const fs::path target = dir / "out.bin";
+  ASSERT_TRUE(writeFileAtomic(target, std::string("earlier")).isOk());
+  // A 64 KiB file-size limit and a 1 MiB output: the kernel sends SIGXFSZ inside write().
+  const int signal = signalEndingChild([&] {
+    const rlimit limit{64 * 1024, 64 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    (void)writeFileAtomic(target, std::vector<std::uint8_t>(1 << 20, 0xAB));
+  });
+  EXPECT_EQ(signal, SIGXFSZ);
+  EXPECT_EQ(readText(target), "earlier");
+  EXPECT_EQ(entriesIn(dir), 1u) << "the temporary file must be removed before the process dies";
+}
+
+TEST(AtomicFile, SignalBeforeCommitRemovesStagedTemporaries) {
+  const fs::path dir = test::freshTempDir("atomic_terminated");
+  ASSERT_TRUE(writeFileAtomic(dir / "a.txt", std::string("earlier")).isOk());
+  const int signal = signalEndingChild([&] {
+    OutputSet outputs;
+    (void)outputs.stage(dir / "a.txt", std::string("A"));
+    (void)outputs.stage(dir / "b.txt", std::string("B"));
+    ::raise(SIGTERM);
+  });
+  EXPECT_EQ(signal, SIGTERM);
+  EXPECT_EQ(readText(dir / "a.txt"), "earlier");
+  EXPECT_EQ(entriesIn(dir), 1u);
+}
+
+TEST(AtomicFile, IgnoredSignalStaysIgnored) {
+  // A caller that ignores SIGHUP (nohup) keeps it ignored: the staged file survives the signal.
+  const fs::path dir = test::freshTempDir("atomic_nohup");
+  const int signal = signalEndingChild([&] {
+    ::signal(SIGHUP, SIG_IGN);
+    OutputSet outputs;
+    (void)outputs.stage(dir / "a.txt", std::string("A"));
+    ::raise(SIGHUP);
+    (void)outputs.commit();
+  });
+  EXPECT_EQ(signal, 0);
+  EXPECT_EQ(readText(dir / "a.txt"), "A");
 }
 
 TEST(AtomicFile, ReadReportsMissingAndDirectories) {

@@ -1,0 +1,23 @@
+// Temporary files of atomic writes (core/atomic_file.h, the image writer) are registered while they
+// exist, so that a bake stopped by a catchable signal removes them before it dies: Ctrl-C (SIGINT), a
+// build system cancelling a job (SIGTERM, SIGHUP), a pipe closed under it (SIGPIPE), or a file-size
+// limit hit in the middle of a write (SIGXFSZ). The handler unlinks the registered files and then
+// lets the signal take its default course, so the exit status still says which signal it was.
+// Targets are only ever replaced by rename, so an interrupted bake leaves every earlier output
+// byte-identical; SIGKILL cannot be caught and may leave a hidden `.NAME.tmp.XXXXXX` beside the
+// target, never a partial target.
+#pragma once
+
+#include <filesystem>
+
+namespace bake {
+
+// Registers a temporary file (installs the handlers on first use). At most kMaxRegisteredTemporaries
+// are tracked at once; more are still written, only not removed on a signal.
+void registerTemporary(const std::filesystem::path& path);
+// Forgets a temporary that was renamed into place or removed.
+void unregisterTemporary(const std::filesystem::path& path);
+
+inline constexpr int kMaxRegisteredTemporaries = 64;
+
+}  // namespace bake
