@@ -2,15 +2,22 @@
 // checks its exit code, stdout (fragments or a golden file), stderr fragments, the files it leaves,
 // JSON outputs against a schema, GLB outputs with the Khronos validator, and byte-identical outputs
 // for --threads 1 and --threads 2. Paths in a case may use ${source}, ${golden} and ${tmp} (a fresh
-// directory per case). See tests/cli/README.md for the fields.
+// directory per case), and ${byte:XX} for one raw byte (non-UTF-8 names). Cases with a "category"
+// form the bad-input corpus and obey stricter rules (CliCase::checkCorpusRules). See
+// tests/cli/README.md for the fields.
 #include <gtest/gtest.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
 #include <map>
+#include <set>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -72,6 +79,62 @@ void replaceAll(std::string& text, const std::string& from, const std::string& t
   }
 }
 
+int hexDigit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// "676c5446" -> the bytes; whitespace between pairs is allowed. Throws on anything else.
+std::vector<std::uint8_t> fromHex(const std::string& text) {
+  std::vector<std::uint8_t> bytes;
+  for (std::size_t i = 0; i < text.size();) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      ++i;
+      continue;
+    }
+    const int high = hexDigit(text[i]), low = i + 1 < text.size() ? hexDigit(text[i + 1]) : -1;
+    if (high < 0 || low < 0) throw std::invalid_argument("not hex at character " + std::to_string(i) + " of \"" + text + "\"");
+    bytes.push_back(std::uint8_t(high * 16 + low));
+    i += 2;
+  }
+  return bytes;
+}
+
+// ${byte:XX} -> the raw byte 0xXX (for names that are not UTF-8).
+std::string expandBytes(std::string text) {
+  const std::string open = "${byte:";
+  for (std::size_t at = text.find(open); at != std::string::npos; at = text.find(open, at + 1)) {
+    const std::size_t close = text.find('}', at);
+    const std::vector<std::uint8_t> byte = fromHex(text.substr(at + open.size(), close == std::string::npos ? 0 : close - at - open.size()));
+    if (close == std::string::npos || byte.size() != 1) throw std::invalid_argument("bad ${byte:XX} in \"" + text + "\"");
+    text.replace(at, close + 1 - at, std::string(1, char(byte[0])));
+  }
+  return text;
+}
+
+// The bad-input corpus: every case with a "category" names one of these.
+const std::set<std::string>& corpusCategories() {
+  static const std::set<std::string> categories = {
+      "truncated",          "wrong-magic",     "huge-count",        "nan-inf",   "negative-size",
+      "index-out-of-range", "reference-cycle", "non-utf8",          "empty-file", "directory-as-file",
+      "unwritable-output",  "malformed",       "out-of-range",      "usage",     "missing-file"};
+  return categories;
+}
+
+// What a sanitizer prints when it finds something (the suite also runs in an ASan+UBSan build).
+const std::vector<std::string>& sanitizerMarkers() {
+  static const std::vector<std::string> markers = {"AddressSanitizer", "LeakSanitizer", "runtime error:"};
+  return markers;
+}
+
+// Bytes the runner puts where a failing bake would write its output; they must survive it.
+const std::string& sentinelBytes() {
+  static const std::string bytes = std::string("earlier output, to be kept by a failing bake\n") + '\0' + "\xff\xfe\x01";
+  return bytes;
+}
+
 // This process's environment with the case's changes: a string sets a variable, null removes it.
 std::vector<std::string> environmentFor(const json& changes) {
   std::vector<std::string> out;
@@ -87,6 +150,8 @@ std::vector<std::string> environmentFor(const json& changes) {
 
 struct ProcessResult {
   int exitCode = -1;
+  int signal = 0;        // the signal that ended the process, 0 when it exited
+  bool timedOut = false;  // killed by the runner after the case's time limit
   std::string out, err;
 };
 
@@ -103,28 +168,72 @@ class CliCase : public ::testing::TestWithParam<Case> {
     replaceAll(text, "${source}", sourceDir().string());
     replaceAll(text, "${golden}", (sourceDir() / "tests" / "golden").string());
     replaceAll(text, "${tmp}", tmp_.string());
-    return text;
+    return expandBytes(text);
   }
 
-  // Files the case prepares before running: text, copies (optionally truncated or with a byte
-  // flipped), directories.
+  bool inCorpus() const { return spec_.contains("category"); }
+
+  // Files the case prepares before running: text, hex bytes, copies (optionally truncated, with a
+  // byte flipped, or patched), directories; then optionally a permission mode.
   void prepareFiles() {
     const json files = spec_.value("files", json::object());
     for (const auto& [rawPath, what] : files.items()) {
       const fs::path path = expand(rawPath);
       fs::create_directories(path.parent_path());
+      std::vector<std::uint8_t> bytes;
       if (what.contains("dir")) {
         fs::create_directories(path);
       } else if (what.contains("text")) {
-        std::ofstream(path, std::ios::binary) << what["text"].get<std::string>();
+        const std::string text = what["text"].get<std::string>();
+        bytes.assign(text.begin(), text.end());
+      } else if (what.contains("hex")) {
+        bytes = fromHex(what["hex"].get<std::string>());
       } else if (what.contains("copy")) {
-        std::vector<std::uint8_t> bytes = readAll(expand(what["copy"]));
+        bytes = readAll(expand(what["copy"]));
         ASSERT_FALSE(bytes.empty()) << "nothing to copy from " << what["copy"];
-        if (what.contains("truncate")) bytes.resize(what["truncate"].get<std::size_t>());
+        if (what.contains("truncate")) {
+          const std::size_t size = what["truncate"].get<std::size_t>();
+          ASSERT_LT(size, bytes.size()) << "truncating " << what["copy"] << " does not shorten it";
+          bytes.resize(size);
+        }
         if (what.contains("flip")) bytes.at(what["flip"].get<std::size_t>()) ^= 0xFF;
+        for (const json& patch : what.value("patch", json::array())) {
+          const std::size_t at = patch["at"].get<std::size_t>();
+          const std::vector<std::uint8_t> replacement = fromHex(patch["hex"].get<std::string>());
+          ASSERT_LE(at + replacement.size(), bytes.size()) << "patch at " << at << " runs past the end of " << what["copy"];
+          std::copy(replacement.begin(), replacement.end(), bytes.begin() + std::ptrdiff_t(at));
+        }
+      } else {
+        FAIL() << rawPath << ": a file needs dir, text, hex or copy";
+      }
+      if (!what.contains("dir")) {
         std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
       }
+      if (what.contains("mode")) {
+        const std::string mode = what["mode"].get<std::string>();
+        ASSERT_EQ(::chmod(path.c_str(), mode_t(std::stoul(mode, nullptr, 8))), 0) << "chmod " << mode << " " << path;
+      }
     }
+  }
+
+  // The path after -o/--output in the case's args, when "nothing lost" applies to it: inside ${tmp},
+  // not made by the case, in a directory that exists. Empty otherwise.
+  fs::path sentinelPath() const {
+    if (!inCorpus() || !spec_.value("keepsPrevious", true)) return {};
+    const json args = spec_.value("args", json::array());
+    std::string output;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      const std::string arg = args[i].get<std::string>();
+      if ((arg == "-o" || arg == "--output") && i + 1 < args.size()) output = args[i + 1].get<std::string>();
+      if (arg.rfind("--output=", 0) == 0) output = arg.substr(9);
+    }
+    if (output.empty()) return {};
+    const fs::path path = fs::path(expand(output)).lexically_normal();
+    const std::string inside = path.string(), root = tmp_.lexically_normal().string() + "/";
+    if (inside.rfind(root, 0) != 0) return {};
+    std::error_code error;
+    if (fs::exists(fs::symlink_status(path, error)) || !fs::is_directory(path.parent_path(), error)) return {};
+    return path;
   }
 
   ProcessResult run(const std::vector<std::string>& extra = {}) const {
@@ -151,8 +260,19 @@ class CliCase : public ::testing::TestWithParam<Case> {
     pid_t pid = 0;
     ProcessResult result;
     if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) == 0) {
+      // A hang is a failure, not a stuck test: the process is killed after the case's time limit.
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(spec_.value("timeoutSeconds", 300));
       int status = 0;
-      waitpid(pid, &status, 0);
+      while (waitpid(pid, &status, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+          result.timedOut = true;
+          kill(pid, SIGKILL);
+          waitpid(pid, &status, 0);
+          break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+      if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
       result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     }
     posix_spawn_file_actions_destroy(&actions);
@@ -239,7 +359,7 @@ class CliCase : public ::testing::TestWithParam<Case> {
         EXPECT_EQ(answer.is_object() ? answer.value("numErrors", -1) : -1, 0) << path << ": " << answer.dump(2);
       }
     }
-    if (spec_.value("noTemporaries", false)) {
+    if (spec_.value("noTemporaries", false) || inCorpus()) {
       for (const auto& entry : fs::recursive_directory_iterator(tmp_)) {
         EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << "left behind: " << entry.path();
       }
@@ -265,14 +385,44 @@ class CliCase : public ::testing::TestWithParam<Case> {
     }
   }
 
+  // The bad-input corpus's rules, for a case with a "category": a failing exit code that is not
+  // "internal error" (unless the case says why it expects one), no signal, no hang, a message, no
+  // sanitizer report. (No temporaries and "nothing lost" are checked in checkFiles and Behaves.)
+  void checkCorpusRules(const ProcessResult& result) const {
+    if (!inCorpus()) return;
+    const std::string category = spec_["category"].get<std::string>();
+    EXPECT_TRUE(corpusCategories().count(category)) << "unknown category \"" << category << "\"";
+    EXPECT_FALSE(result.timedOut) << "the tool hung and was killed";
+    EXPECT_EQ(result.signal, 0) << "the tool died of signal " << result.signal << ":\n" << result.err;
+    const int expected = spec_["exit"].get<int>();
+    EXPECT_TRUE(expected >= 1 && expected <= 5) << "a corpus case must expect a failing exit code 1..5, not " << expected;
+    if (expected == 4 || result.exitCode == 4) {
+      EXPECT_TRUE(spec_.value("internalErrorExpected", false) && !spec_.value("internalErrorReason", std::string()).empty())
+          << "exit 4 (internal error) on bad input, and the case gives no internalErrorReason:\n" << result.err;
+    }
+    EXPECT_FALSE(spec_.value("stderr", json::array()).empty()) << "a corpus case must name at least one stderr fragment";
+    for (const std::string& marker : sanitizerMarkers()) {
+      EXPECT_EQ(result.err.find(marker), std::string::npos) << "a sanitizer reported a fault:\n" << result.err;
+    }
+  }
+
   json spec_;
   fs::path tmp_;
 };
 
 TEST_P(CliCase, Behaves) {
   prepareFiles();
+  if (HasFatalFailure()) return;
+  // "Nothing lost": where a corpus case's output would go, an earlier output that must survive.
+  const fs::path sentinel = sentinelPath();
+  if (!sentinel.empty()) std::ofstream(sentinel, std::ios::binary) << sentinelBytes();
   const ProcessResult result = run();
   EXPECT_EQ(result.exitCode, spec_["exit"].get<int>()) << "stderr:\n" << result.err << "\nstdout:\n" << result.out;
+  checkCorpusRules(result);
+  if (!sentinel.empty()) {
+    EXPECT_TRUE(fs::is_regular_file(sentinel) && readText(sentinel) == sentinelBytes())
+        << "the failing bake did not leave the earlier " << sentinel << " byte-identical";
+  }
   checkStreams(result);
   checkFiles();
   checkThreadDeterminism();
@@ -282,9 +432,14 @@ TEST_P(CliCase, Behaves) {
     SCOPED_TRACE("then[" + std::to_string(i) + "]");
     json next = {{"tool", spec_["tool"]}, {"args", spec_["args"]}, {"exit", 0}};
     next.update(steps[i]);
+    const bool corpus = inCorpus();
     spec_ = next;
     const ProcessResult again = run();
     EXPECT_EQ(again.exitCode, spec_["exit"].get<int>()) << "stderr:\n" << again.err << "\nstdout:\n" << again.out;
+    if (corpus) {
+      EXPECT_EQ(again.signal, 0) << "the tool died of signal " << again.signal;
+      for (const std::string& marker : sanitizerMarkers()) EXPECT_EQ(again.err.find(marker), std::string::npos) << again.err;
+    }
     checkStreams(again);
     checkFiles();
   }
@@ -296,6 +451,37 @@ INSTANTIATE_TEST_SUITE_P(Cases, CliCase, ::testing::ValuesIn(allCases()),
                            for (char& c : name) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
                          });
+
+// The corpus as a whole: its size, its spread over tools and categories, and known category names
+// only. A failing case outside the corpus must say why in "uncategorised".
+TEST(BadInputCorpus, CoversEveryCategory) {
+  std::map<std::string, int> perCategory;
+  std::set<std::string> tools;
+  int categorised = 0;
+  for (const Case& c : allCases()) {
+    std::ifstream in(c.file);
+    const json spec = json::parse(in, nullptr, false);
+    ASSERT_FALSE(spec.is_discarded()) << c.file;
+    if (!spec.contains("category")) {
+      if (spec.value("exit", 0) != 0) {
+        EXPECT_FALSE(spec.value("uncategorised", std::string()).empty())
+            << c.file << ": a failing case needs a category, or a reason in \"uncategorised\"";
+      }
+      continue;
+    }
+    ASSERT_TRUE(spec["category"].is_string()) << c.file;
+    const std::string category = spec["category"].get<std::string>();
+    EXPECT_TRUE(corpusCategories().count(category)) << c.file << ": unknown category \"" << category << "\"";
+    ++perCategory[category];
+    tools.insert(spec.value("tool", std::string()));
+    ++categorised;
+  }
+  EXPECT_GE(categorised, 75);
+  EXPECT_GE(tools.size(), 7u);
+  for (const std::string& category : corpusCategories()) {
+    EXPECT_GE(perCategory[category], 3) << "category " << category;
+  }
+}
 
 }  // namespace
 }  // namespace bake::test
