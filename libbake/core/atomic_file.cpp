@@ -1,5 +1,6 @@
 #include "core/atomic_file.h"
 
+#include "core/limits.h"
 #include "core/temporaries.h"
 
 #include <fcntl.h>
@@ -89,6 +90,9 @@ Status writeFileAtomic(const fs::path& target, const std::string& text) {
 Result<std::vector<std::uint8_t>> readFileBytes(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return ioError("is a directory, not a file", {path.string(), ""});
+  // Checked before reading: a file beyond the budget would only exhaust memory.
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec) BAKE_RETURN_IF_ERROR(checkBudget(Budget::InputBytes, size, "bytes", {path.string(), ""}));
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;

@@ -25,7 +25,7 @@ constexpr int kEntryVersion = 1;
 
 // Options that never change what a run writes.
 bool leftOut(const CLI::Option& option) {
-  for (const char* name : {"--report", "--depfile", "--cache-dir", "--quiet", "--threads", "--print-inputs", "--help",
+  for (const char* name : {"--report", "--depfile", "--cache-dir", "--quiet", "--threads", "--print-inputs", "--budget", "--help",
                            "--version"}) {
     if (option.check_name(name)) return true;
   }

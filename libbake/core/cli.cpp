@@ -3,6 +3,7 @@
 #include <exception>
 #include <new>
 
+#include "core/limits.h"
 #include "core/version.h"
 
 namespace bake {
@@ -26,6 +27,19 @@ void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet whi
     app.add_flag("--print-inputs", options.printInputs,
                  "List every file the run would read, one per line, and exit");
   }
+  // Budgets are a process-wide policy (core/limits.h): applied as the option is parsed.
+  app.add_option_function<std::vector<std::string>>(
+         "--budget",
+         [](const std::vector<std::string>& settings) {
+           for (const std::string& setting : settings) {
+             const Status status = applyBudgetSetting(setting);
+             if (!status.isOk()) throw CLI::ValidationError(status.message());
+           }
+         },
+         "Raise or lower a budget, NAME=N (repeatable); defaults: " + describeBudgets())
+      ->type_name("NAME=N")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   if (which.cacheDir) {
     app.add_option("--cache-dir", options.cacheDir,
                    "Content-addressed cache of outputs: reuse a verified earlier bake of the same inputs and options");

@@ -1,5 +1,5 @@
 // Command-line plumbing shared by every tool: the common option group (--quiet, --report,
-// --depfile, --threads, --print-inputs, --cache-dir), --version, and one fatal path that maps CLI11's own errors
+// --depfile, --threads, --print-inputs, --cache-dir, --budget), --version, and one fatal path that maps CLI11's own errors
 // onto ExitCode::Usage and a failed Status onto its exit code with a "TOOL: error: ..." line.
 #pragma once
 

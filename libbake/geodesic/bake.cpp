@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/limits.h"
 #include "core/session.h"
 #include "geodesic/bake_package.h"
 #include "geodesic/bake_stages.h"
@@ -87,6 +88,11 @@ Status bake(const Settings& settings, BakeSession& session) {
     StageTimer timer(&report, "sources");
     BAKE_ASSIGN_OR_RETURN(fields, resolveFields(settings, mesh, build, diagnostics));
   }
+  // Every field holds a double per surface vertex while solving, and a float per vertex in the package.
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::FieldValues, std::uint64_t(fields.size()) * build.surface.vertexCount(),
+                                   "field values (" + std::to_string(fields.size()) + " fields x " +
+                                       std::to_string(build.surface.vertexCount()) + " vertices)",
+                                   {settings.input, ""}));
 
   SolveStats solveStats;
   std::vector<std::vector<double>> distances;

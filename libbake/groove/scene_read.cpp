@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json_keys.h"
+#include "core/limits.h"
 #include "groove/generators.h"
 #include "groove/path_svg.h"
 #include "groove/scene.h"
@@ -283,6 +284,11 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
         std::string bond = "stack";
         if (node.contains("bond")) { BAKE_ASSIGN_OR_RETURN(bond, r.string(node["bond"], child(at, "bond"))); }
         if (bond != "stack" && bond != "running") return r.error(child(at, "bond"), "must be \"stack\" or \"running\"");
+        // Before generating: a running bond has a joint per tile, so counts of a million each way
+        // would mean 10^12 grooves.
+        const std::uint64_t lines = bond == "running" ? std::uint64_t(ny + 1) + std::uint64_t(nx + 1) * std::uint64_t(ny)
+                                                      : std::uint64_t(nx + 1) + std::uint64_t(ny + 1);
+        BAKE_RETURN_IF_ERROR(checkBudget(Budget::Grooves, pending.size() + lines, "grooves", {source, child(at, "count")}));
         for (auto& pieces : tileGroutLines(origin, tile, nx, ny, bond == "running")) {
           PendingGroove one = groove;
           one.pieces = pieces;
@@ -301,6 +307,7 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
       }
     }
   }
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::Grooves, pending.size(), "grooves", {source, ""}));
   // Flattening (flatten.cpp), each groove checked against its own half-width.
   for (std::size_t g = 0; g < pending.size(); ++g) {
     const PendingGroove& p = pending[g];

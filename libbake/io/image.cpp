@@ -11,6 +11,7 @@
 // private temporary file, with the same conversions.
 #include "io/image.h"
 
+#include "core/limits.h"
 #include "core/path.h"
 #include "core/temporaries.h"
 
@@ -245,6 +246,11 @@ Result<Image> readOpened(std::unique_ptr<OIIO::ImageInput> in, const fs::path& n
     return invalidInput("the image has no pixels", {name.string(), ""});
   }
 
+  // Before any pixel is allocated: the header alone can claim billions of texels.
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::TextureSide, std::uint64_t(std::max(spec.width, spec.height)),
+                                   "texels on the longer side (" + std::to_string(spec.width) + "x" +
+                                       std::to_string(spec.height) + ")",
+                                   {name.string(), ""}));
   Image image;
   image.width = spec.width;
   image.height = spec.height;

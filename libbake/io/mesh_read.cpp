@@ -39,6 +39,7 @@
 #include <string_view>
 
 #include "core/atomic_file.h"
+#include "core/limits.h"
 #include "core/path.h"
 #include "io/gltf.h"
 #include "io/mesh_scan.h"
@@ -407,6 +408,10 @@ Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, M
   if (bytes.empty()) return invalidInput("the file is empty", {path.string(), ""});
   const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   BAKE_ASSIGN_OR_RETURN(const Prescan scan, prescan(format, text, path));
+  // Before OpenMesh builds anything: the faces the header declares or the scan counted (an OBJ
+  // polygon is at least one triangle; the exact count is checked again after triangulation).
+  const std::size_t faces = scan.declaredFaces ? *scan.declaredFaces : scan.stlTriangles ? *scan.stlTriangles : scan.objFaces;
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::Triangles, faces, "faces", {path.string(), scan.facesWhere}));
 
   SoupImporter importer(format == MeshFormat::Obj ? AttributeScope::PerCorner : AttributeScope::PerVertex);
   if (!parseWithOpenMesh(path, importer)) {
@@ -495,6 +500,7 @@ Result<TriangleMesh> readMesh(const fs::path& path, const MeshReadOptions& optio
                             : "the file contains no faces",
                         {path.string(), ""});
   }
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::Triangles, mesh.triangles.size(), "triangles", {path.string(), ""}));
   BAKE_RETURN_IF_ERROR(validateMesh(mesh, path.string()));
 
   if (options.weld) {

@@ -28,6 +28,7 @@ struct Prescan {
   std::string facesWhere;
   // STL: triangles in the file; OpenMesh drops those with two equal corners before the importer.
   std::optional<std::size_t> stlTriangles;
+  std::size_t objFaces = 0;  // OBJ face lines (each one triangle or more)
 };
 
 // The per-format scans; `text` is the whole file. Each returns the first problem as an error naming

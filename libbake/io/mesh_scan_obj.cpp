@@ -127,6 +127,7 @@ Status scanObjFace(const fs::path& path, const TextLine& line, const std::vector
     positions.push_back(resolveObjIndex(corner->position, soFar.positions));
   }
   // OpenMesh's OBJ reader drops such faces before our importer sees them; count them here.
+  ++scan.objFaces;
   if (distinctCount(positions) < 3) ++scan.degenerateFaces;
   return {};
 }
