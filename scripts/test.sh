@@ -16,7 +16,7 @@ if [[ "${1:-}" == "--fuzz" ]]; then
   CC=clang CXX=clang++ cmake -S "$here" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBAKE_FUZZ=ON >/dev/null
   cmake --build "$BUILD_DIR" --parallel "$(nproc)" --target fuzz_targets
   cd "$BUILD_DIR"
-  exec ctest --output-on-failure -L fuzz "$@"
+  exec ctest --output-on-failure --parallel "$(nproc)" -L fuzz "$@"
 fi
 cmake_args=()
 if [[ "${1:-}" == "--sanitize" ]]; then
