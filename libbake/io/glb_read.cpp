@@ -386,9 +386,11 @@ Result<Node> readNode(const Document& doc, std::size_t index) {
   if (source.contains("extensions") && source["extensions"].is_object()) node.extensions = source["extensions"];
   const std::size_t nodeCount = arrayMember(doc.root, "nodes").size();
   for (const json& child : arrayMember(source, "children")) {
-    if (!child.is_number_integer() || child.get<std::int64_t>() < 0 || std::uint64_t(child.get<std::int64_t>()) >= nodeCount ||
-        std::size_t(child.get<std::int64_t>()) == index) {
+    if (!child.is_number_integer() || child.get<std::int64_t>() < 0 || std::uint64_t(child.get<std::int64_t>()) >= nodeCount) {
       return invalidInput("child " + child.dump() + " is not a valid node", where);
+    }
+    if (std::size_t(child.get<std::int64_t>()) == index) {
+      return invalidInput("node " + std::to_string(index) + " is its own child (cycle)", where);
     }
     node.children.push_back(child.get<int>());
   }
@@ -401,6 +403,48 @@ Result<Node> readNode(const Document& doc, std::size_t index) {
   BAKE_RETURN_IF_ERROR(numberArrayMember(source, "rotation", node.rotation, where));
   BAKE_RETURN_IF_ERROR(numberArrayMember(source, "scale", node.scale, where));
   return node;
+}
+
+// glTF 2.0 (3.5.3): the nodes form disjoint strict trees. No node is the child of two nodes, no chain
+// of children leads back to its start, and a scene lists each of its roots once, none of them a child.
+Status checkNodeForest(const Document& doc, const std::vector<Node>& nodes, const std::vector<int>& roots) {
+  std::vector<int> parent(nodes.size(), -1);
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    for (const int child : nodes[n].children) {
+      if (parent[std::size_t(child)] >= 0) {
+        return invalidInput("child " + std::to_string(child) + " is already a child of node " +
+                                std::to_string(parent[std::size_t(child)]) + " (a node has one parent at most)",
+                            at(doc, "node " + std::to_string(n)));
+      }
+      parent[std::size_t(child)] = int(n);
+    }
+  }
+  // With one parent each, a cycle is a chain of parents that comes back to a node on it.
+  enum : char { kUnseen, kOnChain, kReachesRoot };
+  std::vector<char> state(nodes.size(), kUnseen);
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    std::vector<int> chain;
+    int node = int(n);
+    while (node >= 0 && state[std::size_t(node)] == kUnseen) {
+      state[std::size_t(node)] = kOnChain;
+      chain.push_back(node);
+      node = parent[std::size_t(node)];
+    }
+    if (node >= 0 && state[std::size_t(node)] == kOnChain) {
+      return invalidInput("node " + std::to_string(node) + " is its own ancestor (cycle)", at(doc, "node " + std::to_string(node)));
+    }
+    for (const int seen : chain) state[std::size_t(seen)] = kReachesRoot;
+  }
+  std::vector<bool> listed(nodes.size(), false);
+  for (const int root : roots) {
+    const Location where = at(doc, "scene root node " + std::to_string(root));
+    if (listed[std::size_t(root)]) return invalidInput("listed twice", where);
+    if (parent[std::size_t(root)] >= 0) {
+      return invalidInput("is a child of node " + std::to_string(parent[std::size_t(root)]) + ", not a root", where);
+    }
+    listed[std::size_t(root)] = true;
+  }
+  return {};
 }
 
 Result<std::vector<int>> readSceneRoots(const Document& doc) {
@@ -465,6 +509,7 @@ Result<Package> toPackage(const Document& doc) {
     package.nodes.push_back(std::move(node));
   }
   BAKE_ASSIGN_OR_RETURN(package.sceneRoots, readSceneRoots(doc));
+  BAKE_RETURN_IF_ERROR(checkNodeForest(doc, package.nodes, package.sceneRoots));
   return package;
 }
 
