@@ -196,8 +196,14 @@ Result<PlyHeader> parsePlyHeader(std::string_view text, const fs::path& path) {
     if (words[0] == "comment" || words[0] == "obj_info") continue;
     if (words[0] == "element") {
       const std::optional<long long> count = words.size() == 3 ? parseInteger(words[2]) : std::nullopt;
-      if (!count || *count < 0 || *count > std::numeric_limits<std::int32_t>::max()) {
-        return lineError(path, line.number, "malformed element line (expected: element NAME COUNT)");
+      if (!count) return lineError(path, line.number, "malformed element line (expected: element NAME COUNT)");
+      if (*count < 0) {
+        return lineError(path, line.number, "element " + inQuotes(words[1]) + " has a negative count " + std::string(words[2]));
+      }
+      if (*count > std::numeric_limits<std::int32_t>::max()) {
+        return lineError(path, line.number, "element " + inQuotes(words[1]) + " count " + std::string(words[2]) +
+                                                " is more than the largest supported, " +
+                                                std::to_string(std::numeric_limits<std::int32_t>::max()));
       }
       header.elements.push_back({std::string(words[1]), std::size_t(*count), line.number, {}});
     } else if (words[0] == "property") {
