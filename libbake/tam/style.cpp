@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -21,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/tam.h"
+#include "core/atomic_file.h"
 #include "core/json_keys.h"
 #include "io/image.h"
 
@@ -152,10 +152,13 @@ Result<stroke::StrokeTexture> loadStrokeImage(const std::string& path, const std
   if (!std::filesystem::is_regular_file(path, ec))
     return Status(ExitCode::Io, "cannot open the stroke image " + path, {styleFile, pointer});
   Result<Image> read = readImage(path);
-  if (!read.isOk()) return read.takeStatus();
+  if (!read.isOk()) {
+    // The style's element names the image; the image's own reason follows.
+    return Status(read.status().code(), "the stroke image " + read.status().describe(), {styleFile, pointer});
+  }
   const Image& image = read.value();
   if (image.width < 2 || image.height < 1 || image.channels < 1)
-    return invalidInput("the stroke image must be at least 2 x 1 pixels", {path, ""});
+    return invalidInput("the stroke image " + path + " must be at least 2 x 1 pixels", {styleFile, pointer});
   stroke::StrokeTexture texture;
   texture.width = image.width;
   texture.height = image.height;
@@ -343,12 +346,9 @@ Result<Style> parseStyle(const std::string& jsonText, const std::string& source,
 }
 
 Result<Style> readStyle(const std::string& path, bool loadImage) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot open the style file", {path, ""});
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return ioError("cannot read the style file", {path, ""});
-  return parseStyle(text.str(), path, std::filesystem::path(path).parent_path().string(), loadImage);
+  // readFileBytes refuses a directory (an ifstream reads one as an empty file).
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  return parseStyle(std::string(bytes.begin(), bytes.end()), path, std::filesystem::path(path).parent_path().string(), loadImage);
 }
 
 Result<Style> readStyle(const std::string& path) { return readStyle(path, true); }
