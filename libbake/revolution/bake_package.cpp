@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "bake_formats/revolution.h"
+#include "core/atomic_file.h"
 #include "revolution/bake_stages.h"
 
 namespace bake::revolution {
@@ -96,9 +96,10 @@ std::array<double, 16> axisFrameMatrix(const AxisFit& axis) {
 }
 
 Result<std::vector<std::uint8_t>> readPng(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot open the base colour texture", {path, ""});
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // readFileBytes refuses a directory (an ifstream reads one as an empty file).
+  Result<std::vector<std::uint8_t>> read = readFileBytes(path);
+  if (!read.isOk()) return Status(read.status().code(), "the base colour texture: " + read.status().message(), {path, ""});
+  const std::vector<std::uint8_t> bytes = std::move(read).value();
   static const std::uint8_t kPngMagic[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
   if (bytes.size() < 8 || !std::equal(kPngMagic, kPngMagic + 8, bytes.begin()))
     return invalidInput("the base colour texture must be a PNG file (glTF embeds PNG or JPEG)", {path, ""});

@@ -5,12 +5,12 @@
 // blank line starts a new contour, '#' starts a comment; a CSV contour whose last point repeats the
 // first is closed. Readers only parse: validateProfile checks the geometry.
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "revolution/profile.h"
 
 namespace bake::revolution {
@@ -92,11 +92,11 @@ Status readJsonContour(const nlohmann::json& node, std::size_t c, const std::str
 }  // namespace
 
 Result<Profile> readProfileJson(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return ioError("cannot open the profile", {path, ""});
+  // readFileBytes refuses a directory (an ifstream on one fails with an exception or reads nothing).
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(in);
+    document = nlohmann::json::parse(bytes.begin(), bytes.end());
   } catch (const nlohmann::json::parse_error& error) {
     return invalidInput(std::string("not valid JSON: ") + error.what(), {path, "byte " + std::to_string(error.byte)});
   } catch (const nlohmann::json::exception& error) {  // e.g. a number overflowing a double
@@ -117,8 +117,8 @@ Result<Profile> readProfileJson(const std::string& path) {
 }
 
 Result<Profile> readProfileCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return ioError("cannot open the profile", {path, ""});
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  std::istringstream in(std::string(bytes.begin(), bytes.end()));
   Profile profile;
   profile.source = path;
   std::vector<Point2> points;

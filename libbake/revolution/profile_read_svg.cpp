@@ -8,10 +8,10 @@
 // The XML is read by a small scanner: tags and their quoted attributes, nothing else.
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "core/atomic_file.h"
 #include "revolution/profile.h"
 
 namespace bake::revolution {
@@ -308,11 +308,9 @@ class PathParser {
 }  // namespace
 
 Result<Profile> readProfileSvg(const std::string& path, const std::string& pathId) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot open the profile", {path, ""});
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  // readFileBytes refuses a directory (an ifstream reads one as an empty file).
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  const std::string text(bytes.begin(), bytes.end());
   std::size_t at = 0;
   while ((at = text.find("<path", at)) != std::string::npos) {
     const std::size_t after = at + 5;
