@@ -3,7 +3,6 @@
 // and every error names the file and the JSON pointer of the element at fault.
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -11,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/limits.h"
 #include "groove/generators.h"
@@ -330,11 +330,9 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
 }
 
 Result<GrooveScene> readGrooveScene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot open the groove scene", {path, ""});
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseGrooveScene(text.str(), path);
+  // readFileBytes refuses a directory (an ifstream reads one as an empty file).
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  return parseGrooveScene(std::string(bytes.begin(), bytes.end()), path);
 }
 
 }  // namespace bake::groove
