@@ -3,10 +3,10 @@
 // point. A sources file lists fields, each the combined min-field of its sources; command-line sources
 // give one field each, or one combined field with --combine.
 #include <cmath>
-#include <fstream>
 
 #include "bake_formats/geodesic.h"
 
+#include "core/atomic_file.h"
 #include "geodesic/bake_stages.h"
 #include "geodesic/farthest.h"
 #include "geodesic/snap.h"
@@ -17,11 +17,11 @@ namespace {
 using nlohmann::json;
 
 Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot open the sources file", {path, ""});
+  // readFileBytes refuses a directory (an ifstream on one fails like malformed JSON).
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   json document;
   try {
-    document = json::parse(in);
+    document = json::parse(bytes.begin(), bytes.end());
   } catch (const json::exception& e) {  // a parse error, or e.g. a number overflowing a double
     return invalidInput(std::string("not valid JSON: ") + e.what(), {path, ""});
   }
