@@ -129,7 +129,16 @@ Result<json> describeRun(const std::string& tool, const std::string& toolVersion
 }
 
 std::string cacheKey(const json& description) {
-  const std::string text = description.dump();
+  std::string text;
+  try {
+    text = description.dump();
+  } catch (const json::type_error&) {
+    // A file name is any bytes, and JSON text must be UTF-8: a description naming a file whose name
+    // is not UTF-8 is keyed by its CBOR bytes instead, which keep every byte (distinct names, distinct
+    // keys), with a prefix no JSON text starts with.
+    const std::vector<std::uint8_t> cbor = json::to_cbor(description);
+    text = "cbor:" + std::string(cbor.begin(), cbor.end());
+  }
   const std::string hash = hashBytes({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
   return hash.substr(hash.find(':') + 1);
 }
@@ -186,7 +195,9 @@ Status Cache::store(const std::string& key, const CacheEntry& entry) const {
   const json manifest = {{"schema", kEntrySchema}, {"version", kEntryVersion}, {"key", key},
                          {"outputs", outputs},     {"report", entry.report}};
   // The manifest is written last: an entry without one is incomplete.
-  if (Status s = writeFileAtomic(temporary / kManifest, manifest.dump(1) + "\n"); !s.isOk()) return fail(s);
+  // The stored report may name files whose names are not UTF-8: those bytes become U+FFFD.
+  const std::string manifestText = manifest.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+  if (Status s = writeFileAtomic(temporary / kManifest, manifestText); !s.isOk()) return fail(s);
 
   const fs::path target = entryPath(key);
   for (int attempt = 0; attempt < 2; ++attempt) {

@@ -70,7 +70,9 @@ json Report::toJson() const {
 }
 
 Status Report::write(const fs::path& path) const {
-  return writeFileAtomic(path, toJson().dump(2) + "\n");
+  // Paths, options and messages may hold bytes that are not UTF-8 (a file name is any bytes); they
+  // become U+FFFD so that the report stays JSON instead of the serializer throwing.
+  return writeFileAtomic(path, toJson().dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 StageTimer::StageTimer(Report* report, std::string name)

@@ -331,7 +331,9 @@ Result<std::vector<std::uint8_t>> encode(const Package& package, const WriteOpti
   if (!used.empty()) root["extensionsUsed"] = std::vector<std::string>(used.begin(), used.end());
   if (!required.empty()) root["extensionsRequired"] = std::vector<std::string>(required.begin(), required.end());
 
-  return assembleGlb(root.dump(), bin.data());
+  // glTF JSON is UTF-8 (glTF 2.0, 3.2); a name taken from a file name need not be. Bytes that are not
+  // UTF-8 become U+FFFD instead of an exception from the serializer.
+  return assembleGlb(root.dump(-1, ' ', false, json::error_handler_t::replace), bin.data());
 }
 
 Status write(const std::filesystem::path& path, const Package& package, const WriteOptions& options) {
