@@ -60,7 +60,9 @@ Result<std::size_t> indexMember(const json& object, const char* key, std::size_t
                                 const Location& where) {
   BAKE_ASSIGN_OR_RETURN(const std::int64_t value, requiredInteger(object, key, where));
   if (value < 0 || std::uint64_t(value) >= size) {
-    return invalidInput(std::string(key) + " " + std::to_string(value) + " names a " + what + " that does not exist",
+    const bool vowel = std::string_view("aeiou").find(what[0]) != std::string_view::npos;
+    return invalidInput(std::string(key) + " " + std::to_string(value) + (vowel ? " names an " : " names a ") + what +
+                            " that does not exist",
                         where);
   }
   return std::size_t(value);
