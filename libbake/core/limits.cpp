@@ -12,7 +12,7 @@ Budgets& current() {
 }
 
 constexpr Budget kAll[] = {Budget::InputBytes, Budget::Triangles, Budget::TextureSide, Budget::Grooves,
-                           Budget::FieldValues};
+                           Budget::Primitives, Budget::FieldValues};
 
 }  // namespace
 
@@ -22,6 +22,7 @@ std::uint64_t& Budgets::operator[](Budget which) {
     case Budget::Triangles: return triangles;
     case Budget::TextureSide: return textureSide;
     case Budget::Grooves: return grooves;
+    case Budget::Primitives: return primitives;
     case Budget::FieldValues: return fieldValues;
   }
   return inputBytes;
@@ -35,6 +36,7 @@ const char* budgetName(Budget which) {
     case Budget::Triangles: return "triangles";
     case Budget::TextureSide: return "texture-side";
     case Budget::Grooves: return "grooves";
+    case Budget::Primitives: return "primitives";
     case Budget::FieldValues: return "field-values";
   }
   return "?";

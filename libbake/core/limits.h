@@ -21,6 +21,7 @@ enum class Budget {
   Triangles,    // triangles of one mesh (from its header where the format declares them)
   TextureSide,  // side of any texture a tool makes or an image it reads (texels: side squared)
   Grooves,      // grooves of one groove scene, after generators
+  Primitives,   // segments and arcs of one groove scene once its curves are flattened
   FieldValues,  // geodesic field values: vertices times fields
 };
 
@@ -29,6 +30,7 @@ struct Budgets {
   std::uint64_t triangles = 50'000'000;
   std::uint64_t textureSide = 16384;
   std::uint64_t grooves = 10'000'000;
+  std::uint64_t primitives = 20'000'000;
   std::uint64_t fieldValues = std::uint64_t(1) << 30;
 
   std::uint64_t& operator[](Budget which);

@@ -11,6 +11,7 @@
 #include <functional>
 #include <numbers>
 
+#include "core/limits.h"
 #include "groove/scene.h"
 
 namespace bake::groove {
@@ -23,6 +24,12 @@ Vec2 operator-(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
 Vec2 operator*(double s, Vec2 a) { return {s * a.u, s * a.v}; }
 double cross(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
 double norm(Vec2 a) { return std::hypot(a.u, a.v); }
+
+std::string showNumber(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
 
 std::string showPoint(Vec2 p) {
   char text[96];
@@ -152,6 +159,10 @@ struct Flattener {
     BAKE_RETURN_IF_ERROR(checkCurvature(t0));
     BAKE_RETURN_IF_ERROR(checkCurvature(tm));
     BAKE_RETURN_IF_ERROR(checkCurvature(t1));
+    // A curve far longer than the tolerance allows (a spiral of astronomic radius) would otherwise
+    // split down to 2^40 pieces.
+    if (out.size() >= budgets().primitives)
+      return checkBudget(Budget::Primitives, out.size() + 1, "primitives after flattening", {source, label});
     p.cornerAtStart = false;  // G1 inside one curve
     out.push_back(p);
     return Status::ok();
@@ -225,9 +236,19 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
     } else {
       const Curve curve = curveOf(piece);
       double length = 0;  // rough length, to refuse degenerate curves
-      for (int i = 0; i < 64; ++i) length += norm(curve.f((i + 1) / 64.0) - curve.f(i / 64.0));
+      double magnitude = 0;  // largest coordinate, against the tolerance below
+      for (int i = 0; i < 64; ++i) {
+        length += norm(curve.f((i + 1) / 64.0) - curve.f(i / 64.0));
+        magnitude = std::max({magnitude, std::abs(curve.f(i / 64.0).u), std::abs(curve.f(i / 64.0).v)});
+      }
       if (!(length > 0))
         return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": zero-length curve", {source, ""});
+      // Doubles carry about 16 digits: deviations below 1e-10 of the coordinates are rounding noise,
+      // and a curve that far out would only split until the depth limit.
+      if (!(tolerance >= 1e-10 * magnitude))
+        return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": coordinates as large as " +
+                                showNumber(magnitude) + " cannot be flattened to within " + showNumber(tolerance),
+                            {source, ""});
       Flattener flattener{curve, tolerance, minRadius, first, label, source, out};
       BAKE_RETURN_IF_ERROR(flattener.run(0, 1, 0));
       // The curve's own end tangents decide the joints (a Bezier may have a zero derivative at an
