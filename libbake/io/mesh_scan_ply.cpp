@@ -3,8 +3,8 @@
 // list on the faces, a list count type its reader accepts, in ASCII no list properties other than
 // the face indices (its ASCII reader skips other properties one word at a time, which
 // desynchronises on lists), and in binary 'end_header' exactly where OpenMesh looks for the data.
-// ASCII bodies are then checked line by line against the header, binary ones for size. The declared
-// counts go back to readMesh, which checks that they all arrived.
+// ASCII bodies are then checked line by line against the header, binary ones for size and list
+// counts. The declared counts go back to readMesh, which checks that they all arrived.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -36,6 +36,7 @@ struct PlyElement {
 
 struct PlyHeader {
   bool ascii = false;
+  bool bigEndian = false;  // binary_big_endian
   std::vector<PlyElement> elements;
   std::size_t vertexElement = 0;
   std::optional<std::size_t> faceElement;
@@ -175,6 +176,7 @@ Result<PlyHeader> parsePlyHeader(std::string_view text, const fs::path& path) {
   } else if (format[1] != "binary_little_endian" && format[1] != "binary_big_endian") {
     return lineError(path, line.number, "unknown PLY format " + inQuotes(format[1]));
   }
+  header.bigEndian = format[1] == "binary_big_endian";
   // PLY has one version, 1.0; OpenMesh's reader loops forever on a version it cannot read as a number.
   {
     const std::string version(format[2]);
@@ -309,6 +311,55 @@ std::uint64_t minimumPlyElementBytes(const PlyElement& element) {
   return bytes * element.count;
 }
 
+// A list count of a binary body: an integer of a PLY type, signed or not, in the file's byte order
+// (the caller checked that its bytes are there).
+std::int64_t readPlyCount(std::string_view text, std::size_t at, const std::string& type, bool bigEndian) {
+  const std::size_t size = plyTypeSize(type);
+  std::uint64_t raw = 0;
+  for (std::size_t i = 0; i < size; ++i) raw = (raw << 8) | std::uint8_t(text[at + (bigEndian ? i : size - 1 - i)]);
+  const bool isSigned = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" || type == "int32";
+  if (isSigned && ((raw >> (8 * size - 1)) & 1)) return std::int64_t(raw) - (std::int64_t(1) << (8 * size));
+  return std::int64_t(raw);
+}
+
+// A binary body with lists, element by element: every list count must be non-negative and every
+// element must fit in the bytes that are left. OpenMesh's reader trusts the counts (a negative one
+// became an allocation of gigabytes). Bodies without lists are checked by their size alone.
+Status scanPlyBinaryBody(std::string_view text, const PlyHeader& header, const fs::path& path) {
+  std::size_t at = header.dataOffset;
+  for (const PlyElement& element : header.elements) {
+    const bool hasList = std::any_of(element.properties.begin(), element.properties.end(),
+                                     [](const PlyProperty& property) { return property.isList(); });
+    if (!hasList) {
+      at += minimumPlyElementBytes(element);  // exact without lists; prescanPly checked the total
+      continue;
+    }
+    for (std::size_t i = 0; i < element.count; ++i) {
+      for (const PlyProperty& property : element.properties) {
+        const std::string where = element.name + " " + std::to_string(i) + ", property " + inQuotes(property.name);
+        const std::size_t size = plyTypeSize(property.isList() ? property.countType : property.type);
+        if (text.size() - std::min(text.size(), at) < size) {
+          return invalidInput("binary PLY is truncated: the data ends inside this element", {path.string(), where});
+        }
+        if (!property.isList()) {
+          at += size;
+          continue;
+        }
+        const std::int64_t count = readPlyCount(text, at, property.countType, header.bigEndian);
+        if (count < 0) return invalidInput("list count " + std::to_string(count) + " is negative", {path.string(), where});
+        at += size;
+        const std::uint64_t items = std::uint64_t(count) * plyTypeSize(property.type);
+        if (text.size() - std::min(text.size(), at) < items) {
+          return invalidInput("binary PLY is truncated: a list of " + std::to_string(count) + " items runs past the end",
+                              {path.string(), where});
+        }
+        at += std::size_t(items);
+      }
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<Prescan> prescanPly(std::string_view text, const fs::path& path) {
@@ -325,6 +376,7 @@ Result<Prescan> prescanPly(std::string_view text, const fs::path& path) {
                               " after the header",
                           {path.string(), ""});
     }
+    BAKE_RETURN_IF_ERROR(scanPlyBinaryBody(text, header, path));
   }
   Prescan scan;
   scan.declaredVertices = header.vertices().count;
