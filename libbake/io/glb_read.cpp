@@ -48,6 +48,10 @@ Result<std::int64_t> integerMember(const json& object, const char* key, std::int
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
   if (!it->is_number_integer()) return invalidInput(std::string(key) + " must be an integer", where);
+  // An unsigned literal past 2^63-1 would wrap to a negative value (and be printed as one).
+  if (it->is_number_unsigned() && it->get<std::uint64_t>() > std::uint64_t(std::numeric_limits<std::int64_t>::max())) {
+    return invalidInput(std::string(key) + " " + it->dump() + " is out of range", where);
+  }
   return it->get<std::int64_t>();
 }
 
