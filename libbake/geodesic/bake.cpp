@@ -23,6 +23,9 @@ Status checkSettings(const Settings& settings) {
     if (v < 0) return usageError("--source-vertex " + std::to_string(v) + ": vertex indices are >= 0");
   if (!(settings.weldTolerance >= 0.0) || !std::isfinite(settings.weldTolerance))
     return usageError("--weld-tolerance must be a finite number >= 0");
+  // A factor <= 0 means "choose the time step"; a negative or NaN one was taken for that silently.
+  if (!(settings.heat.timeFactor >= 0.0) || !std::isfinite(settings.heat.timeFactor))
+    return usageError("--heat-time must be a finite number >= 0 (0: chosen from the mesh)");
   return {};
 }
 
