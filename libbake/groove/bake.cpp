@@ -110,7 +110,12 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
   gridSettings.maxCells = settings.maxCells;
   gridSettings.threads = int(session.threads());
   grid_detail::GridStageTimes times;
-  BAKE_ASSIGN_OR_RETURN(GrooveGrid grid, grid_detail::buildGrooveGridTimed(scene, gridSettings, times));
+  Result<GrooveGrid> built = grid_detail::buildGrooveGridTimed(scene, gridSettings, times);
+  if (!built.isOk()) {
+    Status status = built.takeStatus();
+    return status.inFile(settings.scene);  // the grid's errors are the scene's
+  }
+  GrooveGrid grid = std::move(built).value();
   report.addStage("grid", times.cells);
   report.addStage("records", times.records);
   if (!settings.specialCases) report.setStatistic("recordsLeftOut", dropSpecialCases(grid));

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/parallel.h"
@@ -37,17 +38,25 @@ std::uint64_t cellsAlong(double extent, double size) {
   return count < 1 ? 1 : count > 4e9 ? std::uint64_t(4e9) : std::uint64_t(count);
 }
 
+// A number for a message: "1e-09", not std::to_string's "0.000000".
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Lattice& lattice) {
+  const Location where{"", "grid"};
   if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize))
-    return invalidInput("grid: cell size " + std::to_string(settings.cellSize) + " must be finite and >= 0");
-  if (settings.maxCells < 1) return invalidInput("grid: the largest cell count must be at least 1");
+    return invalidInput("cell size " + shortNumber(settings.cellSize) + " must be finite and >= 0", where);
+  if (settings.maxCells < 1) return invalidInput("the largest cell count must be at least 1", where);
   const double U = scene.domain[0], V = scene.domain[1];
   double size = settings.cellSize > 0 ? settings.cellSize : meanGrooveWidth(scene);
   auto count = [&] { return double(cellsAlong(U, size)) * double(cellsAlong(V, size)); };
   if (settings.cellSize > 0 && count() > double(settings.maxCells))
-    return invalidInput("grid: cell size " + std::to_string(settings.cellSize) + " gives " +
-                        std::to_string(count()) + " cells, more than the largest count " +
-                        std::to_string(settings.maxCells));
+    return invalidInput("cell size " + shortNumber(settings.cellSize) + " gives " + shortNumber(count()) +
+                            " cells, more than the largest count " + std::to_string(settings.maxCells),
+                        where);
   // Grow by at least 1% a step, by the square root of the excess when it is large.
   while (count() > double(settings.maxCells)) size *= std::max(1.01, std::sqrt(count() / double(settings.maxCells)));
   lattice.cells[0] = static_cast<std::uint32_t>(cellsAlong(U, size));
