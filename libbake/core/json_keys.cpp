@@ -8,6 +8,33 @@
 
 namespace bake {
 
+const nlohmann::json& jsonMember(const nlohmann::json& object, const char* key) {
+  static const nlohmann::json kNull;
+  if (!object.is_object()) return kNull;
+  const auto found = object.find(key);
+  return found == object.end() ? kNull : *found;
+}
+
+double jsonNumberOr(const nlohmann::json& object, const char* key, double fallback) {
+  const nlohmann::json& value = jsonMember(object, key);
+  return value.is_number() ? value.get<double>() : fallback;
+}
+
+std::string jsonStringOr(const nlohmann::json& object, const char* key, const std::string& fallback) {
+  const nlohmann::json& value = jsonMember(object, key);
+  return value.is_string() ? value.get<std::string>() : fallback;
+}
+
+std::int64_t jsonIndexOr(const nlohmann::json& object, const char* key) {
+  const nlohmann::json& value = jsonMember(object, key);
+  if (value.is_number_unsigned()) {
+    const std::uint64_t index = value.get<std::uint64_t>();
+    return index <= std::uint64_t(std::numeric_limits<std::int64_t>::max()) ? std::int64_t(index) : -1;
+  }
+  if (value.is_number_integer() && value.get<std::int64_t>() >= 0) return value.get<std::int64_t>();
+  return -1;
+}
+
 std::string jsonPointerChild(const std::string& parent, const std::string& key) {
   std::string escaped;
   for (char c : key) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -18,6 +19,16 @@ namespace bake {
 // "<parent>/<key>" with '~' and '/' in the key escaped as "~0" and "~1".
 std::string jsonPointerChild(const std::string& parent, const std::string& key);
 std::string jsonPointerChild(const std::string& parent, std::size_t index);
+
+// Lenient access for readers of JSON they do not own (glTF parts, extensions in a package): any part
+// may have any type, and json::value() throws on a non-object or a mismatched type. A member, or null
+// when `object` is not an object or lacks it; a member's number or string, or `fallback` when it is
+// missing or of another type.
+const nlohmann::json& jsonMember(const nlohmann::json& object, const char* key);
+double jsonNumberOr(const nlohmann::json& object, const char* key, double fallback);
+std::string jsonStringOr(const nlohmann::json& object, const char* key, const std::string& fallback);
+// A member that is a non-negative integer (a glTF index), or -1.
+std::int64_t jsonIndexOr(const nlohmann::json& object, const char* key);
 
 // Levenshtein distance (insertions, deletions and substitutions of single characters).
 std::size_t editDistance(const std::string& a, const std::string& b);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/json_keys.h"
 #include "groove/package.h"
 
 namespace bake::groove {
@@ -17,20 +18,6 @@ namespace fmt = format::grooves;
 // A JSON integer >= 0 (written unsigned, but a hand-edited file may hold a signed one).
 bool isIndex(const json& value) {
   return value.is_number_unsigned() || (value.is_number_integer() && value.get<std::int64_t>() >= 0);
-}
-
-// A member of a JSON object, or null when `object` is not an object or lacks it: the extension comes
-// from a file, so any of its parts may have any type (json::value() would throw on a non-object).
-const json& member(const json& object, const char* key) {
-  static const json kNull;
-  if (!object.is_object()) return kNull;
-  const auto found = object.find(key);
-  return found == object.end() ? kNull : *found;
-}
-
-std::string stringMember(const json& object, const char* key) {
-  const json& value = member(object, key);
-  return value.is_string() ? value.get<std::string>() : "";
 }
 
 struct Reader {
@@ -49,14 +36,14 @@ struct Reader {
   }
 
   Result<std::uint64_t> count(const char* key) const {
-    const json& counts = member(extension, fmt::kCounts);
+    const json& counts = jsonMember(extension, fmt::kCounts);
     if (!counts.contains(key) || !isIndex(counts[key])) return fail(std::string("counts/") + key, "missing count");
     return counts[key].get<std::uint64_t>();
   }
 
   template <class T>
   Status array(const char* key, std::uint64_t items, std::size_t stride, std::vector<T>& out) const {
-    const json& views = member(extension, fmt::kBufferViews);
+    const json& views = jsonMember(extension, fmt::kBufferViews);
     if (!views.contains(key) || !isIndex(views[key])) return fail(std::string("bufferViews/") + key, "missing bufferView");
     const std::uint64_t view = views[key].get<std::uint64_t>();
     if (view >= package.blobs.size()) return fail(std::string("bufferViews/") + key, "bufferView " + std::to_string(view) + " does not exist");
@@ -78,16 +65,16 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
     return unsupported(std::string(fmt::kExtension) + ": version " + std::to_string(header.version) + " (this reader knows " +
                            std::to_string(fmt::kVersion) + ")",
                        {reader.name, "version"});
-  header.units = stringMember(e, "units");
-  const json &domain = member(e, "domain"), &grid = member(e, "grid");
+  header.units = jsonStringOr(e, "units", "");
+  const json &domain = jsonMember(e, "domain"), &grid = jsonMember(e, "grid");
   if (!domain.is_array() || domain.size() != 2) return reader.fail("domain", "expected [U, V]");
   for (int k = 0; k < 2; ++k) {
     BAKE_ASSIGN_OR_RETURN(header.domain[k], reader.positive(domain[k], "domain"));
   }
-  const std::string wrap = stringMember(e, "wrap");
+  const std::string wrap = jsonStringOr(e, "wrap", "");
   if (wrap != fmt::kWrapNone && wrap != fmt::kWrapRepeat) return reader.fail("wrap", "expected \"none\" or \"repeat\"");
   header.wrapRepeat = wrap == fmt::kWrapRepeat;
-  const json &cells = member(grid, "cells"), &size = member(grid, "cellSize"), &origin = member(grid, "origin");
+  const json &cells = jsonMember(grid, "cells"), &size = jsonMember(grid, "cellSize"), &origin = jsonMember(grid, "origin");
   for (const json* pair : {&cells, &size, &origin}) {
     if (!pair->is_array() || pair->size() != 2) return reader.fail("grid", "expected cells, cellSize and origin pairs");
   }
@@ -106,7 +93,7 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
   if (!e.contains("baseMaterial") || !isIndex(e["baseMaterial"])) return reader.fail("baseMaterial", "missing index");
   header.baseMaterial = e["baseMaterial"].get<std::uint32_t>();
   for (auto [key, names] : {std::pair{"profileNames", &header.profileNames}, {"materialNames", &header.materialNames}}) {
-    const json& list = member(e, key);
+    const json& list = jsonMember(e, key);
     if (list.is_null()) continue;
     if (!list.is_array()) return reader.fail(key, "expected a list of names");
     for (const json& n : list) names->push_back(n.is_string() ? n.get<std::string>() : "");

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "bake_formats/scene.h"
+#include "core/json_keys.h"
 #include "groove/grid.h"
 #include "groove/scene.h"
 #include "io/mesh.h"
@@ -71,7 +72,7 @@ struct Planner {
     step.arguments.insert(step.arguments.end(), {"--sources", sources.string()});
     step.inputs.push_back(sources);
     const std::vector<std::string> read = scene.fieldsRead(object);
-    const bool global = object.options.value("normalize", "") == "global";
+    const bool global = jsonStringOr(object.options, "normalize", "") == "global";
     if (!settings.keepUnused && read.size() < object.fieldNames.size()) {
       if (global) {
         leaveOut(object, "nothing of its fields", "normalize: global divides every field by the largest of all, so all are baked");
@@ -199,7 +200,7 @@ struct Planner {
     BAKE_ASSIGN_OR_RETURN(const double pixels, pixelsPerUnit(object, radius));
     plan.maxPixelsPerUnit = std::max(plan.maxPixelsPerUnit, pixels);
     if (!std::isfinite(pixels)) return {};
-    const double tilesPerUnit = object.options.value("tilesPerUnit", 1.0);
+    const double tilesPerUnit = jsonNumberOr(object.options, "tilesPerUnit", 1.0);
     const double texelsPerUnit = style.resolution * tilesPerUnit;
     int skip = 0;
     const int levels = int(std::floor(std::log2(double(style.resolution)))) + 1;
@@ -231,8 +232,10 @@ struct Planner {
     // Kinds of special case the pattern does not contain: nothing of them is baked (reported).
     BAKE_ASSIGN_OR_RETURN(const groove::GrooveScene grooves, groove::readGrooveScene(input.string()));
     groove::GridSettings grid;
-    grid.cellSize = object.options.value("cellSize", 0.0);
-    grid.maxCells = object.options.value("maxCells", grid.maxCells);
+    // Read leniently: an option of the wrong type is the baker's to refuse when the step runs.
+    grid.cellSize = jsonNumberOr(object.options, "cellSize", 0.0);
+    const std::int64_t maxCells = jsonIndexOr(object.options, "maxCells");
+    if (maxCells > 0) grid.maxCells = std::uint64_t(maxCells);
     BAKE_ASSIGN_OR_RETURN(const groove::GrooveGrid built, groove::buildGrooveGrid(grooves, grid));
     const groove::GridStats stats = groove::gridStats(built);
     const std::pair<const char*, std::uint64_t> kinds[] = {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "core/json_keys.h"
 #include "render/hatching.h"
 
 namespace bake::play {
@@ -37,13 +38,13 @@ Result<std::span<const std::uint8_t>> embeddedKtx2(const glb::Package& package, 
                         where);
   }
   const nlohmann::json& entry = package.images[std::size_t(image)];
-  const std::string mime = entry.is_object() ? entry.value("mimeType", "") : "";
+  const std::string mime = jsonStringOr(entry, "mimeType", "");
   if (mime != fmt::kKtx2MimeType) {
     return invalidInput(name + ": image " + std::to_string(image) + " has mimeType \"" + mime + "\"; it must be " +
                             fmt::kKtx2MimeType,
                         where);
   }
-  const int view = entry.value("bufferView", -1);
+  const std::int64_t view = jsonIndexOr(entry, "bufferView");
   if (view < 0 || std::size_t(view) >= package.blobs.size()) {
     return invalidInput(name + ": image " + std::to_string(image) + " is not embedded in a bufferView", where);
   }

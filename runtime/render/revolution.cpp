@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "io/image.h"
+#include "render/standard.h"
 
 namespace bake::play {
 namespace {
@@ -160,24 +161,14 @@ std::string extensionOfMimeType(const std::string& mime) {
   return ".png";
 }
 
-// The material's base colour image (decoded, RGBA8 top row first), if it has one.
+// The material's base colour image (decoded), if it has one.
 Result<std::optional<Image>> baseColourImage(const nlohmann::json& material, const glb::Package& package,
                                              const Location& where) {
-  const nlohmann::json pbr = material.value("pbrMetallicRoughness", nlohmann::json::object());
-  if (!pbr.is_object() || !pbr.contains("baseColorTexture")) return std::optional<Image>();
-  const int texture = pbr["baseColorTexture"].value("index", -1);
-  if (texture < 0 || std::size_t(texture) >= package.textures.size())
-    return invalidInput("pbrMetallicRoughness.baseColorTexture names no texture of the package", where);
-  const int image = package.textures[std::size_t(texture)].value("source", -1);
-  if (image < 0 || std::size_t(image) >= package.images.size())
-    return invalidInput("texture " + std::to_string(texture) + " has no image source", where);
-  const nlohmann::json& entry = package.images[std::size_t(image)];
-  const int view = entry.value("bufferView", -1);
-  if (view < 0 || std::size_t(view) >= package.blobs.size())
-    return invalidInput("image " + std::to_string(image) + " (base colour) is not embedded in a bufferView", where);
-  const std::string name = where.file + " image " + std::to_string(image);
-  BAKE_ASSIGN_OR_RETURN(Image decoded, readImageFromMemory(package.blobs[std::size_t(view)].bytes, name,
-                                                           extensionOfMimeType(entry.value("mimeType", ""))));
+  BAKE_ASSIGN_OR_RETURN(const std::optional<EmbeddedImage> embedded, baseColourTextureOf(material, package, where));
+  if (!embedded) return std::optional<Image>();
+  const std::string name = where.file + " image " + std::to_string(embedded->image);
+  BAKE_ASSIGN_OR_RETURN(Image decoded, readImageFromMemory(package.blobs[embedded->bufferView].bytes, name,
+                                                           extensionOfMimeType(embedded->mimeType)));
   return std::optional<Image>(std::move(decoded));
 }
 
@@ -196,18 +187,6 @@ std::vector<std::uint8_t> rgba8(const Image& image) {
     }
   }
   return out;
-}
-
-std::array<float, 4> baseColourFactor(const nlohmann::json& material) {
-  std::array<float, 4> colour{0.8f, 0.8f, 0.8f, 1.0f};
-  const nlohmann::json factor =
-      material.value("pbrMetallicRoughness", nlohmann::json::object()).value("baseColorFactor", nlohmann::json());
-  if (factor.is_array() && factor.size() == 4) {
-    for (std::size_t i = 0; i < 4; ++i) {
-      if (factor[i].is_number()) colour[i] = factor[i].get<float>();
-    }
-  }
-  return colour;
 }
 
 const char* encodingDefine(ShapeEncoding encoding) {
@@ -265,7 +244,7 @@ Status RevolutionRenderer::prepare(const Scene& scene, const std::vector<std::si
     item.boxMax = box.hi;
     BAKE_ASSIGN_OR_RETURN(item.box, GpuPrimitive::upload(boxPrimitive(box), {{"POSITION", kPositionLocation}}));
     item.world = instance.world;
-    item.baseColour = baseColourFactor(material);
+    item.baseColour = baseColourOf(material);
 
     gl::Variant variant{{"revolution/revolution.vert", "revolution/revolution.frag", "", "", ""}, {}};
     variant.defines.push_back(encodingDefine(p.shapeMap.encoding));

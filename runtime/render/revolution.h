@@ -65,6 +65,17 @@ const char* revolutionProjectionName(RevolutionProjection projection);
 Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const glb::Package& package,
                                          const Location& where);
 
+// The embedded image behind a material's pbrMetallicRoughness.baseColorTexture (textures[i].source ->
+// images[j] -> bufferView): nothing when the material has no such texture, an error when the chain
+// names something missing or is not embedded (external URIs are not part of a package).
+struct EmbeddedImage {
+  std::size_t image = 0;
+  std::size_t bufferView = 0;
+  std::string mimeType;
+};
+Result<std::optional<EmbeddedImage>> baseColourTextureOf(const nlohmann::json& material, const glb::Package& package,
+                                                         const Location& where);
+
 // Loader checks of BAKE_revolution for `bakeplay validate`: every material that carries it parses
 // (version, bufferViews and their sizes, encodings, texel size, margin, march, bands, projection),
 // and its base colour texture, when it has one, names an embedded image.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/json_keys.h"
 #include "render/revolution.h"
 
 namespace bake::play {
@@ -265,31 +266,22 @@ Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const 
   return params;
 }
 
-namespace {
-
-// The embedded image behind a material's baseColorTexture: textures[i].source -> images[j], which
-// must name a bufferView (external URIs are not part of a package).
-Status checkBaseColourTexture(const nlohmann::json& material, const glb::Package& package, const Location& where) {
-  const nlohmann::json pbr = material.value("pbrMetallicRoughness", nlohmann::json::object());
-  if (!pbr.is_object() || !pbr.contains("baseColorTexture")) return {};
-  const nlohmann::json& info = pbr["baseColorTexture"];
-  const int texture = info.is_object() && info.value("index", nlohmann::json()).is_number_integer()
-                          ? info["index"].get<int>()
-                          : -1;
+Result<std::optional<EmbeddedImage>> baseColourTextureOf(const nlohmann::json& material, const glb::Package& package,
+                                                         const Location& where) {
+  const nlohmann::json& info = jsonMember(jsonMember(material, "pbrMetallicRoughness"), "baseColorTexture");
+  if (info.is_null()) return std::optional<EmbeddedImage>();
+  const std::int64_t texture = jsonIndexOr(info, "index");
   if (texture < 0 || std::size_t(texture) >= package.textures.size())
     return invalidInput("pbrMetallicRoughness.baseColorTexture names no texture of the package", where);
-  const nlohmann::json& t = package.textures[std::size_t(texture)];
-  const int image = t.value("source", nlohmann::json()).is_number_integer() ? t["source"].get<int>() : -1;
+  const std::int64_t image = jsonIndexOr(package.textures[std::size_t(texture)], "source");
   if (image < 0 || std::size_t(image) >= package.images.size())
     return invalidInput("texture " + std::to_string(texture) + " has no image source", where);
-  const nlohmann::json& i = package.images[std::size_t(image)];
-  const int view = i.value("bufferView", nlohmann::json()).is_number_integer() ? i["bufferView"].get<int>() : -1;
+  const nlohmann::json& entry = package.images[std::size_t(image)];
+  const std::int64_t view = jsonIndexOr(entry, "bufferView");
   if (view < 0 || std::size_t(view) >= package.blobs.size())
     return invalidInput("image " + std::to_string(image) + " (base colour) is not embedded in a bufferView", where);
-  return {};
+  return std::optional<EmbeddedImage>(EmbeddedImage{std::size_t(image), std::size_t(view), jsonStringOr(entry, "mimeType", "")});
 }
-
-}  // namespace
 
 Status checkRevolutionPackage(const glb::Package& package, const std::string& name) {
   for (std::size_t m = 0; m < package.materials.size(); ++m) {
@@ -299,7 +291,7 @@ Status checkRevolutionPackage(const glb::Package& package, const std::string& na
       continue;
     const Location where{name, "material " + std::to_string(m)};
     BAKE_RETURN_IF_ERROR(parseRevolution(material["extensions"][fmt::kExtension], package, where).status());
-    BAKE_RETURN_IF_ERROR(checkBaseColourTexture(material, package, where));
+    BAKE_RETURN_IF_ERROR(baseColourTextureOf(material, package, where).status());
   }
   return {};
 }

@@ -2,24 +2,25 @@
 
 #include <GL/glcorearb.h>
 
-namespace bake::play {
-namespace {
+#include "core/json_keys.h"
 
-constexpr int kPositionLocation = 0;
-constexpr int kNormalLocation = 1;
+namespace bake::play {
 
 std::array<float, 4> baseColourOf(const nlohmann::json& material) {
   std::array<float, 4> colour{0.8f, 0.8f, 0.8f, 1.0f};
-  if (!material.is_object()) return colour;
-  const nlohmann::json factor =
-      material.value("pbrMetallicRoughness", nlohmann::json::object()).value("baseColorFactor", nlohmann::json());
+  const nlohmann::json& factor = jsonMember(jsonMember(material, "pbrMetallicRoughness"), "baseColorFactor");
   if (factor.is_array() && factor.size() == 4) {
-    for (int i = 0; i < 4; ++i) {
-      if (factor[std::size_t(i)].is_number()) colour[std::size_t(i)] = factor[std::size_t(i)].get<float>();
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (factor[i].is_number()) colour[i] = factor[i].get<float>();
     }
   }
   return colour;
 }
+
+namespace {
+
+constexpr int kPositionLocation = 0;
+constexpr int kNormalLocation = 1;
 
 void setMatrix4(unsigned program, const char* name, const Mat4& m) {
   glProgramUniformMatrix4fv(program, glGetUniformLocation(program, name), 1, GL_FALSE, m.data());

@@ -8,6 +8,10 @@
 
 namespace bake::play {
 
+// glTF pbrMetallicRoughness.baseColorFactor of a material, or glTF's default when it has none (any part
+// of the material may have any type: it is read leniently).
+std::array<float, 4> baseColourOf(const nlohmann::json& material);
+
 class StandardRenderer : public TechniqueRenderer {
  public:
   Status prepare(const Scene& scene, const std::vector<std::size_t>& instances, gl::ShaderLibrary& shaders) override;

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/json_keys.h"
 #include "io/glb_scene.h"
 
 namespace bake::play {
@@ -39,30 +40,35 @@ Status checkExtensions(const glb::Package& package, const std::string& file, Dia
 
 Vec3 column(const glb::WorldMatrix& m, int c) { return {float(m[c * 4]), float(m[c * 4 + 1]), float(m[c * 4 + 2])}; }
 
+// Cameras and lights are optional hints: one of a shape this runtime does not read is ignored, like
+// any glTF viewer would, and never throws (every part is read leniently).
 void takeCamera(const glb::Package& package, const glb::Node& node, const glb::WorldMatrix& world, Scene& scene) {
   if (scene.fileCamera || node.camera < 0) return;
   const nlohmann::json& camera = package.cameras[std::size_t(node.camera)];
-  if (camera.value("type", "") != "perspective" || !camera.contains("perspective")) return;
-  const nlohmann::json& p = camera["perspective"];
+  const nlohmann::json& p = jsonMember(camera, "perspective");
+  if (jsonStringOr(camera, "type", "") != "perspective" || !p.is_object()) return;
   Camera out;
   out.eye = column(world, 3);
   out.target = out.eye - normalize(column(world, 2));  // cameras look down their local -Z
   out.up = normalize(column(world, 1));
-  out.yfov = p.value("yfov", 0.7f);
-  out.znear = p.value("znear", 0.01f);
-  out.zfar = p.value("zfar", 1000.0f);
+  out.yfov = float(jsonNumberOr(p, "yfov", 0.7));
+  out.znear = float(jsonNumberOr(p, "znear", 0.01));
+  out.zfar = float(jsonNumberOr(p, "zfar", 1000.0));
   scene.fileCamera = out;
 }
 
 void takeLight(const glb::Package& package, const glb::Node& node, const glb::WorldMatrix& world, Scene& scene) {
   if (scene.fileLight || !node.extensions.contains(kLightsExtension)) return;
-  const nlohmann::json lights = package.extensions.value(kLightsExtension, nlohmann::json::object()).value("lights", nlohmann::json::array());
-  const int index = node.extensions[kLightsExtension].value("light", -1);
-  if (index < 0 || std::size_t(index) >= lights.size() || lights[std::size_t(index)].value("type", "") != "directional") return;
+  const nlohmann::json& lights = jsonMember(jsonMember(package.extensions, kLightsExtension), "lights");
+  const double index = jsonNumberOr(node.extensions[kLightsExtension], "light", -1);
+  if (!lights.is_array() || !(index >= 0) || index >= double(lights.size()) || index != std::floor(index)) return;
+  const nlohmann::json& chosen = lights[std::size_t(index)];
+  if (jsonStringOr(chosen, "type", "") != "directional") return;
   Light light;
   light.direction = normalize(column(world, 2));  // the light shines down its local -Z
-  const nlohmann::json colour = lights[std::size_t(index)].value("color", nlohmann::json::array({1.0, 1.0, 1.0}));
-  if (colour.is_array() && colour.size() == 3) light.colour = {colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()};
+  const nlohmann::json& colour = jsonMember(chosen, "color");
+  if (colour.is_array() && colour.size() == 3 && colour[0].is_number() && colour[1].is_number() && colour[2].is_number())
+    light.colour = {colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()};
   scene.fileLight = light;
 }
 

@@ -50,6 +50,44 @@ TEST(Scene, TakesCameraAndLightFromTheFile) {
   EXPECT_EQ(scene->boundsMax[0], 1.0f);
 }
 
+TEST(Scene, MalformedCamerasAndLightsAreIgnoredNotThrown) {
+  // Each part of a camera or light of the wrong JSON type: the scene loads without them.
+  const std::vector<std::pair<nlohmann::json, nlohmann::json>> cases = {
+      {nlohmann::json::array({{{"type", "perspective"}, {"perspective", 5}}}), {{"lights", {{{"type", "directional"}}}}}},
+      {nlohmann::json::array({{{"type", 7}, {"perspective", {{"yfov", "wide"}}}}}), {{"lights", 3}}},
+      {nlohmann::json::array({{{"type", "perspective"}, {"perspective", {{"yfov", "wide"}}}}}),
+       {{"lights", {{{"type", "directional"}, {"color", {"red", 0, 0}}}}}}},
+      {nlohmann::json::array({"camera"}), "lights"},
+  };
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    SCOPED_TRACE("case " + std::to_string(c));
+    glb::Package package = trianglePackage();
+    package.cameras = cases[c].first;
+    package.extensions["KHR_lights_punctual"] = cases[c].second;
+    glb::Node mesh{"mesh", 0, {}, std::nullopt};
+    glb::Node camera{"camera", -1, {}, std::nullopt};
+    camera.camera = 0;
+    glb::Node sun{"sun", -1, {}, std::nullopt};
+    sun.extensions["KHR_lights_punctual"] = {{"light", c == 3 ? nlohmann::json("first") : nlohmann::json(0)}};
+    package.nodes = {mesh, camera, sun};
+    const fs::path dir = test::freshTempDir("scene_malformed_camera");
+    ASSERT_TRUE(glb::write(dir / "scene.glb", package).isOk());
+    Diagnostics diagnostics("test", true);
+    auto scene = loadScene({dir / "scene.glb"}, diagnostics, noTechniques);
+    ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+    EXPECT_EQ(scene->instances.size(), 1u);
+    if (c == 2) {
+      // A perspective camera with a bad yfov keeps the default; a light with a bad colour stays white.
+      ASSERT_TRUE(scene->fileCamera.has_value());
+      EXPECT_FLOAT_EQ(scene->fileCamera->yfov, 0.7f);
+      ASSERT_TRUE(scene->fileLight.has_value());
+      EXPECT_FLOAT_EQ(scene->fileLight->colour[0], 1.0f);
+    } else {
+      EXPECT_FALSE(scene->fileCamera.has_value()) << "only a perspective object makes a camera";
+    }
+  }
+}
+
 TEST(Scene, UnknownExtensionsWarnOrFailWhenRequired) {
   glb::Package package = trianglePackage();
   package.extensions["BAKE_future"] = {{"version", 1}};
