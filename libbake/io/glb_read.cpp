@@ -155,23 +155,37 @@ Result<std::vector<std::uint8_t>> decodeBase64(const std::string& text, const Lo
   return out;
 }
 
+int hexValue(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
 Result<std::vector<std::uint8_t>> loadBufferUri(const std::string& uri, const fs::path& baseDir, const Location& where) {
+  if (uri.empty()) return invalidInput("uri is empty", where);
   if (uri.rfind("data:", 0) == 0) {
     const std::size_t comma = uri.find(',');
-    if (comma == std::string::npos || uri.compare(comma - 7, 7, ";base64") != 0) {
+    if (comma == std::string::npos || comma < 7 || uri.compare(comma - 7, 7, ";base64") != 0) {
       return unsupported("only base64 data URIs are supported", where);
     }
     return decodeBase64(uri.substr(comma + 1), where);
   }
   if (uri.find("://") != std::string::npos) return unsupported("remote buffer URI " + uri, where);
-  std::string decoded;  // percent-decoding of the relative path
+  std::string decoded;  // percent-decoding of the relative path (RFC 3986 2.1: '%' and two hex digits)
   for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size()) {
-      decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
+    if (uri[i] != '%') {
       decoded += uri[i];
+      continue;
     }
+    const int high = i + 1 < uri.size() ? hexValue(uri[i + 1]) : -1, low = i + 2 < uri.size() ? hexValue(uri[i + 2]) : -1;
+    if (high < 0 || low < 0 || high * 16 + low == 0) {
+      return invalidInput("uri " + uri + ": \"" + uri.substr(i, 3) + "\" at character " + std::to_string(i) +
+                              " is not a percent escape of a byte (%01 to %FF)",
+                          where);
+    }
+    decoded += char(high * 16 + low);
+    i += 2;
   }
   auto bytes = readFileBytes(baseDir / decoded);
   if (!bytes.isOk()) return Status(bytes.status().code(), "buffer file " + decoded + ": " + bytes.status().message(), where);
