@@ -3,6 +3,7 @@
 #   scripts/test.sh              normal build (build/)
 #   scripts/test.sh --sanitize   ASan + UBSan build (build-sanitize/)
 #   scripts/test.sh --fuzz       clang libFuzzer targets (build-fuzz/), each run briefly: ctest -L fuzz
+#                                (BAKE_FUZZ_SECONDS=600 scripts/test.sh --fuzz: ten minutes each)
 #   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -13,7 +14,9 @@ if [[ "${1:-}" == "--fuzz" ]]; then
   # Only the fuzz targets (tests/fuzz) are built, with clang, ASan, UBSan and libFuzzer.
   shift
   BUILD_DIR="$here/build-fuzz"
-  CC=clang CXX=clang++ cmake -S "$here" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBAKE_FUZZ=ON >/dev/null
+  # BAKE_FUZZ_SECONDS: how long each target runs (20 s by default; 600 for a ten-minute campaign).
+  CC=clang CXX=clang++ cmake -S "$here" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBAKE_FUZZ=ON \
+    -DBAKE_FUZZ_SECONDS="${BAKE_FUZZ_SECONDS:-20}" >/dev/null
   cmake --build "$BUILD_DIR" --parallel "$(nproc)" --target fuzz_targets
   cd "$BUILD_DIR"
   exec ctest --output-on-failure --parallel "$(nproc)" -L fuzz "$@"
