@@ -32,11 +32,21 @@ std::string number(double x) {
 
 bool finite3(const std::array<double, 3>& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
+// Two spellings of one file ("t.ktx2", "./t.ktx2", a link to it) are one output: the second write
+// would replace the first.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code errorA, errorB;
+  const std::filesystem::path canonicalA = std::filesystem::weakly_canonical(a, errorA);
+  const std::filesystem::path canonicalB = std::filesystem::weakly_canonical(b, errorB);
+  if (errorA || errorB) return std::filesystem::path(a).lexically_normal() == std::filesystem::path(b).lexically_normal();
+  return canonicalA == canonicalB;
+}
+
 Status checkSettings(const Settings& settings) {
   if (lowercaseExtension(settings.output) != ".ktx2") return usageError("-o " + settings.output + ": the TAM is a .ktx2 file");
   if (!settings.threshold.empty() && lowercaseExtension(settings.threshold) != ".ktx2")
     return usageError("--threshold " + settings.threshold + ": the threshold texture is a .ktx2 file");
-  if (!settings.threshold.empty() && std::filesystem::path(settings.threshold) == std::filesystem::path(settings.output))
+  if (!settings.threshold.empty() && sameFile(settings.threshold, settings.output))
     return usageError("--threshold and -o name the same file");
   if (settings.candidates != -1 && (settings.candidates < 1 || settings.candidates > 4096))
     return usageError("--candidates must be within 1 .. 4096");
