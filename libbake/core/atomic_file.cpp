@@ -83,6 +83,12 @@ Status writeFileAtomic(const fs::path& target, std::span<const std::uint8_t> byt
   return renameInto(temporary, target);
 }
 
+Status checkWritable(const fs::path& target) {
+  BAKE_ASSIGN_OR_RETURN(const fs::path temporary, writeTemporary(target, {}));
+  removeTemporary(temporary);
+  return {};
+}
+
 Status writeFileAtomic(const fs::path& target, const std::string& text) {
   return writeFileAtomic(target, asBytes(text));
 }

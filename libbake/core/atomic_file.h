@@ -18,6 +18,10 @@ Status writeFileAtomic(const std::filesystem::path& target, const std::string& t
 
 Result<std::vector<std::uint8_t>> readFileBytes(const std::filesystem::path& path);
 
+// Whether writeFileAtomic(target, ...) could create its temporary beside `target` and replace it:
+// the same errors, found before anything else is committed. Leaves nothing behind.
+Status checkWritable(const std::filesystem::path& target);
+
 // Outputs of one bake: staged in temporary files as they are produced, renamed into place by
 // commit(); the destructor removes whatever was not committed.
 class OutputSet {

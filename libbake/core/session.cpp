@@ -70,16 +70,20 @@ void BakeSession::storeInCache(const std::vector<fs::path>& committed) {
 }
 
 Status BakeSession::finish(Status outcome) {
-  if (outcome.isOk()) outcome = outputs_.commit();
-  if (!outcome.isOk()) outputs_.discard();
   std::vector<std::filesystem::path> outputs = outputs_.targets();
   outputs.insert(outputs.end(), written_.begin(), written_.end());
+  // The depfile is staged with the outputs and the report's folder is tried before anything is
+  // committed: a --depfile or --report that cannot be written fails the bake with every earlier
+  // output still in place.
+  if (outcome.isOk() && !options_.depfilePath.empty()) {
+    outcome = outputs_.stage(options_.depfilePath, formatDepfile(outputs, inputs_));
+  }
+  if (outcome.isOk() && !options_.reportPath.empty()) outcome = checkWritable(options_.reportPath);
+  if (outcome.isOk()) outcome = outputs_.commit();
+  if (!outcome.isOk()) outputs_.discard();
   if (!options_.cacheDir.empty() && !cacheHit_) {
     report_.setStatistic("cache", "miss");
     if (outcome.isOk() && !options_.cacheStore.key.empty()) storeInCache(outputs);
-  }
-  if (outcome.isOk() && !options_.depfilePath.empty()) {
-    outcome = writeDepfile(options_.depfilePath, outputs, inputs_);
   }
   if (!options_.reportPath.empty()) {
     for (const auto& input : inputs_) {

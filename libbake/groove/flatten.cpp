@@ -161,8 +161,10 @@ struct Flattener {
     BAKE_RETURN_IF_ERROR(checkCurvature(t1));
     // A curve far longer than the tolerance allows (a spiral of astronomic radius) would otherwise
     // split down to 2^40 pieces.
-    if (out.size() >= budgets().primitives)
-      return checkBudget(Budget::Primitives, out.size() + 1, "primitives after flattening", {source, label});
+    if (out.size() >= budgets().primitives) {
+      const Status fits = checkBudget(Budget::Primitives, out.size() + 1, "primitives after flattening", {});
+      return invalidInput(label + ": " + fits.message(), {source, ""});
+    }
     p.cornerAtStart = false;  // G1 inside one curve
     out.push_back(p);
     return Status::ok();
@@ -194,6 +196,14 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
     const std::size_t before = out.size();
     Vec2 startTangent, endTangent;
     const std::string segment = "segment " + std::to_string(before - first);
+    // Arcs split into pieces of at most 90 degrees, spirals flatten into arcs of at most 45: a sweep of
+    // a billion turns is refused before any piece is made.
+    if (piece.kind == PathPiece::Kind::Arc || piece.kind == PathPiece::Kind::Spiral) {
+      const double least = std::ceil(std::abs(piece.sweep) / (piece.kind == PathPiece::Kind::Arc ? 0.5 * kPi : 0.25 * kPi));
+      const std::uint64_t count = least < 1e18 ? std::uint64_t(least) : std::uint64_t(1e18);
+      const Status fits = checkBudget(Budget::Primitives, out.size() + count, "primitives after flattening", {});
+      if (!fits.isOk()) return invalidInput(label + ": " + segment + ": " + fits.message(), {source, ""});
+    }
     if (piece.kind == PathPiece::Kind::Line) {
       Primitive p;
       p.a = piece.p[0];
