@@ -170,7 +170,11 @@ def geodesic(d, run):
                       "fmm s", "fmm mean err"], body))
 
     # Every method on the largest rung where the CGAL peers ran too (else the largest), both source counts.
-    with_peers = [r for r in ok if r["method"].startswith("cgal-")] or ok
+    def ran(mesh, method):
+        return (mesh, "1", method) in by
+
+    with_peers = ([r for r in ok if ran(r["mesh"], "cgal-exact") and ran(r["mesh"], "cgal-heat")]
+                  or [r for r in ok if r["method"].startswith("cgal-")] or ok)
     top = max(with_peers, key=lambda r: int(r["triangles"]))["mesh"]
     body = []
     for sources in ("1", "8"):

@@ -13,7 +13,8 @@
 # --out   where the results go (default BUILD_DIR/results/resources); scratch outputs in OUT/work/
 #
 # Inputs: geobake on the largest real mesh of ../shared/data/meshes/real (or $BAKE_DATA_DIR/meshes/real;
-# else a pretzel from bakeshape), exact and heat, one source; revolbake on pipelines/revolution/vase.json;
+# else a pretzel from bakeshape), exact and heat, one source, and in full mode also on bakeshape's pretzel
+# at 256 cells (about 450k triangles, the size of the full geodesic ladder's largest rungs); revolbake on pipelines/revolution/vase.json;
 # groovebake on 100,000 random grooves; tambake on pipelines/hatching/hatching.json; bakeshape's pretzel
 # at 256 cells; bakepipe assemble on each pipelines/*/scene.json (baked first with bakepipe ninja);
 # bakeplay validate and render on the largest package made here (the groove grid of 100,000 grooves).
@@ -113,6 +114,18 @@ for method in exact heat; do
     -j "$threads" --report "$work/geodesic-$method.json" -q
   if [[ $last_ok == 1 ]]; then set_size "$(report_value "$work/geodesic-$method.json" triangles) triangles"; fi
 done
+
+# Full mode: the geodesic ladder reaches 400k triangles, so geobake also runs on a generated mesh of
+# that size (bakeshape's pretzel at 256 cells, about 450k triangles).
+if [[ $mode == full ]]; then
+  "$tools/bakeshape/bakeshape" pretzel --resolution 256 -o "$work/pretzel-geodesic.glb" -q
+  for method in exact heat; do
+    measure geobake "bakeshape pretzel at 256 cells ($method; 1 source)" "?" \
+      "$tools/geobake/geobake" "$work/pretzel-geodesic.glb" -o "$work/pretzel-$method.glb" --method "$method" \
+      --auto-sources 1 -j "$threads" --report "$work/pretzel-$method.json" -q
+    if [[ $last_ok == 1 ]]; then set_size "$(report_value "$work/pretzel-$method.json" triangles) triangles"; fi
+  done
+fi
 
 # revolbake: a profile of pipelines/revolution at the revolution bench's largest resolution.
 measure revolbake "pipelines/revolution/vase.json" "${revol_resolution} texels (larger side)" \
