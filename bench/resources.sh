@@ -73,7 +73,7 @@ measure() {
   else
     read -r wall kib < <(tail -1 "$work/time.txt")
     awk -v t="$tool" -v i="$input" -v s="$size" -v w="$wall" -v k="$kib" \
-      'BEGIN { printf "%s,%s,%s,%.2f,%.1f\n", t, i, s, w, k / 1024 }' >>"$csv"
+      'BEGIN { gsub(",", ";", i); gsub(",", ";", s); printf "%s,%s,%s,%.2f,%.1f\n", t, i, s, w, k / 1024 }' >>"$csv"
     last_ok=1
   fi
   echo "$tool: $(show "$*")" >>"$commands"
