@@ -14,7 +14,7 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libembree-dev libsvgpp-dev libopencv-dev gnuplot-nox xvfb xauth
-  clang libclang-rt-14-dev time
+  clang libclang-rt-14-dev time python3
 )
 
 missing=()
