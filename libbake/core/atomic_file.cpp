@@ -31,13 +31,12 @@ Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uin
     return ioError("is a directory, not a file", {target.string(), ""});
   }
   std::string pattern = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
-  const int fd = ::mkstemp(pattern.data());
+  const int fd = createRegisteredTemporary(pattern);
   if (fd < 0) {
     return ioError("cannot create a file in " + dir.string() + ": " + systemMessage(errno),
                    {target.string(), ""});
   }
   const fs::path temporary = pattern;
-  registerTemporary(temporary);
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);

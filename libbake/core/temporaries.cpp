@@ -1,10 +1,15 @@
 #include "core/temporaries.h"
 
+#include <fcntl.h>
 #include <limits.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstdint>
+#include <random>
 #include <cstring>
 #include <mutex>
 
@@ -21,6 +26,19 @@ struct Slot {
 Slot slots[kMaxRegisteredTemporaries];
 
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ};
+
+constexpr char kNameLetters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+
+// Unpredictable name letters for temporaries (splitmix64 over a per-process random seed).
+std::uint64_t nextRandom() {
+  static const std::uint64_t seed = (std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}() ^
+                                    (std::uint64_t(::getpid()) << 20);
+  static std::atomic<std::uint64_t> counter{0};
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (counter.fetch_add(1, std::memory_order_relaxed) + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
 
 extern "C" void removeTemporariesAndDie(int signal) {
   for (Slot& slot : slots) {
@@ -44,12 +62,7 @@ void installHandlers() {
   }
 }
 
-}  // namespace
-
-void registerTemporary(const std::filesystem::path& path) {
-  static std::once_flag installed;
-  std::call_once(installed, installHandlers);
-  const std::string& text = path.native();
+void registerTemporary(const std::string& text) {
   if (text.size() >= PATH_MAX) return;
   for (Slot& slot : slots) {
     int expected = kFree;
@@ -58,6 +71,38 @@ void registerTemporary(const std::filesystem::path& path) {
     slot.state.store(kLive, std::memory_order_release);
     return;
   }
+}
+
+}  // namespace
+
+int createRegisteredTemporary(std::string& pattern, int suffixLength) {
+  static std::once_flag installed;
+  std::call_once(installed, installHandlers);
+  const std::size_t letters = pattern.size() - std::size_t(suffixLength) - 6;
+  if (pattern.size() < std::size_t(suffixLength) + 6 || pattern.compare(letters, 6, "XXXXXX") != 0) {
+    errno = EINVAL;
+    return -1;
+  }
+  // The name is registered before the file exists: a signal delivered to any thread at any moment
+  // then finds it (unlinking a name not yet created is harmless). A name already taken is skipped
+  // before it is registered, so that the handler never removes someone else's file.
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::uint64_t bits = nextRandom();
+    for (std::size_t i = 0; i < 6; ++i, bits /= 62) pattern[letters + i] = kNameLetters[bits % 62];
+    struct stat existing {};
+    if (::lstat(pattern.c_str(), &existing) == 0) continue;
+    registerTemporary(pattern);
+    const int fd = ::open(pattern.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd >= 0) return fd;
+    const int err = errno;
+    unregisterTemporary(pattern);
+    if (err != EEXIST) {
+      errno = err;
+      return -1;
+    }
+  }
+  errno = EEXIST;
+  return -1;
 }
 
 void unregisterTemporary(const std::filesystem::path& path) {

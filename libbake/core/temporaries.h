@@ -9,12 +9,16 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 namespace bake {
 
-// Registers a temporary file (installs the handlers on first use). At most kMaxRegisteredTemporaries
-// are tracked at once; more are still written, only not removed on a signal.
-void registerTemporary(const std::filesystem::path& path);
+// Creates a temporary file like mkstemps ("....XXXXXX" followed by `suffixLength` characters; the
+// pattern is rewritten with the name) and registers it in a way no signal can slip through: the name
+// is registered before the file is created. Installs the handlers on first use. Returns the open
+// descriptor, or -1 with errno set. At most kMaxRegisteredTemporaries are tracked at once; more are
+// still created, only not removed on a signal.
+int createRegisteredTemporary(std::string& pattern, int suffixLength = 0);
 // Forgets a temporary that was renamed into place or removed.
 void unregisterTemporary(const std::filesystem::path& path);
 

@@ -143,14 +143,13 @@ class TemporaryFile {
   Status create(const fs::path& target, const std::string& extension) {
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     std::string pattern = (dir / ("." + target.stem().string() + ".tmp.XXXXXX" + extension)).string();
-    const int fd = ::mkstemps(pattern.data(), int(extension.size()));
+    const int fd = createRegisteredTemporary(pattern, int(extension.size()));
     if (fd < 0) {
       return ioError("cannot create a file in " + dir.string() + ": " + std::strerror(errno),
                      {target.string(), ""});
     }
     ::close(fd);
     path_ = pattern;
-    registerTemporary(path_);
     return {};
   }
 
@@ -289,9 +288,8 @@ namespace {
 Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::string& name,
                               const std::string& extension) {
   std::string pattern = (fs::temp_directory_path() / ("bake-image.XXXXXX" + extension)).string();
-  const int fd = ::mkstemps(pattern.data(), int(extension.size()));
+  const int fd = createRegisteredTemporary(pattern, int(extension.size()));
   if (fd < 0) return ioError(std::string("cannot create a temporary file: ") + std::strerror(errno), {name, ""});
-  registerTemporary(pattern);
   std::size_t written = 0;
   while (written < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);

@@ -5,9 +5,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
+#include <set>
 
 #include "core/atomic_file.h"
+#include "core/temporaries.h"
 #include "support/golden.h"
 
 namespace bake {
@@ -121,6 +124,25 @@ TEST(AtomicFile, IgnoredSignalStaysIgnored) {
   });
   EXPECT_EQ(signal, 0);
   EXPECT_EQ(readText(dir / "a.txt"), "A");
+}
+
+TEST(AtomicFile, RegisteredTemporariesGetFreshNamesWithTheirSuffix) {
+  const fs::path dir = test::freshTempDir("atomic_names");
+  std::set<std::string> names;
+  for (int i = 0; i < 200; ++i) {
+    std::string pattern = (dir / ".out.tmp.XXXXXX.png").string();
+    const int fd = createRegisteredTemporary(pattern, 4);
+    ASSERT_GE(fd, 0) << std::strerror(errno);
+    ::close(fd);
+    EXPECT_TRUE(fs::is_regular_file(pattern));
+    EXPECT_EQ(pattern.substr(pattern.size() - 4), ".png");
+    EXPECT_EQ(pattern.find("XXXXXX"), std::string::npos);
+    names.insert(pattern);
+    unregisterTemporary(pattern);
+  }
+  EXPECT_EQ(names.size(), 200u);
+  std::string bad = (dir / "no-placeholder").string();
+  EXPECT_EQ(createRegisteredTemporary(bad), -1);
 }
 
 TEST(AtomicFile, ReadReportsMissingAndDirectories) {
