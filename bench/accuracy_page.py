@@ -437,7 +437,7 @@ def resources(d, run):
     failed = [r for r in rows if r["wall_s"] == ""]
     if failed:
         out.append(f"**{len(failed)} run(s) failed:** " + "; ".join(f"{r['tool']} {r['input']}: {r['size']}" for r in failed))
-    out.append("The commands (`WORK/` is the scratch folder under the build directory):\n\n```\n"
+    out.append("The commands (`SCRATCH/` is the scratch folder under the build directory):\n\n```\n"
                + "\n".join(commands) + "\n```")
     return "\n\n".join(out), []
 

@@ -10,7 +10,7 @@
 #         1024 (quick) or 4096 (full), the tam bench's 256 or 512 (default: full)
 # --raw   bench/run's raw output folder: the 100,000-groove scene of groove-bake is reused from
 #         RAW/groove-bake/groove-bake/ when it is there (else written again with bench-groove-scene)
-# --out   where the results go (default BUILD_DIR/results/resources); scratch outputs in OUT/work/
+# --out   where the results go (default BUILD_DIR/results/resources); scratch outputs in OUT/scratch/
 #
 # Inputs: geobake on the largest real mesh of ../shared/data/meshes/real (or $BAKE_DATA_DIR/meshes/real;
 # else a pretzel from bakeshape), exact and heat, one source, and in full mode also on bakeshape's pretzel
@@ -44,7 +44,7 @@ esac
 
 bench_build geobake revolbake groovebake tambake bakeshape bakepipe bakeplay bench-groove-scene
 tools="$build/tools"
-work="$out/work"
+work="$out/scratch"
 rm -rf "$work"
 mkdir -p "$work"
 csv="$out/resources.csv"
@@ -53,7 +53,7 @@ echo "tool,input,size,wall_s,peak_rss_mib" >"$csv"
 : >"$commands"
 
 # Paths on the record are relative to the checkout (or to the shared data folder).
-show() { sed -e "s|$work/|WORK/|g" -e "s|$here/||g" -e "s|$(cd "$here/.." && pwd)/|../|g" <<<"$*"; }
+show() { sed -e "s|$work/|SCRATCH/|g" -e "s|$here/||g" -e "s|$(cd "$here/.." && pwd)/|../|g" <<<"$*"; }
 
 # measure TOOL INPUT SIZE COMMAND...: runs the command once under GNU time and appends a row. A command
 # that fails gets a row saying so (no figures), and the script exits non-zero at the end. SIZE "?" is
