@@ -12,23 +12,10 @@
 #      remains.
 set -euo pipefail
 
-if [[ $# -ne 3 ]]; then
-  echo "usage: $0 TOOLS_DIR SOURCE_DIR TMP_DIR" >&2
-  exit 1
-fi
-bin="$(cd "$1" && pwd)"
-src="$(cd "$2" && pwd)"
-tmp="$3"
-rm -rf "$tmp"
+source "$(dirname "${BASH_SOURCE[0]}")/script_support.sh"
+read_test_arguments "$@"
 mkdir -p "$tmp/inputs"
-tmp="$(cd "$tmp" && pwd)"
 in="$tmp/inputs"
-
-failures=0
-fail() {
-  echo "FAIL: $*" >&2
-  failures=$((failures + 1))
-}
 
 # Inputs the bakes share (generated once, outside the directories under test).
 "$bin/bakeshape/bakeshape" pretzel -o "$in/pretzel.glb" -q

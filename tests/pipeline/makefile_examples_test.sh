@@ -14,23 +14,9 @@
 #      compared; the validation stamps (empty files) are not compared either. bakeshape has no -j.
 set -euo pipefail
 
-if [[ $# -ne 3 ]]; then
-  echo "usage: $0 TOOLS_DIR SOURCE_DIR TMP_DIR" >&2
-  exit 1
-fi
-bin="$(cd "$1" && pwd)"
-src="$(cd "$2" && pwd)"
-tmp="$3"
-rm -rf "$tmp"
-mkdir -p "$tmp"
-tmp="$(cd "$tmp" && pwd)"
+source "$(dirname "${BASH_SOURCE[0]}")/script_support.sh"
+read_test_arguments "$@"
 cp -R "$src/pipelines" "$tmp/pipelines"
-
-failures=0
-fail() {
-  echo "FAIL: $*" >&2
-  failures=$((failures + 1))
-}
 started=$SECONDS
 step() { echo "== $* (at $((SECONDS - started)) s)"; }
 mk() { make -f "$src/Makefile.examples" --no-print-directory BIN="$bin" PIPELINES="$tmp/pipelines" "$@"; }
