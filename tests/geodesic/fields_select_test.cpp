@@ -14,7 +14,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(BAKE_TEST_TMP) / "geodesic-fields";
+// One folder per test: CTest runs the tests of this file in parallel processes.
+fs::path testDir() {
+  return fs::path(BAKE_TEST_TMP) / "geodesic-fields" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+}
 
 void writeText(const fs::path& path, const std::string& text) {
   std::ofstream out(path);
@@ -23,15 +26,16 @@ void writeText(const fs::path& path, const std::string& text) {
 
 // A tetrahedron and three single-vertex fields a, b, c.
 Settings tetrahedron(const std::string& output) {
-  fs::create_directories(kDir);
-  writeText(kDir / "mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
-  writeText(kDir / "sources.json",
+  const fs::path dir = testDir();
+  fs::create_directories(dir);
+  writeText(dir / "mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+  writeText(dir / "sources.json",
             R"({"fields": [{"name": "a", "sources": [{"vertex": 0}]}, {"name": "b", "sources": [{"vertex": 1}]},
                            {"name": "c", "sources": [{"vertex": 2}]}]})");
   Settings settings;
-  settings.input = (kDir / "mesh.obj").string();
-  settings.sourcesFile = (kDir / "sources.json").string();
-  settings.output = (kDir / output).string();
+  settings.input = (dir / "mesh.obj").string();
+  settings.sourcesFile = (dir / "sources.json").string();
+  settings.output = (dir / output).string();
   settings.common.quiet = true;
   return settings;
 }
