@@ -6,6 +6,7 @@ find_package(CLI11 2.1 REQUIRED)
 find_package(OpenMesh REQUIRED)
 find_package(OpenImageIO REQUIRED)
 find_package(zstd REQUIRED)
+find_package(LibXml2 REQUIRED)  # SVG drawings as groove input
 # Draco is linked statically: Debian's libdraco.so exports a private copy of tinygltf. We read glTF
 # with our own reader (libbake/io/glb_read.cpp explains why Debian's tinygltf cannot open Draco files).
 find_package(draco REQUIRED)

@@ -101,6 +101,7 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
     StageTimer timer(&report, "read");
     BAKE_ASSIGN_OR_RETURN(scene, readGrooveScene(settings.scene));
     session.addInput(settings.scene);
+    for (const std::string& file : scene.files) session.addInput(file);
   }
   for (const std::string& warning : scene.warnings) session.diagnostics().warning("duplicate-groove", settings.scene + ": " + warning);
   progress.update(1);
@@ -148,7 +149,14 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
 
 }  // namespace
 
-std::vector<std::string> bakeInputs(const BakeSettings& settings) { return {settings.scene}; }
+std::vector<std::string> bakeInputs(const BakeSettings& settings) {
+  // The drawings a scene names are inputs too (its cache key and --print-inputs); a scene that does not
+  // parse lists only itself, and the bake reports why.
+  std::vector<std::string> inputs{settings.scene};
+  if (Result<GrooveScene> scene = readGrooveScene(settings.scene); scene.isOk())
+    inputs.insert(inputs.end(), scene->files.begin(), scene->files.end());
+  return inputs;
+}
 
 Status runBake(const BakeSettings& settings, Diagnostics& diagnostics) {
   BAKE_RETURN_IF_ERROR(checkSettings(settings));

@@ -109,6 +109,7 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
   const FootprintLine line = footprintLine(footprint, binormal, settings.density);
   section.binormal = binormal;
   buildCrossSection(scene, placed, -line.halfSupport(), line.halfSupport(), section);
+  setSectionRates(section, placed);
   section.centre = std::numeric_limits<double>::infinity();
   const LocalGroove& first = grooves[members.front()];
   const Primitive& primitive = scene.primitives[first.primitive];
@@ -138,11 +139,20 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
     if (v.empty()) continue;
     // Base-line position seen through the facet point at t (projection along E').
     const double p0 = acrossCoordinate(section, pts[i], e) / e.w, p1 = acrossCoordinate(section, pts[i + 1], e) / e.w;
-    auto at = [&](double t) { return p0 + t * (p1 - p0); };
-    out.visibleShare += density.share(at(v.t0), at(v.t1));
+    // The footprint's share between two points of the facet: on a perturbed section the line of the
+    // surface through each point turns away from T by its rate, so each end has its own density
+    // (the shares of consecutive facets still add up: they meet at the same point). The section's two
+    // ends take the plain density, so the shares add up to the whole footprint.
+    const double r0 = i == 0 ? 0.0 : pts[i].rateB;
+    const double r1 = i + 1 == section.facetCount() ? 0.0 : pts[i + 1].rateB;
+    auto shareBetween = [&](double ta, double tb) {
+      return std::abs(density.cdfAcross(p0 + tb * (p1 - p0), r0 + tb * (r1 - r0)) -
+                      density.cdfAcross(p0 + ta * (p1 - p0), r0 + ta * (r1 - r0)));
+    };
+    out.visibleShare += shareBetween(v.t0, v.t1);
     const double t0 = std::max(v.t0, lit[i].t0), t1 = std::min(v.t1, lit[i].t1);
     if (!(t1 > t0)) continue;
-    const double r = density.share(at(t0), at(t1));
+    const double r = shareBetween(t0, t1);
     const double middle = pts[i].h + 0.5 * (t0 + t1) * (pts[i + 1].h - pts[i].h);
     const Vec3 normal = facetNormalSeen(section, i, e, middle);
     const Rgb f = directRadiance(scene.materials[section.material[i]], normal, toViewer, lighting);

@@ -46,15 +46,35 @@ double FootprintLine::cdf(double x) const {
 
 double FootprintLine::share(double x0, double x1) const { return std::abs(cdf(x1) - cdf(x0)); }
 
-FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, FootprintDensity density) {
-  const double a = std::abs(footprint.axis1.u * binormal.u + footprint.axis1.v * binormal.v);
-  const double c = std::abs(footprint.axis2.u * binormal.u + footprint.axis2.v * binormal.v);
-  FootprintLine line;
+namespace {
+
+// The density of the footprint projected on a direction whose products with A1, A2 are a and c.
+void setWidths(FootprintLine& line, double a, double c) {
+  a = std::abs(a), c = std::abs(c);
   line.wide = 0.5 * std::max(a, c);
   line.narrow = 0.5 * std::min(a, c);
-  line.segment = density == FootprintDensity::SeedSegment;
   if (line.segment || line.narrow <= kThinBox * line.wide) line.narrow = 0;
+}
+
+}  // namespace
+
+FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, FootprintDensity density) {
+  const Vec2 tangent{binormal.v, -binormal.u};
+  FootprintLine line;
+  line.segment = density == FootprintDensity::SeedSegment;
+  line.a1b = footprint.axis1.u * binormal.u + footprint.axis1.v * binormal.v;
+  line.a2b = footprint.axis2.u * binormal.u + footprint.axis2.v * binormal.v;
+  line.a1t = footprint.axis1.u * tangent.u + footprint.axis1.v * tangent.v;
+  line.a2t = footprint.axis2.u * tangent.u + footprint.axis2.v * tangent.v;
+  setWidths(line, line.a1b, line.a2b);
   return line;
+}
+
+double FootprintLine::cdfAcross(double x, double rate) const {
+  if (rate == 0) return cdf(x);
+  FootprintLine turned = *this;
+  setWidths(turned, a1b - rate * a1t, a2b - rate * a2t);
+  return turned.cdf(x);
 }
 
 SectionDirection inSection(const CrossSection& section, const Vec3& d) {
@@ -62,7 +82,18 @@ SectionDirection inSection(const CrossSection& section, const Vec3& d) {
   return {d.u * B.u + d.v * B.v, d.u * B.v - d.v * B.u, d.w};
 }
 
-double acrossCoordinate(const CrossSection& section, const SectionPoint& p, const SectionDirection& d) {
+// The point of a perturbed section met by the line along d: at travel s along T it has moved to
+// (b + rateB s, h + rateH s), and the line reaches height h' after s = h' d.t / d.w, so
+// s = h d.t / (d.w - rateH d.t). A point's track steeper than the line (the denominator below half
+// of d.w) is capped there; below the horizon nothing moves (everything but lit walls is hidden).
+SectionPoint movedAlong(const SectionPoint& p, const SectionDirection& d) {
+  if (p.h == 0 || !(d.w > 0) || (p.rateB == 0 && p.rateH == 0)) return p;
+  const double travel = p.h * d.t / std::max(d.w - p.rateH * d.t, 0.5 * d.w);
+  return {p.b + p.rateB * travel, p.h + p.rateH * travel, p.rateB, p.rateH};
+}
+
+double acrossCoordinate(const CrossSection& section, const SectionPoint& point, const SectionDirection& d) {
+  const SectionPoint p = movedAlong(point, d);
   double b = p.b;
   if (std::isfinite(section.centre) && p.h != 0) {
     // The line along d through the base point F + x B meets height h after a tangential travel
@@ -86,7 +117,9 @@ void subdivideFacets(CrossSection& section, int pieces) {
     const int n = a.h == b.h ? 1 : pieces;
     for (int k = 1; k <= n; ++k) {
       const double t = double(k) / n;
-      points.push_back(k == n ? b : SectionPoint{a.b + t * (b.b - a.b), a.h + t * (b.h - a.h)});
+      points.push_back(k == n ? b
+                              : SectionPoint{a.b + t * (b.b - a.b), a.h + t * (b.h - a.h),
+                                             a.rateB + t * (b.rateB - a.rateB), a.rateH + t * (b.rateH - a.rateH)});
       material.push_back(section.material[i]);
     }
   }
@@ -128,10 +161,34 @@ void facetNormal(const CrossSection& section, std::size_t facet, double& nb, dou
   nh = length > 0 ? db / length : 1;
 }
 
+namespace {
+
+// The facet's normal (along T, along B, up). The facet joins two point tracks whose directions per
+// unit of travel along T are (1, rateB, rateH); the normal is the cross product of the facet's step
+// across the section (0, db, dh) with their mean track: (dh rateB - db rateH, -dh, db), normalised
+// (the section normal (-dh, db) when nothing moves).
+void facetNormalTilted(const CrossSection& section, std::size_t facet, double& nt, double& nb, double& nh) {
+  const SectionPoint& p = section.points[facet];
+  const SectionPoint& q = section.points[facet + 1];
+  const double db = q.b - p.b, dh = q.h - p.h;
+  const double rateB = 0.5 * (p.rateB + q.rateB), rateH = 0.5 * (p.rateH + q.rateH);
+  nt = dh * rateB - db * rateH;
+  nb = -dh;
+  nh = db;
+  const double length = std::sqrt(nt * nt + nb * nb + nh * nh);
+  if (length > 0) {
+    nt /= length, nb /= length, nh /= length;
+  } else {
+    nt = 0, nb = 0, nh = 1;
+  }
+}
+
+}  // namespace
+
 Vec3 facetNormalSeen(const CrossSection& section, std::size_t facet, const SectionDirection& d, double h) {
   if (!std::isfinite(section.centre) || h == 0 || d.w <= 0) return facetNormal3(section, facet);
-  double nb = 0, nh = 1;
-  facetNormal(section, facet, nb, nh);
+  double nt = 0, nb = 0, nh = 1;
+  facetNormalTilted(section, facet, nt, nb, nh);
   const SectionPoint& p = section.points[facet];
   const SectionPoint& q = section.points[facet + 1];
   const double b = 0.5 * (p.b + q.b);
@@ -142,13 +199,16 @@ Vec3 facetNormalSeen(const CrossSection& section, std::size_t facet, const Secti
   const double sine = std::clamp(span == 0 ? 0.0 : travel / span, -1.0, 1.0);
   const double cosine = std::sqrt(1 - sine * sine);
   const Vec2 B = section.binormal, T{B.v, -B.u};
-  return {nb * (cosine * B.u + sine * T.u), nb * (cosine * B.v + sine * T.v), nh};
+  const Vec2 turnedB{cosine * B.u + sine * T.u, cosine * B.v + sine * T.v};
+  const Vec2 turnedT{cosine * T.u - sine * B.u, cosine * T.v - sine * B.v};
+  return {nb * turnedB.u + nt * turnedT.u, nb * turnedB.v + nt * turnedT.v, nh};
 }
 
 Vec3 facetNormal3(const CrossSection& section, std::size_t facet) {
-  double nb = 0, nh = 1;
-  facetNormal(section, facet, nb, nh);
-  return {nb * section.binormal.u, nb * section.binormal.v, nh};
+  double nt = 0, nb = 0, nh = 1;
+  facetNormalTilted(section, facet, nt, nb, nh);
+  const Vec2 B = section.binormal, T{B.v, -B.u};
+  return {nb * B.u + nt * T.u, nb * B.v + nt * T.v, nh};
 }
 
 }  // namespace bake::groove

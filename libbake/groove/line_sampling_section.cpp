@@ -190,4 +190,53 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
   resolveWalls(out, base);
 }
 
+namespace {
+
+// The band's edges hold within this fraction of the groove's width: a rim placed on the section at
+// centre + profileB comes back from (b - centre) within rounding, and must keep its rates (its
+// facets' tilt and the footprint's density there would jump otherwise).
+constexpr double kBandSlack = 1e-4;
+
+// The groove's own height at its offset x, or false outside its band (a vertical wall gives the
+// height of its first point, where the band starts or the wall's top or foot alike).
+bool grooveHeightAt(const LocalGroove& g, double x, double& h) {
+  const std::size_t n = g.profile->points.size();
+  const double slack = kBandSlack * (g.profileB(n - 1) - g.profileB(0));
+  if (!(x >= g.profileB(0) - slack && x <= g.profileB(n - 1) + slack)) return false;
+  x = std::clamp(x, g.profileB(0), g.profileB(n - 1));
+  std::size_t k = 0;
+  while (k + 2 < n && g.profileB(k + 1) < x) ++k;
+  const double b0 = g.profileB(k), b1 = g.profileB(k + 1);
+  h = b1 > b0 ? g.profileH(k) + (x - b0) / (b1 - b0) * (g.profileH(k + 1) - g.profileH(k)) : g.profileH(k);
+  return true;
+}
+
+}  // namespace
+
+void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& grooves) {
+  // Every point of a band gets its rates, the rims too: they do not move along a line (its travel is
+  // 0 at h = 0), but a facet's tilt comes from both its ends.
+  for (SectionPoint& p : section.points) {
+    p.rateB = 0, p.rateH = 0;
+    // The groove shaping the surface here: the one whose own height is nearest the point's.
+    const SectionGroove* shaping = nullptr;
+    double nearest = 0;
+    for (const SectionGroove& g : grooves) {
+      const double sign = g.reversed ? -1 : 1;
+      double h = 0;
+      if (!grooveHeightAt(*g.groove, sign * (p.b - g.centre), h)) continue;
+      if (!shaping || std::abs(h - p.h) < nearest) shaping = &g, nearest = std::abs(h - p.h);
+    }
+    if (!shaping) continue;
+    const LocalGroove& g = *shaping->groove;
+    if (g.scaleRate == 0 && g.offsetRate == 0) continue;
+    // Travel along T is travel along the groove's path, reversed when the groove runs against T; the
+    // offset x then runs against b as well, so db/dT = dx/ds either way and dh/dT = sign dh/ds.
+    const double sign = shaping->reversed ? -1 : 1;
+    const double q = (sign * (p.b - shaping->centre) - g.offset) / g.scale;
+    p.rateB = g.offsetRate + g.scaleRate * q;
+    p.rateH = sign * g.scaleRate * p.h / g.scale;
+  }
+}
+
 }  // namespace bake::groove

@@ -25,17 +25,27 @@ struct FootprintLine {
   double wide = 0;      // half-width of the wider box (trapezoid) or of the segment
   double narrow = 0;    // half-width of the narrower box (trapezoid only)
   bool segment = false;
+  // The footprint's edge vectors A1, A2 projected on B and on T (B = left normal of T).
+  double a1b = 0, a2b = 0, a1t = 0, a2t = 0;
   double cdf(double x) const;
   double halfSupport() const { return wide + narrow; }
   // Share of the footprint between x0 and x1 (either order).
   double share(double x0, double x1) const;
+  // The share on the side x' <= x of the line x' = x + rate t through the footprint (x' its
+  // coordinate along B, t along T): the edge of a perturbed groove, which turns away from T as its
+  // point moves by `rate` along B per unit along T. The density is then that of the footprint
+  // projected on B - rate T; rate 0 is cdf.
+  double cdfAcross(double x, double rate) const;
 };
 FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, FootprintDensity density);
 
 // --- The combined cross-section (§5, formats/groove-scene.md "The surface a scene describes") -----
 
+// rateB, rateH: how the point moves per unit of travel along T (the section's tangent, B = its left
+// normal) under the grooves' linearised perturbation; 0 on unperturbed grooves (setSectionRates).
 struct SectionPoint {
   double b = 0, h = 0;
+  double rateB = 0, rateH = 0;
 };
 
 // A polyline over b (non-decreasing; vertical walls are two points at the same b) with one material
@@ -63,6 +73,12 @@ struct SectionGroove {
 void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove>& grooves, double lo, double hi,
                        CrossSection& out);
 
+// Perturbed grooves (seed 000 §3: the perturbation changes the local cross-section along the path):
+// each point of the section moves with the groove that shapes the surface there, which keeps its
+// normalised profile coordinates q = (x - offset) / scale, v = h / scale as the path goes on, so
+// dx/ds = offset' + scale' q and dh/ds = scale' v at the foot point (x is the groove's own offset).
+void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& grooves);
+
 // --- Ordered projection (§5.2) ---------------------------------------------------------------------
 
 // A part [t0, t1] of a facet, t in [0, 1] from point i to point i + 1; empty when t1 <= t0.
@@ -79,8 +95,9 @@ SectionDirection inSection(const CrossSection& section, const Vec3& d);
 
 // The coordinate across the direction d in the section plane: points on one line along (d.b, d.w)
 // share it (dw times the base-line position the line reaches). No division, so grazing and
-// downward directions stay finite. On a curved section the point is first moved along its circle by
-// the tangential travel h d.t / d.w of that line (line_sampling_occlusion.cpp).
+// downward directions stay finite. A perturbed point is first moved along the path to where the
+// line along d meets it (the line travels h d.t / d.w along T at height h), and on a curved section
+// along its circle by that travel (line_sampling_occlusion.cpp).
 double acrossCoordinate(const CrossSection& section, const SectionPoint& p, const SectionDirection& d);
 
 // The part of each facet seen from the direction d (masking for E, shadowing for L), the flat base
@@ -91,7 +108,8 @@ void visibleSpans(const CrossSection& section, const SectionDirection& d, std::v
 // interpolated linearly between points).
 void subdivideFacets(CrossSection& section, int pieces);
 
-// Unit normal of facet i in the section plane (b, h) and in groove space.
+// Unit normal of facet i in the section plane (b, h) and in groove space (the latter tilted along T
+// by the points' rates: the facet of the linearised perturbed surface).
 void facetNormal(const CrossSection& section, std::size_t facet, double& nb, double& nh);
 Vec3 facetNormal3(const CrossSection& section, std::size_t facet);
 // On a curved section, the normal where the line along d meets the facet at height h: the section's

@@ -1,5 +1,6 @@
 // Straightening a primitive at a footprint (seed 000 §4: flat facets under a pixel): the tangent line
-// at the foot point of the footprint centre, with the perturbation frozen there.
+// at the foot point of the footprint centre, with the perturbation evaluated there (the local
+// cross-section, §3) and its derivatives along the path (its first-order change under the pixel).
 #include <cmath>
 #include <numbers>
 
@@ -17,6 +18,20 @@ double perturbationOffset(const Perturbation& perturbation, double arcLength) {
   if (perturbation.kind != Perturbation::Kind::Offset) return 0;
   return perturbation.amplitude *
          std::sin(2 * std::numbers::pi * arcLength / perturbation.wavelength + perturbation.phase);
+}
+
+// d/ds of the sine above: amplitude k cos(k s + phase), k = 2 pi / wavelength.
+double perturbationRate(const Perturbation& perturbation, double arcLength) {
+  const double k = 2 * std::numbers::pi / perturbation.wavelength;
+  return perturbation.amplitude * k * std::cos(k * arcLength + perturbation.phase);
+}
+
+double perturbationScaleRate(const Perturbation& perturbation, double arcLength) {
+  return perturbation.kind == Perturbation::Kind::Scale ? perturbationRate(perturbation, arcLength) : 0;
+}
+
+double perturbationOffsetRate(const Perturbation& perturbation, double arcLength) {
+  return perturbation.kind == Perturbation::Kind::Offset ? perturbationRate(perturbation, arcLength) : 0;
 }
 
 LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at) {
@@ -49,6 +64,8 @@ LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 
   local.arcLength = p.arcStart + along;
   local.scale = perturbationScale(g.perturbation, local.arcLength);
   local.offset = perturbationOffset(g.perturbation, local.arcLength);
+  local.scaleRate = perturbationScaleRate(g.perturbation, local.arcLength);
+  local.offsetRate = perturbationOffsetRate(g.perturbation, local.arcLength);
   local.joints = jointsOf(scene, primitive);
   return local;
 }

@@ -2,6 +2,7 @@
 // flattened into a chain of primitives (segments and exact circular arcs), after seed 000 §3-§4.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -84,10 +85,14 @@ struct GrooveScene {
   double wmax = 0, hmax = 0, dmax = 0;  // over the scene, perturbation included
   std::vector<std::string> warnings;
   std::string source;
+  std::vector<std::string> files;  // other files the scene read (SVG drawings), for depfiles
 };
 
 Result<GrooveScene> readGrooveScene(const std::string& path);
-Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::string& source);
+// `directory`: the folder the scene's relative file names (svgFile) are resolved against; null for a
+// scene that did not come from a file, which then may not name any.
+Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::string& source,
+                                     const std::filesystem::path* directory = nullptr);
 
 // Stages (one file each); used by the reader and by the tests.
 

@@ -15,6 +15,7 @@
 #include "core/limits.h"
 #include "groove/generators.h"
 #include "groove/path_svg.h"
+#include "groove/svg_file.h"
 #include "groove/scene.h"
 
 namespace bake::groove {
@@ -27,6 +28,11 @@ std::string child(const std::string& parent, const std::string& key) { return js
 std::string child(const std::string& parent, std::size_t index) { return jsonPointerChild(parent, index); }
 
 struct Reader : JsonReader {
+  // The scene file's folder, for the drawings an `svgFile` path names (null: the scene came from
+  // memory, and naming files is an error); the files read are listed in `filesRead`.
+  const std::filesystem::path* directory = nullptr;
+  std::vector<std::string>* filesRead = nullptr;
+
   Result<Vec2> point(const json& node, const std::string& where) const {
     if (!node.is_array() || node.size() != 2) return error(where, "must be a pair of numbers [u, v]");
     BAKE_ASSIGN_OR_RETURN(const double u, number(node[0], child(where, std::size_t(0))));
@@ -80,9 +86,24 @@ Result<std::size_t> lookup(const Reader& r, const json& node, const std::string&
   return std::size_t(it - names.begin());
 }
 
+// {"svgFile": {"file": PATH relative to the scene, "origin": [u, v], "scale": s}}: every shape of the
+// drawing becomes a groove (svg_file.h).
+Result<std::vector<std::vector<PathPiece>>> readSvgFilePath(const Reader& r, const json& node, const std::string& at) {
+  BAKE_RETURN_IF_ERROR(r.object(node, at, {"file", "origin", "scale"}));
+  if (!node.contains("file")) return r.error(child(at, "file"), "is missing");
+  BAKE_ASSIGN_OR_RETURN(const std::string name, r.string(node["file"], child(at, "file")));
+  SvgPlacement placement;
+  if (node.contains("origin")) { BAKE_ASSIGN_OR_RETURN(placement.origin, r.point(node["origin"], child(at, "origin"))); }
+  if (node.contains("scale")) { BAKE_ASSIGN_OR_RETURN(placement.scale, r.positive(node["scale"], child(at, "scale"))); }
+  if (!r.directory) return r.error(child(at, "file"), "names a drawing, but the scene was not read from a file");
+  const std::filesystem::path file = *r.directory / name;
+  if (r.filesRead) r.filesRead->push_back(file.string());
+  return readSvgFile(file, placement, child(at, "file"));
+}
+
 Result<std::vector<std::vector<PathPiece>>> readPath(const Reader& r, const json& node, const std::string& where) {
-  BAKE_RETURN_IF_ERROR(r.object(node, where, {"line", "polyline", "arc", "spiral", "quadratic", "cubic", "svg"}));
-  if (node.size() != 1) return r.error(where, "must have exactly one of line, polyline, arc, spiral, quadratic, cubic, svg");
+  BAKE_RETURN_IF_ERROR(r.object(node, where, {"line", "polyline", "arc", "spiral", "quadratic", "cubic", "svg", "svgFile"}));
+  if (node.size() != 1) return r.error(where, "must have exactly one of line, polyline, arc, spiral, quadratic, cubic, svg, svgFile");
   const std::string kind = node.begin().key();
   const json& value = node.begin().value();
   const std::string at = child(where, kind);
@@ -134,9 +155,11 @@ Result<std::vector<std::vector<PathPiece>>> readPath(const Reader& r, const json
     piece.startAngle = startAngle * kDegree;
     piece.sweep = 2 * std::numbers::pi * turns;
     pieces.push_back(piece);
-  } else {  // svg
+  } else if (kind == "svg") {
     BAKE_ASSIGN_OR_RETURN(const std::string data, r.string(value, at));
     return parseSvgPath(data, r.file, at);
+  } else {
+    return readSvgFilePath(r, value, at);
   }
   return std::vector<std::vector<PathPiece>>{pieces};
 }
@@ -160,8 +183,12 @@ Result<Perturbation> readPerturbation(const Reader& r, const json& node, const s
 
 }  // namespace
 
-Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::string& source) {
-  const Reader r{source};
+Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::string& source,
+                                     const std::filesystem::path* directory) {
+  GrooveScene scene;
+  Reader r{source};
+  r.directory = directory;
+  r.filesRead = &scene.files;
   json doc;
   try {
     doc = json::parse(jsonText);
@@ -175,7 +202,6 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
   for (const char* key : {"version", "domain", "profiles", "materials", "base"})
     if (!doc.contains(key)) return r.error(child("", key), "is missing");
   if (!doc["version"].is_number_integer() || doc["version"].get<long long>() != 1) return r.error("/version", "must be 1");
-  GrooveScene scene;
   scene.source = source;
   if (doc.contains("units")) { BAKE_ASSIGN_OR_RETURN(scene.units, r.string(doc["units"], "/units")); }
   BAKE_RETURN_IF_ERROR(r.object(doc["domain"], "/domain", {"size"}));
@@ -332,7 +358,8 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
 Result<GrooveScene> readGrooveScene(const std::string& path) {
   // readFileBytes refuses a directory (an ifstream reads one as an empty file).
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  return parseGrooveScene(std::string(bytes.begin(), bytes.end()), path);
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  return parseGrooveScene(std::string(bytes.begin(), bytes.end()), path, &directory);
 }
 
 }  // namespace bake::groove

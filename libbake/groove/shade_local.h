@@ -1,7 +1,8 @@
 // Internal to the seed's method (shade.cpp, line_sampling.cpp, area_sampling.cpp): a primitive near
 // a footprint, straightened at the footprint centre. Seed 000 §4 assumes the geometry under a pixel is
 // a set of flat facets: the path is replaced by its tangent line at the foot point of the footprint
-// centre, and the perturbation is frozen at that foot point.
+// centre, with the perturbation evaluated at that foot point (the local cross-section) and
+// linearised there (line_sampling_occlusion.cpp).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +22,9 @@ struct LocalGroove {
   Vec2 tangent, binormal;  // unit; binormal = left normal (b > 0 to the left)
   double offset = 0;       // perturbation frozen at the foot point: b' = (b - offset) / scale
   double scale = 1;
+  // Their derivatives along the path at the foot point: the linearised perturbation that moves the
+  // section's points along the path (line_sampling_occlusion.cpp) and tilts its facets.
+  double offsetRate = 0, scaleRate = 0;
   double arcLength = 0;    // s at the foot point
   PrimitiveJoints joints;  // where the primitive's region stops
   // The profile point k in base-plane coordinates relative to the foot: b along binormal, h up.
@@ -34,6 +38,8 @@ LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 
 
 double perturbationScale(const Perturbation& perturbation, double arcLength);
 double perturbationOffset(const Perturbation& perturbation, double arcLength);
+double perturbationScaleRate(const Perturbation& perturbation, double arcLength);  // d scale / ds
+double perturbationOffsetRate(const Perturbation& perturbation, double arcLength);  // d offset / ds
 
 // §5: line sampling for footprints without special cases (line_sampling.cpp).
 Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,

@@ -83,9 +83,10 @@ vec3 shadeClass(int cls, int front, vec2 axis1, vec2 axis2, vec3 toViewer) {
     vec2 d = offsetFromCentre(g.foot);
     float along = dot(binormal, g.binormal);
     // Where the groove's centre line crosses the line F + x B (along = +-1 up to the drift).
-    placeGroove(g, dot(d, g.binormal) / along, along < 0.0);
+    placeGroove(m, dot(d, g.binormal) / along, along < 0.0);
   }
   buildSection();
+  setSectionRates();
   return shadeSection(line, toViewer);
 }
 

@@ -27,7 +27,8 @@ struct LocalGroove {
   int material;
   vec2 foot;                      // relative to F (the copy of the primitive nearest F)
   vec2 tangent, binormal;
-  float offset, scale;            // frozen perturbation
+  float offset, scale;            // perturbation at the foot point (the local cross-section)
+  float offsetRate, scaleRate;    // their derivatives along the path there
   vec2 startPoint, startNormal;   // joint lines, relative to F
   vec2 endPoint, endNormal;
   float width;                    // scale * profile wmax
@@ -221,6 +222,12 @@ float perturbationAt(GrooveInfo g, float arcLength) {
   return g.perturbation.x * sin(2.0 * kPi * arcLength / g.perturbation.y + g.perturbation.z);
 }
 
+// Its derivative along the path: a k cos(k s + phase), k = 2 pi / wavelength.
+float perturbationRateAt(GrooveInfo g, float arcLength) {
+  float k = 2.0 * kPi / g.perturbation.y;
+  return g.perturbation.x * k * cos(k * arcLength + g.perturbation.z);
+}
+
 // shade_local.h localGroove, relative to F.
 LocalGroove localGroove(uint index) {
   GroovePrimitive p = primitives[index];
@@ -256,6 +263,8 @@ LocalGroove localGroove(uint index) {
   float arcLength = p.measure.y + along;
   local.scale = g.kind.y == kPerturbationScale ? 1.0 + perturbationAt(g, arcLength) : 1.0;
   local.offset = g.kind.y == kPerturbationOffset ? perturbationAt(g, arcLength) : 0.0;
+  local.scaleRate = g.kind.y == kPerturbationScale ? perturbationRateAt(g, arcLength) : 0.0;
+  local.offsetRate = g.kind.y == kPerturbationOffset ? perturbationRateAt(g, arcLength) : 0.0;
   local.startPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.xy);
   local.endPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.zw);
   local.startNormal = p.jointNormals.xy;

@@ -36,11 +36,11 @@ void pushBeam(Beam beam) {
 }
 
 // The walk of one beam: R', direction of travel, -R, weight, and k -> footprint position.
-float wRb, wRw, wDir;
+float wRb, wRt, wRw, wDir;
 vec3 wBack, wWeight;
 float wKAt0, wKAt1, wP0, wP1;
 
-float walkKey(int i) { return wDir * acrossCoordinate(i, wRb, wRw); }
+float walkKey(int i) { return wDir * acrossCoordinate(i, wRb, wRt, wRw); }
 
 float positionOf(float k) {
   float s = clamp((k - wKAt0) / (wKAt1 - wKAt0), 0.0, 1.0);
@@ -81,11 +81,12 @@ vec3 catchOnFacet(FootprintLine density, Beam beam, int j, float x, float y) {
 vec3 catchOnFarBase(FootprintLine density, float x, float y) {
   if (!(gLightDir.z > 0.0)) return vec3(0.0);
   float lb = dot(gLightDir.xy, gSectionBinormal), lw = gLightDir.z;
+  float lt = dot(gLightDir.xy, sectionTangent(gSectionBinormal));
   float limit = y;
   if (wDir * lb < 0.0) {
     float extreme = wDir > 0.0 ? -kInfinity : kInfinity;
     for (int i = 0; i < gSectionPoints; ++i) {
-      float k = acrossCoordinate(i, lb, lw);
+      float k = acrossCoordinate(i, lb, lt, lw);
       extreme = wDir > 0.0 ? max(extreme, k) : min(extreme, k);
     }
     limit = min(y, wDir * (extreme / lw) * wRw);
@@ -101,6 +102,7 @@ vec3 traceBeam(FootprintLine density, Beam beam) {
   if (!(dot(beam.toViewer, normal) > 0.0)) return vec3(0.0);
   vec3 R = reflectView(beam.toViewer, normal);
   wRb = dot(R.xy, gSectionBinormal);
+  wRt = dot(R.xy, sectionTangent(gSectionBinormal));
   wRw = R.z;
   if (wRb == 0.0) return vec3(0.0);  // straight up: it leaves the surface
   wDir = wRb > 0.0 ? 1.0 : -1.0;
@@ -134,12 +136,12 @@ vec3 traceBeam(FootprintLine density, Beam beam) {
 
 vec3 mirrorBounces(FootprintLine density, vec3 toViewer) {
   vec2 B = gSectionBinormal;
-  float eb = dot(toViewer.xy, B), ew = max(toViewer.z, 1e-12);
+  float eb = dot(toViewer.xy, B), et = dot(toViewer.xy, sectionTangent(B)), ew = max(toViewer.z, 1e-12);
   gBeamCount = 0;
   // The first beams: visible portions of mirror facets, pushed in reverse so facets pop in order.
   for (int i = facetCount() - 1; i >= 0; --i) {
     if (!(gVisibleT1[i] > gVisibleT0[i]) || !hasMirror(gFacetMaterial[i])) continue;
-    float q0 = acrossCoordinate(i, eb, ew) / ew, q1 = acrossCoordinate(i + 1, eb, ew) / ew;
+    float q0 = acrossCoordinate(i, eb, et, ew) / ew, q1 = acrossCoordinate(i + 1, eb, et, ew) / ew;
     Beam beam;
     beam.facet = i;
     beam.t0 = gVisibleT0[i];

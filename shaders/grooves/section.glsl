@@ -9,6 +9,10 @@
 //
 // Density (§5.1): the footprint's points F + s1 A1 + s2 A2 land on B at s1 (A1.B) + s2 (A2.B), the sum
 // of two uniform variables: a trapezoid (the CPU method's default). A zero-width footprint is a point.
+//
+// Perturbed grooves (seed 000 §3), as setSectionRates on the CPU: each point moves along the path with
+// the groove that shapes the surface there, keeping its normalised profile coordinates, at rateB across
+// and rateH up per unit of travel along T (B = T's left normal).
 #ifndef BAKE_GROOVES_SECTION_GLSL
 #define BAKE_GROOVES_SECTION_GLSL
 
@@ -33,14 +37,25 @@ const int kWall = -1;  // a facet whose material is resolved after the sweep
 
 struct FootprintLine {
   float wide, narrow;  // half-widths of the two boxes
+  vec2 alongB, alongT;  // (A1, A2) projected on B and on T
 };
 
-FootprintLine footprintLine(vec2 axis1, vec2 axis2, vec2 binormal) {
-  float a = abs(dot(axis1, binormal)), c = abs(dot(axis2, binormal));
-  FootprintLine line;
+vec2 sectionTangent(vec2 binormal) { return vec2(binormal.y, -binormal.x); }
+
+void setWidths(inout FootprintLine line, float a, float c) {
+  a = abs(a);
+  c = abs(c);
   line.wide = 0.5 * max(a, c);
   line.narrow = 0.5 * min(a, c);
   if (line.narrow <= 1e-12 * line.wide) line.narrow = 0.0;  // a line: its ramps are below rounding
+}
+
+FootprintLine footprintLine(vec2 axis1, vec2 axis2, vec2 binormal) {
+  FootprintLine line;
+  vec2 tangent = sectionTangent(binormal);
+  line.alongB = vec2(dot(axis1, binormal), dot(axis2, binormal));
+  line.alongT = vec2(dot(axis1, tangent), dot(axis2, tangent));
+  setWidths(line, line.alongB.x, line.alongB.y);
   return line;
 }
 
@@ -62,10 +77,21 @@ float footprintShare(FootprintLine line, float x0, float x1) {
   return abs(footprintCdf(line, x1) - footprintCdf(line, x0));
 }
 
+// The share on the side x' <= x of the line x' = x + rate t through the footprint (a perturbed groove's
+// wall turned away from T): the footprint projected on B - rate T.
+float footprintCdfAcross(FootprintLine line, float x, float rate) {
+  if (rate == 0.0) return footprintCdf(line, x);
+  FootprintLine turned = line;
+  vec2 across = line.alongB - rate * line.alongT;
+  setWidths(turned, across.x, across.y);
+  return footprintCdf(turned, x);
+}
+
 // --- The section -------------------------------------------------------------------------------
 
 vec2 gSectionBinormal;
 float gSectionB[MAX_SECTION_POINTS], gSectionH[MAX_SECTION_POINTS];
+float gSectionRateB[MAX_SECTION_POINTS], gSectionRateH[MAX_SECTION_POINTS];
 int gFacetMaterial[MAX_SECTION_POINTS];  // facet i joins points i and i + 1
 int gSectionPoints;
 bool gSectionOverflow;
@@ -77,6 +103,9 @@ float gPlacedB[MAX_PLACED], gPlacedH[MAX_PLACED];
 int gPlacedFirst[MAX_SECTION_GROOVES], gPlacedCount[MAX_SECTION_GROOVES];
 int gPlacedMaterial[MAX_SECTION_GROOVES];
 uint gPlacedPrimitive[MAX_SECTION_GROOVES];
+int gPlacedLocal[MAX_SECTION_GROOVES];  // index into gGrooves
+float gPlacedCentre[MAX_SECTION_GROOVES];
+bool gPlacedReversed[MAX_SECTION_GROOVES];
 int gPlacedGrooves;
 float gBreaks[MAX_BREAKS];
 int gBreakCount;
@@ -95,8 +124,9 @@ void addBreak(float x) {
   }
 }
 
-// Places groove g with its centre line at b = centre (reversed: mirrored profile).
-void placeGroove(LocalGroove g, float centre, bool reversed) {
+// Places groove gGrooves[index] with its centre line at b = centre (reversed: mirrored profile).
+void placeGroove(int index, float centre, bool reversed) {
+  LocalGroove g = gGrooves[index];
   if (gPlacedGrooves == MAX_SECTION_GROOVES) {
     gSectionOverflow = true;
     return;
@@ -114,6 +144,9 @@ void placeGroove(LocalGroove g, float centre, bool reversed) {
   gPlacedCount[gPlacedGrooves] = n;
   gPlacedMaterial[gPlacedGrooves] = g.material;
   gPlacedPrimitive[gPlacedGrooves] = g.primitive;
+  gPlacedLocal[gPlacedGrooves] = index;
+  gPlacedCentre[gPlacedGrooves] = centre;
+  gPlacedReversed[gPlacedGrooves] = reversed;
   ++gPlacedGrooves;
 }
 
@@ -206,6 +239,8 @@ void appendPoint(float b, float h, int material) {
   }
   gSectionB[gSectionPoints] = b;
   gSectionH[gSectionPoints] = h;
+  gSectionRateB[gSectionPoints] = 0.0;
+  gSectionRateH[gSectionPoints] = 0.0;
   ++gSectionPoints;
 }
 
@@ -270,16 +305,64 @@ void buildSection() {
   resolveWalls();
 }
 
-// Unit outward normal of facet i: (b, h) in the section plane and in groove space.
+// A groove's own height at its offset x, or false outside its band (its edges within 1e-4 of its
+// width: a rim keeps its rates through rounding, as on the CPU).
+bool grooveHeightAt(LocalGroove g, float x, out float h) {
+  int n = min(g.profileCount, MAX_PROFILE_POINTS);
+  h = 0.0;
+  float slack = 1e-4 * (profileB(g, n - 1) - profileB(g, 0));
+  if (!(x >= profileB(g, 0) - slack && x <= profileB(g, n - 1) + slack)) return false;
+  x = clamp(x, profileB(g, 0), profileB(g, n - 1));
+  int k = 0;
+  while (k + 2 < n && profileB(g, k + 1) < x) ++k;
+  float b0 = profileB(g, k), b1 = profileB(g, k + 1);
+  h = b1 > b0 ? profileH(g, k) + (x - b0) / (b1 - b0) * (profileH(g, k + 1) - profileH(g, k)) : profileH(g, k);
+  return true;
+}
+
+// The rates of every point of a band (rims included: they do not move, but tilt their facets): those
+// of the groove whose own height there is nearest the surface's, dx/ds = offset' + scale' q across
+// and side scale' h / scale up (side = -1 where the groove runs against T, reversed).
+void setSectionRates() {
+  for (int i = 0; i < gSectionPoints; ++i) {
+    int shaping = -1;
+    float nearest = 0.0;
+    for (int p = 0; p < gPlacedGrooves; ++p) {
+      float side = gPlacedReversed[p] ? -1.0 : 1.0, h;
+      if (!grooveHeightAt(gGrooves[gPlacedLocal[p]], side * (gSectionB[i] - gPlacedCentre[p]), h)) continue;
+      if (shaping < 0 || abs(h - gSectionH[i]) < nearest) {
+        shaping = p;
+        nearest = abs(h - gSectionH[i]);
+      }
+    }
+    if (shaping < 0) continue;
+    LocalGroove g = gGrooves[gPlacedLocal[shaping]];
+    if (g.scaleRate == 0.0 && g.offsetRate == 0.0) continue;
+    float side = gPlacedReversed[shaping] ? -1.0 : 1.0;
+    float q = (side * (gSectionB[i] - gPlacedCentre[shaping]) - g.offset) / g.scale;
+    gSectionRateB[i] = g.offsetRate + g.scaleRate * q;
+    gSectionRateH[i] = side * g.scaleRate * gSectionH[i] / g.scale;
+  }
+}
+
+// Unit outward normal of facet i in the section plane (b, h).
 vec2 facetNormal2(int i) {
   float db = gSectionB[i + 1] - gSectionB[i], dh = gSectionH[i + 1] - gSectionH[i];
   float len = length(vec2(db, dh));
   return len > 0.0 ? vec2(-dh, db) / len : vec2(0.0, 1.0);
 }
 
+// In groove space, tilted along T by the points' rates: the cross product of the facet's step
+// (0, db, dh) with its ends' mean track (1, rateB, rateH), in (T, B, up).
 vec3 facetNormal3(int i) {
-  vec2 n = facetNormal2(i);
-  return vec3(n.x * gSectionBinormal, n.y);
+  float db = gSectionB[i + 1] - gSectionB[i], dh = gSectionH[i + 1] - gSectionH[i];
+  float rateB = 0.5 * (gSectionRateB[i] + gSectionRateB[i + 1]);
+  float rateH = 0.5 * (gSectionRateH[i] + gSectionRateH[i + 1]);
+  vec3 n = vec3(dh * rateB - db * rateH, -dh, db);  // (T, B, up)
+  float len = length(n);
+  if (!(len > 0.0)) return vec3(0.0, 0.0, 1.0);
+  n /= len;
+  return vec3(n.y * gSectionBinormal + n.x * sectionTangent(gSectionBinormal), n.z);
 }
 
 #endif

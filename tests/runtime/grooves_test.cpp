@@ -331,7 +331,8 @@ TEST_F(GroovesOracle, TangentFrameFollowsTheMesh) {
 }
 
 // Arcs (a closed circle, four G1 arcs) with a scale perturbation, in a repeating domain where the
-// circle crosses the edge: the shader's arc foot points, frozen perturbation and nearest-copy choice.
+// circle crosses the edge: the shader's arc foot points, perturbation (its value and its rate along
+// the path at the foot point) and nearest-copy choice.
 TEST_F(GroovesOracle, PerturbedCircleAcrossARepeatingEdge) {
   const std::string json = R"({"version": 1, "domain": {"size": [1, 1]}, "wrap": "repeat",
     "profiles": {"vee": {"points": [[-0.04, 0], [0, -0.03], [0.04, 0]]}},
