@@ -55,6 +55,14 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --frames 10 --compare-standard \
   --report "$out/grooves-plate.render.json" -o "$out/grooves-plate.png"
 
+# Paintstrokes (pipelines/strokes): fur grown on a torus and a small tree, made by strokebake's
+# generators with baked self-shadowing, each rendered alone and the two together.
+for object in fur tree; do
+  "$bin/bakeplay/bakeplay" render -q "$out/strokes-$object.glb" -o "$out/strokes-$object.png"
+done
+"$bin/bakeplay/bakeplay" render -q "$out/strokes-fur.glb" "$out/strokes-tree.glb" --size 1024x512 \
+  --camera 1.6,0.6,6.5:1.6,0,0 --report "$out/strokes-scene.report.json" -o "$out/strokes-scene.png"
+
 "$bin/bakeplay/bakeplay" render -q -o "$out/bundled-example.png" --frames 30 --report "$out/bundled-example.report.json"
 
 # Scene descriptions (pipelines/*/scene.json): bakepipe plans only what each scene's materials read,

@@ -12,7 +12,7 @@ Budgets& current() {
 }
 
 constexpr Budget kAll[] = {Budget::InputBytes, Budget::Triangles, Budget::TextureSide, Budget::Grooves,
-                           Budget::Primitives, Budget::FieldValues};
+                           Budget::Primitives, Budget::FieldValues, Budget::ControlPoints};
 
 }  // namespace
 
@@ -24,6 +24,7 @@ std::uint64_t& Budgets::operator[](Budget which) {
     case Budget::Grooves: return grooves;
     case Budget::Primitives: return primitives;
     case Budget::FieldValues: return fieldValues;
+    case Budget::ControlPoints: return controlPoints;
   }
   return inputBytes;
 }
@@ -38,6 +39,7 @@ const char* budgetName(Budget which) {
     case Budget::Grooves: return "grooves";
     case Budget::Primitives: return "primitives";
     case Budget::FieldValues: return "field-values";
+    case Budget::ControlPoints: return "control-points";
   }
   return "?";
 }

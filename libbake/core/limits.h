@@ -23,6 +23,7 @@ enum class Budget {
   Grooves,      // grooves of one groove scene, after generators
   Primitives,   // segments and arcs of one groove scene once its curves are flattened
   FieldValues,  // geodesic field values: vertices times fields
+  ControlPoints,  // paintstroke control points of one stroke list, generators included
 };
 
 struct Budgets {
@@ -32,6 +33,7 @@ struct Budgets {
   std::uint64_t grooves = 10'000'000;
   std::uint64_t primitives = 20'000'000;
   std::uint64_t fieldValues = std::uint64_t(1) << 30;
+  std::uint64_t controlPoints = 100'000'000;
 
   std::uint64_t& operator[](Budget which);
   std::uint64_t operator[](Budget which) const;

@@ -14,6 +14,7 @@
 #include "core/atomic_file.h"
 #include "io/glb.h"
 #include "io/ktx2.h"
+#include "strokes/package.h"
 
 namespace bake::info {
 namespace {
@@ -172,6 +173,24 @@ json describeKtx2(const ktx2::Texture& texture, const ktx2::Header& header) {
               {"metadata", metadata}};
 }
 
+// A BAKE_paintstrokes material, decoded through the package reader (so a damaged one is reported).
+Result<json> describePaintstrokes(const glb::Package& package, const std::string& name) {
+  BAKE_ASSIGN_OR_RETURN(const strokes::PaintstrokePackage p, strokes::decodePaintstrokePackage(package, name));
+  return json{{"strokes", p.strokes.size()},
+              {"controlPoints", p.points.size()},
+              {"styles", p.styleNames},
+              {"shadowDirections", p.shadowDirections},
+              {"bounds", {{"min", p.boundsMin}, {"max", p.boundsMax}}}};
+}
+
+bool hasMaterialExtension(const glb::Package& package, const char* name) {
+  for (const json& material : package.materials)
+    if (material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
+        material["extensions"].contains(name))
+      return true;
+  return false;
+}
+
 }  // namespace
 
 Result<json> describeFile(const fs::path& path) {
@@ -181,11 +200,17 @@ Result<json> describeFile(const fs::path& path) {
     case FileKind::Glb: {
       BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::decode(bytes, path.string()));
       description = describeGlb(package, "glb");
+      if (hasMaterialExtension(package, format::paintstrokes::kExtension)) {
+        BAKE_ASSIGN_OR_RETURN(description["paintstrokes"], describePaintstrokes(package, path.string()));
+      }
       break;
     }
     case FileKind::GltfText: {
       BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::read(path));
       description = describeGlb(package, "gltf");
+      if (hasMaterialExtension(package, format::paintstrokes::kExtension)) {
+        BAKE_ASSIGN_OR_RETURN(description["paintstrokes"], describePaintstrokes(package, path.string()));
+      }
       break;
     }
     case FileKind::Ktx2: {
@@ -260,6 +285,15 @@ void formatGltf(const json& d, std::ostringstream& out) {
     }
   }
   out << "  buffer views: " << d["bufferViews"] << " (" << d["bufferViewBytes"] << " bytes)\n";
+  if (d.contains("paintstrokes")) {
+    const json& p = d["paintstrokes"];
+    out << "  paintstrokes: " << plural(p["strokes"].get<std::size_t>(), "stroke") << ", "
+        << plural(p["controlPoints"].get<std::size_t>(), "control point") << ", " << plural(p["styles"].size(), "style") << ":";
+    for (const json& name : p["styles"]) out << " " << name.get<std::string>();
+    out << "\n    shadow directions: " << p["shadowDirections"].size();
+    for (const json& direction : p["shadowDirections"]) out << " " << vector(direction);
+    out << "\n    bounds " << vector(p["bounds"]["min"]) << " - " << vector(p["bounds"]["max"]) << "\n";
+  }
 }
 
 void formatKtx2(const json& d, std::ostringstream& out) {

@@ -1,6 +1,7 @@
 #include "play/render.h"
 
 #include <GL/glcorearb.h>
+#include <bake_formats/paintstrokes.h>
 
 #include <algorithm>
 #include <chrono>
@@ -11,6 +12,7 @@
 #include "gl/context.h"
 #include "io/image.h"
 #include "render/geodesic.h"
+#include "render/paintstrokes.h"
 #include "render/renderer.h"
 #include "render/standard.h"
 #include "render/target.h"
@@ -74,7 +76,8 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   BAKE_ASSIGN_OR_RETURN(std::unique_ptr<gl::Context> context, gl::createHeadlessContext());
   gl::ShaderLibrary shaders;
   StageTimer prepareTimer(&session.report(), "prepare");
-  BAKE_ASSIGN_OR_RETURN(SceneRenderer renderer, SceneRenderer::create(scene, RendererRegistry::builtIn(), shaders));
+  BAKE_ASSIGN_OR_RETURN(const RendererRegistry registry, renderersFor(settings.view));
+  BAKE_ASSIGN_OR_RETURN(SceneRenderer renderer, SceneRenderer::create(scene, registry, shaders));
   BAKE_ASSIGN_OR_RETURN(OffscreenTarget target, OffscreenTarget::create(settings.view.width, settings.view.height));
   prepareTimer.stop();
 
@@ -92,6 +95,10 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   session.report().setStatistic("size", {settings.view.width, settings.view.height});
   session.report().setStatistic("frameTimeGpu", timingJson(times.gpuMs));
   session.report().setStatistic("frameTimeCpu", timingJson(times.cpuMs));
+  // What techniques measured of the last frame (paintstrokes: polygons and vertices generated, mode).
+  const nlohmann::json techniqueStatistics = renderer.statistics();
+  for (const auto& [technique, statistics] : techniqueStatistics.items())
+    for (const auto& [key, value] : statistics.items()) session.report().setStatistic(key, value);
   if (settings.compareStandard) {
     // The same scene, camera and light with every instance drawn by the standard renderer.
     RendererRegistry standardOnly;
@@ -154,6 +161,14 @@ Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics) 
   return setup;
 }
 
+Result<RendererRegistry> renderersFor(const ViewSettings& view) {
+  BAKE_ASSIGN_OR_RETURN(const PaintstrokeOptions strokes,
+                        makePaintstrokeOptions(view.strokeQuality, view.strokeTolerance, view.strokeTubes));
+  RendererRegistry registry = RendererRegistry::builtIn();
+  registry.add(format::paintstrokes::kExtension, [strokes] { return std::make_unique<PaintstrokesRenderer>(strokes); });
+  return registry;
+}
+
 Status parseSize(const std::string& text, ViewSettings& view) {
   int width = 0, height = 0;
   char x = 0, extra = 0;
@@ -175,6 +190,7 @@ Percentiles percentiles(std::vector<double> samples) {
 
 Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
   if (settings.frames < 1) return usageError("--frames must be at least 1");
+  BAKE_RETURN_IF_ERROR(renderersFor(settings.view).status());  // bad stroke options are usage errors
   BakeSession session("bakeplay", settings.common, diagnostics);
   session.report().setOptions({{"command", "render"},
                                {"output", settings.output},
@@ -184,7 +200,10 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"frames", settings.frames},
                                {"compareStandard", settings.compareStandard},
                                {"geotexture", settings.view.geotexture},
-                               {"time", settings.view.time}});
+                               {"time", settings.view.time},
+                               {"strokeQuality", settings.view.strokeQuality},
+                               {"strokeTolerance", settings.view.strokeTolerance},
+                               {"strokeTubes", settings.view.strokeTubes}});
   return session.finish(renderScene(settings, session));
 }
 

@@ -10,6 +10,7 @@
 #include "core/cli.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace bake::play {
@@ -23,6 +24,12 @@ struct ViewSettings {
   bool quiet = false;  // for commands without the common options
   std::string geotexture;  // GeoTexture preset for every primitive with geodesic fields; empty: the files'
   float time = 0.0f;       // seconds, for animated techniques
+  // Paintstrokes (BAKE_paintstrokes): quality level 0, 1, 2 (1, 2 or 4 polygons across), the
+  // screen-space tolerance of the subdivision along the length in pixels, and "SIDESxSTEPS" to draw
+  // fixed CPU-tessellated tubes instead (the reference); checked by makePaintstrokeOptions.
+  int strokeQuality = 1;
+  double strokeTolerance = 0.5;
+  std::string strokeTubes;
 };
 
 struct RenderSettings {
@@ -45,6 +52,8 @@ struct ViewSetup {
   Light light;
 };
 Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics);
+// The built-in renderers with the options of the settings (paintstrokes); usage errors for bad values.
+Result<RendererRegistry> renderersFor(const ViewSettings& view);
 
 Status runRender(const RenderSettings& settings, Diagnostics& diagnostics);
 

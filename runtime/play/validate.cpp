@@ -11,6 +11,7 @@
 #include "render/geodesic.h"
 #include "render/grooves.h"
 #include "render/hatching.h"
+#include "render/paintstrokes.h"
 #include "render/renderer.h"
 #include "render/revolution.h"
 #include "render/target.h"
@@ -199,6 +200,7 @@ Status checkPackageStructure(const glb::Package& package, const std::string& nam
   BAKE_RETURN_IF_ERROR(checkRevolutionPackage(package, name));
   BAKE_RETURN_IF_ERROR(checkHatchingPackage(package, name));
   BAKE_RETURN_IF_ERROR(checkGroovesPackage(package, name));
+  BAKE_RETURN_IF_ERROR(checkPaintstrokePackage(package, name));
   return {};
 }
 

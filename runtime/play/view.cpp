@@ -118,12 +118,13 @@ Image readWindow(int width, int height) {
 
 Status runView(const WindowSettings& settings, Diagnostics& diagnostics) {
   if (settings.frames < 1) return usageError("--frames must be at least 1");
+  BAKE_ASSIGN_OR_RETURN(const RendererRegistry registry, renderersFor(settings.view));
   BAKE_ASSIGN_OR_RETURN(const ViewSetup setup, setUpView(settings.view, diagnostics));
   BAKE_ASSIGN_OR_RETURN(std::unique_ptr<gl::WindowContext> window,
                         gl::WindowContext::create(settings.view.width, settings.view.height, "bakeplay"));
   // Destroyed before the window: they hold GL objects of its context.
   gl::ShaderLibrary shaders;
-  BAKE_ASSIGN_OR_RETURN(SceneRenderer renderer, SceneRenderer::create(setup.scene, RendererRegistry::builtIn(), shaders));
+  BAKE_ASSIGN_OR_RETURN(SceneRenderer renderer, SceneRenderer::create(setup.scene, registry, shaders));
   BAKE_ASSIGN_OR_RETURN(const unsigned present, shaders.program({{"common/present.vert", "common/present.frag", "", "", ""}, {}}));
   GLuint emptyVertexArray = 0;
   glCreateVertexArrays(1, &emptyVertexArray);

@@ -29,7 +29,7 @@ GLuint makeBuffer(const void* data, std::size_t bytes) {
 }  // namespace
 
 Result<GpuPrimitive> GpuPrimitive::upload(const glb::Primitive& primitive, const std::map<std::string, int>& locations) {
-  if (primitive.mode < 4) return unsupported("points and lines are not drawn by this runtime");
+  if (primitive.mode < 0 || primitive.mode > 6) return unsupported("glTF primitive mode " + std::to_string(primitive.mode) + " does not exist");
   GpuPrimitive gpu;
   glCreateVertexArrays(1, &gpu.vao_);
   GLuint binding = 0;
@@ -58,7 +58,9 @@ Result<GpuPrimitive> GpuPrimitive::upload(const glb::Primitive& primitive, const
   } else {
     gpu.count_ = int(primitive.vertexCount());
   }
-  gpu.mode_ = primitive.mode == 5 ? GL_TRIANGLE_STRIP : primitive.mode == 6 ? GL_TRIANGLE_FAN : GL_TRIANGLES;
+  // glTF modes 0-6 are GL's own enumerants (POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, ...).
+  static const GLenum kModes[] = {GL_POINTS, GL_LINES, GL_LINE_LOOP, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN};
+  gpu.mode_ = kModes[primitive.mode];
   return gpu;
 }
 

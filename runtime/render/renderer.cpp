@@ -2,6 +2,7 @@
 
 #include <bake_formats/geodesic.h>
 #include <bake_formats/grooves.h>
+#include <bake_formats/paintstrokes.h>
 #include <bake_formats/revolution.h>
 #include <bake_formats/tam.h>
 
@@ -10,6 +11,7 @@
 #include "render/geodesic.h"
 #include "render/grooves.h"
 #include "render/hatching.h"
+#include "render/paintstrokes.h"
 #include "render/revolution.h"
 #include "render/standard.h"
 
@@ -24,6 +26,7 @@ const RendererRegistry& RendererRegistry::builtIn() {
     r.add(format::revolution::kExtension, [] { return std::make_unique<RevolutionRenderer>(); });
     r.add(format::tam::kExtension, [] { return std::make_unique<HatchingRenderer>(); });
     r.add(format::grooves::kExtension, [] { return std::make_unique<GroovesRenderer>(); });
+    r.add(format::paintstrokes::kExtension, [] { return std::make_unique<PaintstrokesRenderer>(); });
     return r;
   }();
   return registry;
@@ -69,6 +72,15 @@ std::size_t SceneRenderer::gpuBytes() const {
   std::size_t total = 0;
   for (const auto& renderer : renderers_) total += renderer->gpuBytes();
   return total;
+}
+
+nlohmann::json SceneRenderer::statistics() const {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < renderers_.size(); ++i) {
+    nlohmann::json s = renderers_[i]->statistics();
+    if (!s.is_null()) out[techniques_[i]] = std::move(s);
+  }
+  return out;
 }
 
 }  // namespace bake::play

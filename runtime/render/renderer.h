@@ -35,6 +35,9 @@ class TechniqueRenderer {
   virtual void draw(const FrameContext& frame) = 0;
   // Bytes uploaded to the GPU, for the report.
   virtual std::size_t gpuBytes() const = 0;
+  // What the technique measured about the last frame drawn (e.g. polygons generated), for the
+  // report; null when it measures nothing.
+  virtual nlohmann::json statistics() const { return nullptr; }
 };
 
 using RendererFactory = std::function<std::unique_ptr<TechniqueRenderer>()>;
@@ -59,6 +62,8 @@ class SceneRenderer {
   // Clears the bound target to the background colour and draws every technique.
   void drawFrame(const FrameContext& frame);
   std::size_t gpuBytes() const;
+  // The statistics of every technique that has some, keyed by technique (an object, maybe empty).
+  nlohmann::json statistics() const;
   const std::vector<std::string>& techniques() const { return techniques_; }
 
  private:

@@ -35,7 +35,10 @@ Status StandardRenderer::prepare(const Scene& scene, const std::vector<std::size
     const glb::Primitive& primitive = scene.primitive(instance);
     gl::Variant variant{{"standard/mesh.vert", "standard/mesh.frag", "", "", ""}, {}};
     std::map<std::string, int> locations = {{"POSITION", kPositionLocation}};
-    if (primitive.find("NORMAL")) {
+    // Points and lines (e.g. the centrelines of a paintstroke package) have no surface to light.
+    if (primitive.mode < 4) {
+      variant.defines.push_back("UNLIT");
+    } else if (primitive.find("NORMAL")) {
       variant.defines.push_back("HAS_NORMALS");
       locations["NORMAL"] = kNormalLocation;
     }

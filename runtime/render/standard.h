@@ -1,6 +1,7 @@
 // Standard shading for everything without a bake extension: Blinn-Phong with the material's base
 // colour (glTF pbrMetallicRoughness.baseColorFactor), one directional light and an ambient term.
-// Variants: HAS_NORMALS when the primitive has normals (else flat normals from derivatives).
+// Variants: HAS_NORMALS when the primitive has normals (else flat normals from derivatives); UNLIT
+// for points and lines (the base colour).
 #pragma once
 
 #include "render/gpu_mesh.h"

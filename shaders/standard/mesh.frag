@@ -1,6 +1,7 @@
 // Standard glTF mesh, fragment stage: Blinn-Phong with the material's base colour, linear output.
 // Without HAS_NORMALS the normal is the flat face normal, from screen-space derivatives of the world
-// position; it always faces the camera, so such meshes are lit on both sides.
+// position; it always faces the camera, so such meshes are lit on both sides. UNLIT (points and
+// lines): the base colour.
 #include "common/lighting.glsl"
 
 in vec3 vWorldPosition;
@@ -19,6 +20,10 @@ uniform vec4 uBaseColor;  // linear RGBA
 layout(location = 0) out vec4 fragColor;
 
 void main() {
+#ifdef UNLIT
+  fragColor = uBaseColor;  // points and lines: the base colour as it is
+  return;
+#endif
 #ifdef HAS_NORMALS
   vec3 n = normalize(vNormal);  // interpolation shortens it
 #else

@@ -19,6 +19,16 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
                      "GeoTexture preset for every primitive with geodesic fields (isolines, sand-water, moss-granite, "
                      "paint-metal-rust, water-lava, opacity-front, wave-displacement)");
   command.add_option("--time", view.time, "Animation time in seconds (GeoTexture fronts with a speed)")->capture_default_str();
+  command.add_option("--stroke-quality", view.strokeQuality,
+                     "Paintstrokes: polygons across each segment, 0: 1 (flat), 1: 2, 2: 4")
+      ->capture_default_str();
+  command.add_option("--stroke-tolerance", view.strokeTolerance,
+                     "Paintstrokes: largest screen-space deviation of the tessellation from the path and radius, in "
+                     "pixels (0.01 to 1000); smaller is finer")
+      ->capture_default_str();
+  command.add_option("--stroke-tubes", view.strokeTubes,
+                     "Paintstrokes: draw fixed tubes tessellated on the CPU instead, SIDES around and STEPS per segment "
+                     "(SIDESxSTEPS, e.g. 64x32 for the fine reference, 6x2 for coarse tubes)");
 }
 
 CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, std::string& size) {

@@ -1,0 +1,40 @@
+// strokebake: a stroke list (formats/paintstroke-input.md: JSON or CSV control points, optionally
+// with generators) or a mesh to grow strokes on, to a BAKE_paintstrokes package
+// (formats/paintstrokes.md): read, validate and repair (validate.cpp), bake the self-shadowing of
+// seed 002 per control point and light direction (shadow.cpp), quantise and pack (package.cpp), write
+// atomically. The report gives the counts, the repairs, the quantisation errors against the input and
+// the stage times.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/cli.h"
+#include "core/diagnostics.h"
+#include "core/status.h"
+#include "strokes/generators.h"
+
+namespace bake::strokes {
+
+struct ShadowSettings {
+  std::vector<Vec3d> directions;  // towards the light; empty: one, the default light of bakeplay
+  bool enabled = true;            // --no-shadows: no table (strokes unshadowed)
+  double density = 2.5;           // extinction per unit depth along the light path
+  double minimum = 0.15;          // reflectance scale of a point the light cannot reach
+};
+
+struct BakeSettings {
+  std::string input;              // .json / .csv stroke list, or a mesh (grow on it with `grow`)
+  std::string output;             // OUT.glb
+  GrowSettings grow;              // used when the input is a mesh (grow.mesh = input)
+  ShadowSettings shadow;
+  CommonOptions common;           // --report, --depfile, --threads, --quiet, --print-inputs, --budget
+};
+
+// The files a bake of these settings reads (for --print-inputs).
+std::vector<std::string> bakeInputs(const BakeSettings& settings);
+
+// Bakes, writes the package atomically, the --report and the --depfile.
+Status runBake(const BakeSettings& settings, Diagnostics& diagnostics);
+
+}  // namespace bake::strokes

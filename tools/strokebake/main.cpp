@@ -1,0 +1,76 @@
+// strokebake: bakes a stroke list (formats/paintstroke-input.md) or strokes grown on a mesh into a
+// BAKE_paintstrokes package (formats/paintstrokes.md): 3D paintstrokes of seed 002, quantised per
+// stroke, with baked self-shadowing per light direction.
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/session.h"
+#include "strokes/bake.h"
+
+namespace {
+
+// "x,y,z" as three numbers, or a usage error naming the option.
+bake::Result<bake::strokes::Vec3d> parseVector(const std::string& text, const char* option) {
+  bake::strokes::Vec3d v{};
+  std::istringstream in(text);
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof())
+    return bake::usageError(std::string(option) + " " + text + ": expected x,y,z");
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace bake::strokes;
+  BakeSettings settings;
+  bake::Diagnostics diagnostics("strokebake");
+  CLI::App app{"Bakes 3D paintstrokes (generalized cylinders whose path and radius are Catmull-Rom splines\n"
+               "through control points, with colour, opacity and reflectance varying along them) into a\n"
+               "glTF package whose BAKE_paintstrokes material holds the strokes quantised per stroke, their\n"
+               "styles and a baked self-shadowing table per light direction. INPUT is a stroke list (.json\n"
+               "or .csv) or a mesh (.obj .ply .off .stl .gltf .glb) to grow fur on.",
+               "strokebake"};
+  std::vector<std::string> lightDirs;
+  std::string bendDirection;
+  app.add_option("input", settings.input, "Stroke list (.json, .csv) or mesh to grow strokes on")->required();
+  app.add_option("-o,--output", settings.output, "Package to write (.glb)")->required();
+  app.add_option("--light-dir", lightDirs, "Direction towards a light, x,y,z (repeatable, at most 16; default: the "
+                                           "runtime's light 0.4,0.8,0.45)");
+  app.add_option("--shadow-density", settings.shadow.density, "Extinction per unit of relative depth along the light path")
+      ->default_str(std::to_string(settings.shadow.density));
+  app.add_option("--shadow-minimum", settings.shadow.minimum, "Reflectance scale of a point the light cannot reach, [0, 1]")
+      ->default_str(std::to_string(settings.shadow.minimum));
+  app.add_flag("--no-shadows{false}", settings.shadow.enabled, "Bake no shadow table (strokes unshadowed)");
+  GrowSettings& grow = settings.grow;
+  auto* growGroup = app.add_option_group("grow", "Growing strokes on a mesh (when INPUT is a mesh)");
+  growGroup->add_option("--count", grow.count, "Strokes to grow")->default_str(std::to_string(grow.count));
+  growGroup->add_option("--length", grow.length, "Stroke length, model units")->default_str(std::to_string(grow.length));
+  growGroup->add_option("--radius", grow.radius, "Root radius, model units")->default_str(std::to_string(grow.radius));
+  growGroup->add_option("--tip-radius", grow.tipRadius, "Tip radius / root radius")->default_str(std::to_string(grow.tipRadius));
+  growGroup->add_option("--bend", grow.bend, "Bend towards --bend-direction (0 straight, 1: tip displaced by the length)")
+      ->default_str(std::to_string(grow.bend));
+  growGroup->add_option("--bend-direction", bendDirection, "Bend direction x,y,z")->default_str("0,-1,0");
+  growGroup->add_option("--points", grow.pointsPerStroke, "Control points per stroke (>= 2)")
+      ->default_str(std::to_string(grow.pointsPerStroke));
+  growGroup->add_option("--seed", grow.seed, "Random seed")->default_str(std::to_string(grow.seed));
+  growGroup->add_option("--length-from", grow.lengthFrom, "Scale lengths by vertex:NAME (a scalar attribute) or texture:PATH");
+  growGroup->add_option("--colour-from", grow.colourFrom, "Colours from vertex (COLOR_0 / vertex colours) or texture:PATH");
+  bake::addCommonOptions(app, settings.common, {.cacheDir = true});
+
+  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
+    diagnostics.setQuiet(settings.common.quiet);
+    for (const std::string& text : lightDirs) {
+      BAKE_ASSIGN_OR_RETURN(const Vec3d d, parseVector(text, "--light-dir"));
+      settings.shadow.directions.push_back(d);
+    }
+    if (!bendDirection.empty()) { BAKE_ASSIGN_OR_RETURN(grow.bendDirection, parseVector(bendDirection, "--bend-direction")); }
+    if (grow.pointsPerStroke < 2) return bake::usageError("--points must be at least 2");
+    // The files of this run, for --print-inputs and --cache-dir.
+    const auto files = [&]() -> bake::Result<bake::RunFiles> { return bake::RunFiles{bakeInputs(settings), {settings.output}}; };
+    return bake::runCachedBake("strokebake", app, settings.common, diagnostics, files,
+                               [&] { return runBake(settings, diagnostics); });
+  });
+}
