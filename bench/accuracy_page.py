@@ -17,7 +17,7 @@ import os
 import statistics
 import sys
 
-SECTIONS = ["geodesic", "revolution", "groove", "groove-bake", "tam", "stroke", "resources"]
+SECTIONS = ["geodesic", "revolution", "groove", "groove-bake", "tam", "stroke", "paintstrokes", "resources"]
 
 
 class Missing(Exception):
@@ -421,6 +421,55 @@ def stroke(d, run):
     return "\n\n".join(out), ["stroke.png"]
 
 
+def paintstrokes(d, run):
+    rows = read_csv(d, "paintstrokes.csv")
+    equal = read_csv(d, "paintstrokes-equal-error.csv")
+    out = []
+    out.append(
+        "**Measured:** `bakeplay render` of three baked stroke sets (helical curls around a sphere, a tree, "
+        "fur grown on a torus), three views each (close, mid, far): the polygons (triangles) and vertices "
+        "the GPU generated for the strokes (GL primitive query), the median frame time and the image "
+        "error. Paintstrokes are tessellated on the GPU for every view (seed 002) at quality levels 0, 1, 2 "
+        "over the subdivision tolerance; the peer is the same strokes as fixed tubes tessellated on the "
+        "CPU (sides around × steps per segment).\n\n"
+        "**Reference:** the same strokes as fine fixed tubes (the finest `--stroke-tubes` setting of the "
+        "run), same shading; RMSE of the 8-bit sRGB images (`idiff`), 0..1.\n\n"
+        "**Peers in this run:** fixed tubes over a sweep of sides × steps; the criterion compares the "
+        "polygons quality 1 needs with those the tubes need for the same RMSE (within 10 %). Paintstrokes "
+        "skip strokes whose bounding sphere is outside the view; the tubes are drawn whole, as a static "
+        "mesh would be, so in the close views part of the ratio is that culling. Frame times are those of "
+        "the run's GL driver (in CI Mesa llvmpipe, where tessellation stages run on the CPU): the seed's "
+        "claim, and the criterion, are about polygons.")
+    body = []
+    ratios = []
+    for r in equal:
+        if num(r["tolerance_px"]) != 0.5:
+            continue
+        ps = next((x for x in rows if x["set"] == r["set"] and x["view"] == r["view"] and x["method"] == "paintstrokes"
+                   and x["quality"] == "1" and num(x["tolerance_px"]) == 0.5), None)
+        tube = next((x for x in rows if x["set"] == r["set"] and x["view"] == r["view"] and x["method"] == "tubes"
+                     and f"{x['sides']}x{x['steps']}" == r["tubes"]), None)
+        ratio_i = num(r["ratio_interpolated"]) if r["ratio_interpolated"] else None
+        ratios.append(ratio_i)
+        body.append([f"{r['set']} / {r['view']}", fmt(num(r["polygons"])), fmt(num(r["rmse"])),
+                     r["tubes"] or "none reached it", fmt(num(r["tube_polygons"])) if r["tube_polygons"] else "-",
+                     fmt(num(r["tube_rmse"])) if r["tube_rmse"] else "-",
+                     fmt_ratio(num(r["ratio"])) if r["ratio"] else "-",
+                     fmt_ratio(ratio_i) if ratio_i else "-",
+                     fmt(num(ps["frame_ms"])) if ps and ps["frame_ms"] else "-",
+                     fmt(num(tube["frame_ms"])) if tube and tube["frame_ms"] else "-"])
+    if not body:
+        raise Missing("no quality-1 row at the default 0.5 px tolerance in paintstrokes-equal-error.csv")
+    met = sum(1 for x in ratios if x is not None and x >= 3)
+    out.append(f"Quality 1 at the default 0.5 px tolerance against the cheapest fixed tubes of the sweep within "
+               f"10 % of its RMSE, and against the tube polygon count interpolated (log-log along the tubes' "
+               f"Pareto front) at exactly its RMSE: {met} of {len(body)} views at least 3× fewer polygons "
+               f"(interpolated figure).")
+    out.append(table(["set / view", "q1 polygons", "q1 RMSE", "tubes", "tube polygons", "tube RMSE",
+                      "tubes / q1", "tubes / q1 (interpolated)", "q1 ms", "tubes ms"], body))
+    return "\n\n".join(out), ["paintstrokes.png"]
+
+
 def resources(d, run):
     rows = read_csv(d, "resources.csv")
     commands = read_text(d, "resources-commands.txt").strip().splitlines()
@@ -449,6 +498,7 @@ TITLES = {
     "groove-bake": ("`groovebake`: bake time on large patterns, cell size against error", groove_bake),
     "tam": ("`tambake`: tonal art maps, quality against construction time", tam),
     "stroke": ("`tambake` strokes: rasterisation error against time", stroke),
+    "paintstrokes": ("`strokebake` paintstrokes: polygons against image error, against fixed tubes", paintstrokes),
     "resources": ("Resources: peak memory and time of every tool", resources),
 }
 

@@ -30,8 +30,10 @@ b="$tmp/b"
 c="$tmp/c"
 baked=(pretzel.glb torus.glb glaze.png bands.png hammered.png knurl.png pretzel-fields.glb vase.glb ring.glb
        plate.glb hatching.ktx2 torus-hatched.glb stippling.ktx2 pretzel-stippled.glb grooves-tiles.glb
-       grooves-record.glb grooves-plate.glb)
-validated=(pretzel-fields vase ring plate torus-hatched pretzel-stippled grooves-tiles grooves-record grooves-plate)
+       grooves-record.glb grooves-plate.glb strokes-fur.glb strokes-tree.glb)
+# Validation renders every package headless (bakeplay validate: several views, non-empty images).
+validated=(pretzel-fields vase ring plate torus-hatched pretzel-stippled grooves-tiles grooves-record grooves-plate
+           strokes-fur strokes-tree)
 
 # a. Everything, in parallel; then nothing to do.
 step "a: make -j2 all validate into $a"
@@ -43,7 +45,7 @@ for package in "${validated[@]}" example-wavy-grid; do
   [[ -f "$a/stamps/$package.validated" ]] || fail "a: $package was not validated"
 done
 for depfile in pretzel torus glaze bands hammered knurl pretzel-fields vase ring plate hatching stippling \
-               grooves-tiles grooves-record grooves-plate; do
+               grooves-tiles grooves-record grooves-plate strokes-fur strokes-tree; do
   [[ -s "$a/$depfile.d" ]] || fail "a: no depfile $depfile.d"
 done
 
