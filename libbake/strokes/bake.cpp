@@ -185,8 +185,8 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
 }  // namespace
 
 std::vector<std::string> bakeInputs(const BakeSettings& settings) {
-  // A stroke list's generators name meshes (relative to the list); a list that does not parse lists
-  // only itself, and the bake reports why.
+  // A stroke list's generators name meshes and textures (relative to the list); a list that does not
+  // parse lists only itself, and the bake reports why.
   std::vector<std::string> inputs{settings.input};
   if (!isStrokeList(settings.input)) {
     addTextureInput(settings.grow.lengthFrom, inputs);
@@ -196,8 +196,8 @@ std::vector<std::string> bakeInputs(const BakeSettings& settings) {
   Result<StrokeInput> input = readStrokeInput(settings.input);
   if (!input.isOk()) return inputs;
   for (const json& entry : input->generators) {
-    const json& mesh = entry.is_object() && entry.contains("mesh") ? entry["mesh"] : json();
-    if (mesh.is_string()) inputs.push_back((input->directory / mesh.get<std::string>()).string());
+    const std::vector<std::string> files = generatorFiles(entry, input->directory);
+    inputs.insert(inputs.end(), files.begin(), files.end());
   }
   return inputs;
 }

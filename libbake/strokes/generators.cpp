@@ -181,6 +181,14 @@ void keepMesh(glb::Mesh&& mesh, bool alreadyGrownOn, std::optional<glb::Mesh>& i
 
 }  // namespace
 
+std::vector<std::string> generatorFiles(const nlohmann::json& entry, const std::filesystem::path& inputDirectory) {
+  std::vector<std::string> files;
+  if (!entry.is_object() || entry.value("type", json()) != "grow") return files;
+  const EntryReader r{entry, Location{}};
+  if (!readGrow(r, inputDirectory, files).isOk()) files.clear();
+  return files;
+}
+
 Status runGenerator(const nlohmann::json& entry, const std::filesystem::path& inputDirectory, const Location& where,
                     const Budgets& budgets, StrokeSet& into, std::vector<std::string>& inputs,
                     std::optional<glb::Mesh>* grownOn) {

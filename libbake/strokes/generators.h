@@ -87,4 +87,8 @@ Status runGenerator(const nlohmann::json& entry, const std::filesystem::path& in
                     const Budgets& budgets, StrokeSet& into, std::vector<std::string>& inputs,
                     std::optional<glb::Mesh>* grownOn);
 
+// The files an entry reads (a grow entry's mesh and textures, resolved as runGenerator resolves them),
+// without reading them: the inputs --print-inputs and the cache key name. None for an invalid entry.
+std::vector<std::string> generatorFiles(const nlohmann::json& entry, const std::filesystem::path& inputDirectory);
+
 }  // namespace bake::strokes
