@@ -278,7 +278,7 @@ TEST(GrooveGrid, ParallelBandsAndConcentricArcsAreNotSpecial) {
 }
 
 TEST(GrooveGrid, ArcCrossingALineIsAnIntersectionAtTheCrossing) {
-  json grooves = {line(0.1, 0.5, 0.9, 0.5)};
+  json grooves = json::array({line(0.1, 0.5, 0.9, 0.5)});
   grooves.push_back(groove({{"arc", {{"centre", {0.5, 0.3}}, {"radius", 0.25}, {"start", 20}, {"end", 80}}}}));
   const GrooveScene scene = parseOk(sceneWith(grooves));
   const GrooveGrid grid = buildGridOk(scene);
