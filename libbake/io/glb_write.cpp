@@ -31,25 +31,51 @@ std::size_t alignUp(std::size_t value, std::size_t alignment) {
 }
 
 // The binary chunk under construction, with its bufferViews.
+// The BIN chunk, laid out before it is written: each view records where its bytes go, and the bytes
+// are copied once, straight into the finished file (assembleGlb). A large package (a groove grid of
+// 100 MB) is then never grown, copied or zero-filled twice: on a virtual machine every fresh page of
+// memory costs a fault, and growing one vector view by view touched twice the package's size.
 class BinaryChunk {
  public:
-  // Appends bytes as a new bufferView and returns its index.
+  // Appends bytes that outlive the chunk (a package's blobs) as a new bufferView; returns its index.
   int addView(std::span<const std::uint8_t> bytes, std::size_t alignment, int target = 0,
               std::size_t byteStride = 0) {
-    const std::size_t offset = alignUp(data_.size(), std::max<std::size_t>(alignment, 1));
-    data_.resize(offset, 0);
-    data_.insert(data_.end(), bytes.begin(), bytes.end());
+    const std::size_t offset = alignUp(size_, std::max<std::size_t>(alignment, 1));
+    pieces_.push_back({offset, bytes});
+    size_ = offset + bytes.size();
     json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}};
     if (target) view["target"] = target;
     if (byteStride) view["byteStride"] = byteStride;
     views_.push_back(std::move(view));
     return int(views_.size() - 1);
   }
-  const std::vector<std::uint8_t>& data() const { return data_; }
+  // The same for bytes made while encoding: the chunk keeps them (a moved vector keeps its storage,
+  // so the view's span stays valid).
+  int addOwnedView(std::vector<std::uint8_t>&& bytes, std::size_t alignment, int target = 0,
+                   std::size_t byteStride = 0) {
+    owned_.push_back(std::move(bytes));
+    return addView(owned_.back(), alignment, target, byteStride);
+  }
+  std::size_t size() const { return size_; }
+  // Writes the chunk's size() bytes to `out`, alignment gaps zeroed.
+  void copyTo(std::uint8_t* out) const {
+    std::size_t at = 0;
+    for (const Piece& piece : pieces_) {
+      std::memset(out + at, 0, piece.offset - at);
+      if (!piece.bytes.empty()) std::memcpy(out + piece.offset, piece.bytes.data(), piece.bytes.size());
+      at = piece.offset + piece.bytes.size();
+    }
+  }
   const json& views() const { return views_; }
 
  private:
-  std::vector<std::uint8_t> data_;
+  struct Piece {
+    std::size_t offset;
+    std::span<const std::uint8_t> bytes;
+  };
+  std::vector<Piece> pieces_;
+  std::vector<std::vector<std::uint8_t>> owned_;
+  std::size_t size_ = 0;
   json views_ = json::array();
 };
 
@@ -150,9 +176,8 @@ json writePlainPrimitive(const Primitive& primitive, BinaryChunk& bin, json& acc
   json attributes = json::object();
   for (const Attribute& attribute : primitive.attributes) {
     const std::size_t stride = alignUp(attribute.elementSize(), fmt::kVertexElementAlignment);
-    const std::vector<std::uint8_t> data = paddedVertexData(attribute, stride);
     json accessor = accessorFor(attribute);
-    accessor["bufferView"] = bin.addView(data, fmt::kVertexElementAlignment, fmt::kTargetArrayBuffer,
+    accessor["bufferView"] = bin.addOwnedView(paddedVertexData(attribute, stride), fmt::kVertexElementAlignment, fmt::kTargetArrayBuffer,
                                          stride != attribute.elementSize() ? stride : 0);
     accessors.push_back(std::move(accessor));
     attributes[attribute.name] = accessors.size() - 1;
@@ -163,7 +188,7 @@ json writePlainPrimitive(const Primitive& primitive, BinaryChunk& bin, json& acc
     json accessor = {{"componentType", wide ? fmt::kComponentU32 : fmt::kComponentU16},
                      {"count", primitive.indices.size()},
                      {"type", "SCALAR"}};
-    accessor["bufferView"] = bin.addView(packIndices(primitive.indices, wide), 4,
+    accessor["bufferView"] = bin.addOwnedView(packIndices(primitive.indices, wide), 4,
                                          fmt::kTargetElementArrayBuffer);
     accessors.push_back(std::move(accessor));
     out["indices"] = accessors.size() - 1;
@@ -195,7 +220,7 @@ Result<json> writeDracoPrimitive(const Primitive& primitive, const DracoOptions&
                        {"count", decoded.indices.size()},
                        {"type", "SCALAR"}});
   json out = {{"attributes", attributes}, {"indices", accessors.size() - 1}, {"mode", primitive.mode}};
-  out["extensions"][fmt::kDracoExtension] = {{"bufferView", bin.addView(encoded.bytes, 4)},
+  out["extensions"][fmt::kDracoExtension] = {{"bufferView", bin.addOwnedView(std::move(encoded.bytes), 4)},
                                              {"attributes", dracoAttributes}};
   if (primitive.material >= 0) out["material"] = primitive.material;
   return out;
@@ -246,28 +271,28 @@ void collectExtensionNames(const json& value, std::set<std::string>& names) {
   }
 }
 
-std::vector<std::uint8_t> assembleGlb(const std::string& jsonText, const std::vector<std::uint8_t>& bin) {
-  std::string text = jsonText;
-  text.resize(alignUp(text.size(), fmt::kChunkAlignment), ' ');
+std::vector<std::uint8_t> assembleGlb(const std::string& jsonText, const BinaryChunk& bin) {
+  const std::size_t textSize = alignUp(jsonText.size(), fmt::kChunkAlignment);
   const std::size_t binSize = alignUp(bin.size(), fmt::kChunkAlignment);
-  const std::size_t total = fmt::kHeaderBytes + fmt::kChunkHeaderBytes + text.size() +
-                            (bin.empty() ? 0 : fmt::kChunkHeaderBytes + binSize);
-  std::vector<std::uint8_t> out;
-  out.reserve(total);
-  auto put32 = [&out](std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
+  const std::size_t total = fmt::kHeaderBytes + fmt::kChunkHeaderBytes + textSize +
+                            (bin.size() == 0 ? 0 : fmt::kChunkHeaderBytes + binSize);
+  std::vector<std::uint8_t> out(total);  // the one allocation of the file's bytes
+  std::size_t at = 0;
+  auto put32 = [&](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out[at++] = std::uint8_t(v >> (8 * i));
   };
   put32(fmt::kMagic);
   put32(fmt::kVersion);
   put32(std::uint32_t(total));
-  put32(std::uint32_t(text.size()));
+  put32(std::uint32_t(textSize));
   put32(fmt::kChunkJson);
-  out.insert(out.end(), text.begin(), text.end());
-  if (!bin.empty()) {
+  std::memcpy(out.data() + at, jsonText.data(), jsonText.size());
+  std::memset(out.data() + at + jsonText.size(), ' ', textSize - jsonText.size());
+  at += textSize;
+  if (bin.size() != 0) {
     put32(std::uint32_t(binSize));
     put32(fmt::kChunkBin);
-    out.insert(out.end(), bin.begin(), bin.end());
-    out.resize(total, 0);
+    bin.copyTo(out.data() + at);  // the padding after it is already zero
   }
   return out;
 }
@@ -321,7 +346,7 @@ Result<std::vector<std::uint8_t>> encode(const Package& package, const WriteOpti
   if (!package.samplers.empty()) root["samplers"] = package.samplers;
   if (!package.extensions.empty()) root["extensions"] = package.extensions;
   if (!bin.views().empty()) root["bufferViews"] = bin.views();
-  if (!bin.data().empty()) root["buffers"] = json::array({{{"byteLength", bin.data().size()}}});
+  if (bin.size() != 0) root["buffers"] = json::array({{{"byteLength", bin.size()}}});
 
   std::set<std::string> used;
   collectExtensionNames(root, used);
@@ -333,7 +358,7 @@ Result<std::vector<std::uint8_t>> encode(const Package& package, const WriteOpti
 
   // glTF JSON is UTF-8 (glTF 2.0, 3.2); a name taken from a file name need not be. Bytes that are not
   // UTF-8 become U+FFFD instead of an exception from the serializer.
-  return assembleGlb(root.dump(-1, ' ', false, json::error_handler_t::replace), bin.data());
+  return assembleGlb(root.dump(-1, ' ', false, json::error_handler_t::replace), bin);
 }
 
 Status write(const std::filesystem::path& path, const Package& package, const WriteOptions& options) {
