@@ -216,6 +216,13 @@ bool grooveHeightAt(const LocalGroove& g, double x, double& h) {
 void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& grooves) {
   // Every point of a band gets its rates, the rims too: they do not move along a line (its travel is
   // 0 at h = 0), but a facet's tilt comes from both its ends.
+  for (SectionPoint& p : section.points) p.rateB = 0, p.rateH = 0;
+  // Unperturbed grooves (the common case) leave every rate 0: the search below, each point against
+  // every groove, is quadratic in a footprint over many grooves.
+  const bool anyRate = std::any_of(grooves.begin(), grooves.end(), [](const SectionGroove& g) {
+    return g.groove->scaleRate != 0 || g.groove->offsetRate != 0;
+  });
+  if (!anyRate) return;
   for (SectionPoint& p : section.points) {
     p.rateB = 0, p.rateH = 0;
     // The groove shaping the surface here: the one whose own height is nearest the point's.
