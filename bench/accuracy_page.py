@@ -290,7 +290,8 @@ def groove(d, run):
     out.append(
         "**Measured:** the seed's groove shading as the runtime shader computes it (CPU port of "
         "`libbake/groove/shade.h`: exact trapezoid footprint density), per view of "
-        "`bench/groove/cases.json` on the scenes of `bench/groove/scenes/`: RMSE and cost per pixel.\n\n"
+        "`bench/groove/cases.json` on the scenes of `bench/groove/scenes/`: RMSE and cost per pixel "
+        "(CPU time of all threads over the pixels; small frames are rendered repeatedly per measurement).\n\n"
         f"**Reference:** the independent ray tracer of `libbake/groove/reference.h` at "
         f"{spp + ' stratified samples per pixel' if spp else 'its default samples per pixel'}, rendered "
         "twice with different seeds: the RMSE between the two is its noise floor, and errors are quoted "
@@ -323,8 +324,8 @@ def groove(d, run):
     out.append(f"Per case (worst view; {len(rows)} views in all): {within_floor} of {len(cases)} cases are "
                f"within 3× the noise floor, {cheap} of {len(cases)} at least 50× cheaper than the "
                f"reference, {meets} meet both.{note}")
-    out.append(table(["case", "views", "RMSE / floor", "seed's variant RMSE / floor", "method ns/px (median)",
-                      "reference ns/px (median)", "smallest cost ratio", "both criteria"], body))
+    out.append(table(["case", "views", "RMSE / floor", "seed's variant RMSE / floor", "method CPU ns/px (median)",
+                      "reference CPU ns/px (median)", "smallest cost ratio", "both criteria"], body))
     return "\n\n".join(out), ["groove.png"]
 
 

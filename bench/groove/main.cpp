@@ -1,7 +1,8 @@
 // bench-groove: the seed's method on the CPU (libbake/groove/shade.h, seed 000 §4-§7) against the
 // independent ray-traced reference (reference.h) on the scene set of bench/groove/scenes, rendered
 // from the views of cases.json (view and light sweeps, footprint sizes, bounce counts). Per view:
-// the median time per frame of the method, the reference's time at --spp samples per pixel, the
+// the median time per frame of the method, the reference's time at --spp samples per pixel (wall
+// seconds per frame, and cost per pixel in CPU time), the
 // method's error against the reference (RMSE, relative MSE, 99th percentile), and the reference's own
 // noise floor: the RMSE between two reference renders with different seeds. The criterion of the
 // method is an RMSE within 3x that floor at 50x less cost per pixel. The method runs as the runtime
@@ -11,6 +12,7 @@
 // --images, EXR images of the method and the reference; progress on stderr.
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +34,7 @@ namespace {
 
 using namespace bake::groove;
 using Clock = std::chrono::steady_clock;
+constexpr double kMinMeasuredCpu = 0.05;  // seconds of CPU per measurement of the method
 
 struct Options {
   std::string cases = "bench/groove/cases.json";
@@ -101,11 +104,25 @@ std::vector<Job> readJobs(const std::string& path, const std::string& only, bool
   return jobs;
 }
 
+// Wall and CPU seconds (all threads of the process) of one call. Cost per pixel is CPU time: it does
+// not depend on the thread count, nor on waits for a core on a shared machine (thread start-up on a
+// busy 2-core machine can take a scheduler slice, milliseconds, longer than a small frame itself).
+struct Seconds {
+  double wall = 0, cpu = 0;
+};
+
+double processCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 template <typename F>
-double secondsOf(F&& f) {
+Seconds secondsOf(F&& f) {
   const auto start = Clock::now();
+  const double cpuStart = processCpuSeconds();
   f();
-  return std::chrono::duration<double>(Clock::now() - start).count();
+  return {std::chrono::duration<double>(Clock::now() - start).count(), processCpuSeconds() - cpuStart};
 }
 
 double median(std::vector<double> v) {
@@ -182,10 +199,20 @@ int main(int argc, char** argv) {
     published.density = FootprintDensity::SeedSegment;
     published.curvedSections = false;
     bake::Image method;
-    std::vector<double> times;
-    for (int r = 0; r < std::max(1, o.repeats); ++r)
-      times.push_back(secondsOf([&] { method = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, ours); }));
-    const double methodSeconds = median(times);
+    // Small frames are rendered several times per measurement, so that one takes at least
+    // kMinMeasuredCpu: the clock's resolution and the threads' start-up are then negligible.
+    const auto renderMethod = [&] { method = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, ours); };
+    const Seconds first = secondsOf(renderMethod);
+    const int framesPerMeasurement = int(std::clamp(std::ceil(kMinMeasuredCpu / std::max(first.cpu, 1e-9)), 1.0, 1e4));
+    std::vector<double> wallTimes, cpuTimes;
+    for (int r = 0; r < std::max(1, o.repeats); ++r) {
+      const Seconds t = secondsOf([&] {
+        for (int k = 0; k < framesPerMeasurement; ++k) renderMethod();
+      });
+      wallTimes.push_back(t.wall / framesPerMeasurement);
+      cpuTimes.push_back(t.cpu / framesPerMeasurement);
+    }
+    const double methodSeconds = median(wallTimes), methodCpu = median(cpuTimes);
     const bake::Image seedMethod = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, published);
 
     // How many pixels took the special-case path.
@@ -205,7 +232,8 @@ int main(int argc, char** argv) {
     reference.threads = o.threads;
     bake::Image truth, second;
     reference.seed = 1;
-    const double referenceSeconds = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
+    const Seconds referenceTime = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
+    const double referenceSeconds = referenceTime.wall, referenceCpu = referenceTime.cpu;
     reference.seed = 2;
     second = renderReference(loaded.scene, view, lighting, reference);
 
@@ -221,8 +249,8 @@ int main(int argc, char** argv) {
                   "%s,%s,%d,%.0f,%g,%g,%g,%g,%d,%.6g,%.4f,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.4g\n",
                   job.caseName.c_str(), sceneName.c_str(), job.width, pixels, job.viewTheta, job.viewPhi,
                   job.lightTheta, job.lightPhi, job.bounces, grooveWidth > 0 ? footprint / grooveWidth : 0,
-                  special / pixels, methodSeconds, 1e9 * methodSeconds / pixels, referenceSeconds,
-                  1e9 * referenceSeconds / pixels, referenceSeconds / methodSeconds, error.rmse, error.relativeMse,
+                  special / pixels, methodSeconds, 1e9 * methodCpu / pixels, referenceSeconds,
+                  1e9 * referenceCpu / pixels, referenceCpu / methodCpu, error.rmse, error.relativeMse,
                   error.p99, error.max, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0, seedError.rmse,
                   floor.rmse > 0 ? seedError.rmse / floor.rmse : 0);
     csv << row << std::flush;
@@ -230,8 +258,8 @@ int main(int argc, char** argv) {
                  "[%zu/%zu] %s %s view %g/%g light %g/%g b%d: rmse %.3g (floor %.3g, x%.2f; seed's x%.2f), %.0f ns/px vs %.0f ns/px\n",
                  index, jobs.size(), job.caseName.c_str(), sceneName.c_str(), job.viewTheta, job.viewPhi, job.lightTheta,
                  job.lightPhi, job.bounces, error.rmse, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0.0,
-                 floor.rmse > 0 ? seedError.rmse / floor.rmse : 0.0, 1e9 * methodSeconds / pixels,
-                 1e9 * referenceSeconds / pixels);
+                 floor.rmse > 0 ? seedError.rmse / floor.rmse : 0.0, 1e9 * methodCpu / pixels,
+                 1e9 * referenceCpu / pixels);
     if (!o.images.empty()) {
       char stem[256];
       std::snprintf(stem, sizeof stem, "%s-%03zu", job.caseName.c_str(), index);

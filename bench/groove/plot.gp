@@ -7,8 +7,8 @@
 #   3. the dense parallel set: the same against footprint / groove width.
 # Usage: gnuplot -e "dir='build-bench/results'" bench/groove/plot.gp
 # groove.csv: 1 case, 2 scene, 3 width, 4 pixels, 5 view_theta, 6 view_phi, 7 light_theta, 8 light_phi,
-#   9 bounces, 10 footprint_over_width, 11 special_fraction, 12 method_frame_s, 13 method_ns_per_pixel,
-#   14 reference_frame_s, 15 reference_ns_per_pixel, 16 cost_ratio, 17 rmse, 18 relative_mse, 19 p99,
+#   9 bounces, 10 footprint_over_width, 11 special_fraction, 12 method_frame_s (wall), 13 method_ns_per_pixel (CPU),
+#   14 reference_frame_s (wall), 15 reference_ns_per_pixel (CPU), 16 cost_ratio (CPU), 17 rmse, 18 relative_mse, 19 p99,
 #   20 max, 21 noise_floor, 22 rmse_over_floor, 23 seed_rmse, 24 seed_rmse_over_floor
 if (!exists("dir")) dir = 'build-bench/results'
 set datafile separator ','

@@ -14,7 +14,7 @@ bench_build bench-groove
 # smallest cost ratio (reference at --spp samples per pixel over the method).
 {
   echo "case: views, worst RMSE / noise floor (criterion <= 3; the seed's published variant in brackets),"
-  echo "      smallest cost ratio against the reference (criterion >= 50), method ns/px (fastest and slowest view):"
+  echo "      smallest cost ratio against the reference (criterion >= 50), method CPU ns/px (fastest and slowest view):"
   awk -F, 'NR > 1 { n[$1]++; if ($22 > worst[$1]) worst[$1] = $22; if ($24 > seed[$1]) seed[$1] = $24;
                     if (!($1 in ratio) || $16 < ratio[$1]) ratio[$1] = $16;
                     if (!($1 in fast) || $13 < fast[$1]) fast[$1] = $13; if ($13 > slow[$1]) slow[$1] = $13 }
