@@ -29,10 +29,9 @@ struct Side {
   std::uint32_t slot;
 };
 
-// Copy 1 of face (c0, c1, c2) is (c0, c2, c1): its slot s leaves corner kReversedTail[s] and lies on
-// the face's edge kReversedEdge[s] (edge i joins corners i and i + 1).
+// Copy 1 of face (c0, c1, c2) is (c0, c2, c1): its slot s leaves corner kReversedTail[s] (and lies on
+// the face's edge 2 - s, edge i joining corners i and i + 1).
 constexpr std::array<int, 3> kReversedTail{0, 2, 1};
-constexpr std::array<int, 3> kReversedEdge{2, 1, 0};
 
 Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }

@@ -44,6 +44,7 @@ json sceneStatistics(const GrooveScene& scene) {
           {"primitives", scene.primitives.size()},
           {"segments", scene.primitives.size() - arcs},
           {"arcs", arcs},
+          {"corners", corners},
           {"profiles", scene.profiles.size()},
           {"materials", scene.materials.size()},
           {"domain", {scene.domain[0], scene.domain[1]}},

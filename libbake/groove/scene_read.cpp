@@ -186,7 +186,7 @@ Result<Perturbation> readPerturbation(const Reader& r, const json& node, const s
 Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::string& source,
                                      const std::filesystem::path* directory) {
   GrooveScene scene;
-  Reader r{source};
+  Reader r{{source}};
   r.directory = directory;
   r.filesRead = &scene.files;
   json doc;

@@ -34,7 +34,7 @@ namespace {
 
 namespace fmt = format::paintstrokes;
 
-constexpr GLuint kSegmentsBinding = 4, kCountersBinding = 5;
+constexpr GLuint kCountersBinding = 5;  // after the package's arrays (bindings 0-4)
 
 std::size_t alignUp(std::size_t x, std::size_t alignment) { return (x + alignment - 1) / alignment * alignment; }
 
