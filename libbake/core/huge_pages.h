@@ -1,0 +1,24 @@
+// Transparent huge pages for the allocator of a tool that touches a lot of fresh memory. A large bake
+// faults in hundreds of megabytes (the 100,000-groove scene of bench/groove-bake: about 115,000 4 KiB
+// page faults), and on a virtual machine each fault costs microseconds: more than the parse of the
+// scene itself. glibc's malloc (2.35 and later) asks the kernel for 2 MiB pages when the tunable
+// glibc.malloc.hugetlb=1 is set, but reads tunables only from the environment when a process starts;
+// so such a tool re-executes itself once, first thing, with the tunable set.
+#pragma once
+
+#include <string_view>
+
+namespace bake {
+
+// Whether to re-execute: not when GLIBC_TUNABLES is already set (an empty value opts out; the user's
+// tunables stand), when the running executable is not the tool (run under valgrind, which executes
+// its own binary), when the kernel gives no transparent huge pages ("[never]", or no such file), or
+// in a sanitizer build (its allocator is not glibc's).
+bool shouldReexecForHugePages(const char* glibcTunables, std::string_view executableName, std::string_view toolName,
+                              std::string_view transparentHugePageMode);
+
+// Re-executes /proc/self/exe with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 when shouldReexecForHugePages
+// says so; returns (and the tool runs as it is) otherwise, or when the exec fails.
+void reexecWithHugePages(char** argv, std::string_view toolName);
+
+}  // namespace bake

@@ -1,0 +1,38 @@
+// When a tool re-executes itself with glibc's huge-page tunable (core/huge_pages.h).
+#include "core/huge_pages.h"
+
+#include <gtest/gtest.h>
+
+namespace bake {
+namespace {
+
+constexpr const char* kMadvise = "always [madvise] never\n";
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+TEST(HugePages, ReexecutesOnlyTheToolItselfWithoutTunablesWhereTheKernelHasThem) {
+  if (kSanitized) GTEST_SKIP() << "a sanitizer build never re-executes (its allocator is not glibc's)";
+  EXPECT_TRUE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", kMadvise));
+  EXPECT_TRUE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", "[always] madvise never\n"));
+}
+
+TEST(HugePages, TheUsersTunablesValgrindAndAKernelWithoutThemStand) {
+  EXPECT_FALSE(shouldReexecForHugePages("", "groovebake", "groovebake", kMadvise));  // the opt-out
+  EXPECT_FALSE(shouldReexecForHugePages("glibc.malloc.arena_max=1", "groovebake", "groovebake", kMadvise));
+  EXPECT_FALSE(shouldReexecForHugePages(nullptr, "memcheck-amd64-linux", "groovebake", kMadvise));
+  EXPECT_FALSE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", "always madvise [never]\n"));
+  EXPECT_FALSE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", ""));  // no such file
+}
+
+}  // namespace
+}  // namespace bake
