@@ -31,12 +31,17 @@ std::string transparentHugePageMode() {
 
 }  // namespace
 
-bool shouldReexecForHugePages(const char* glibcTunables, std::string_view executableName, std::string_view toolName,
-                              std::string_view transparentHugePageMode) {
+bool allocatorIsSanitized() {
 #ifdef BAKE_SANITIZED_ALLOCATOR
+  return true;
+#else
   return false;
 #endif
-  if (glibcTunables != nullptr) return false;
+}
+
+bool shouldReexecForHugePages(const char* glibcTunables, std::string_view executableName, std::string_view toolName,
+                              std::string_view transparentHugePageMode) {
+  if (allocatorIsSanitized() || glibcTunables != nullptr) return false;
   if (executableName != toolName) return false;
   // The mode file reads e.g. "always [madvise] never": the bracketed word is the one in force.
   const bool available = transparentHugePageMode.find("[always]") != std::string_view::npos ||

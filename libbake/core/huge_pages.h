@@ -17,6 +17,9 @@ namespace bake {
 bool shouldReexecForHugePages(const char* glibcTunables, std::string_view executableName, std::string_view toolName,
                               std::string_view transparentHugePageMode);
 
+// Whether this build's allocator is a sanitizer's (ASan), which ignores glibc's tunables.
+bool allocatorIsSanitized();
+
 // Re-executes /proc/self/exe with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 when shouldReexecForHugePages
 // says so; returns (and the tool runs as it is) otherwise, or when the exec fails.
 void reexecWithHugePages(char** argv, std::string_view toolName);

@@ -224,7 +224,6 @@ void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& gr
   });
   if (!anyRate) return;
   for (SectionPoint& p : section.points) {
-    p.rateB = 0, p.rateH = 0;
     // The groove shaping the surface here: the one whose own height is nearest the point's.
     const SectionGroove* shaping = nullptr;
     double nearest = 0;

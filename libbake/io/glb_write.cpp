@@ -30,7 +30,6 @@ std::size_t alignUp(std::size_t value, std::size_t alignment) {
   return alignment <= 1 ? value : (value + alignment - 1) / alignment * alignment;
 }
 
-// The binary chunk under construction, with its bufferViews.
 // The BIN chunk, laid out before it is written: each view records where its bytes go, and the bytes
 // are copied once, straight into the finished file (assembleGlb). A large package (a groove grid of
 // 100 MB) is then never grown, copied or zero-filled twice: on a virtual machine every fresh page of
@@ -177,8 +176,8 @@ json writePlainPrimitive(const Primitive& primitive, BinaryChunk& bin, json& acc
   for (const Attribute& attribute : primitive.attributes) {
     const std::size_t stride = alignUp(attribute.elementSize(), fmt::kVertexElementAlignment);
     json accessor = accessorFor(attribute);
-    accessor["bufferView"] = bin.addOwnedView(paddedVertexData(attribute, stride), fmt::kVertexElementAlignment, fmt::kTargetArrayBuffer,
-                                         stride != attribute.elementSize() ? stride : 0);
+    accessor["bufferView"] = bin.addOwnedView(paddedVertexData(attribute, stride), fmt::kVertexElementAlignment,
+                                              fmt::kTargetArrayBuffer, stride != attribute.elementSize() ? stride : 0);
     accessors.push_back(std::move(accessor));
     attributes[attribute.name] = accessors.size() - 1;
   }
@@ -189,7 +188,7 @@ json writePlainPrimitive(const Primitive& primitive, BinaryChunk& bin, json& acc
                      {"count", primitive.indices.size()},
                      {"type", "SCALAR"}};
     accessor["bufferView"] = bin.addOwnedView(packIndices(primitive.indices, wide), 4,
-                                         fmt::kTargetElementArrayBuffer);
+                                              fmt::kTargetElementArrayBuffer);
     accessors.push_back(std::move(accessor));
     out["indices"] = accessors.size() - 1;
   }

@@ -8,20 +8,8 @@ namespace {
 
 constexpr const char* kMadvise = "always [madvise] never\n";
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
 TEST(HugePages, ReexecutesOnlyTheToolItselfWithoutTunablesWhereTheKernelHasThem) {
-  if (kSanitized) GTEST_SKIP() << "a sanitizer build never re-executes (its allocator is not glibc's)";
+  if (allocatorIsSanitized()) GTEST_SKIP() << "a sanitizer build never re-executes (its allocator is not glibc's)";
   EXPECT_TRUE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", kMadvise));
   EXPECT_TRUE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", "[always] madvise never\n"));
 }
