@@ -258,7 +258,7 @@ struct Job {
   const std::vector<StraightGroove>& grooves;
   const Lighting& lighting;
   Frame frame;
-  double heightRange = 0, lengthScale = 0;
+  double height = 0, depth = 0, lengthScale = 0;  // the grooves' extent above and below the base plane
 };
 
 // The horizontal shift per unit of height along d (d / d_w, bounded like reach()).
@@ -269,22 +269,26 @@ Vec2 shiftPerHeight(const Vec3& d) {
   return {k * d.u, k * d.v};
 }
 
-// The working region: the footprint's box (slightly enlarged) swept both ways along the view and along
-// the light over the grooves' height range, and boxed. It holds the points seen in the footprint
-// (x = x' + (h / E_w) E_uv), what hides them and what shadows them. Both ways, not only towards the
-// viewer and the light: a piece's occlusion of another is decided at one point of their overlap, and
-// that decision needs the pieces whole on both sides (a one-sided sweep changed some samples). This
-// box is smaller than the footprint's box grown by both reaches in every direction (each reach only
-// counts along its own direction), and its 4 edges keep the base plane's cells cheap to clip against.
+// The working region: the points of the surface that can be seen in the footprint, hide them or
+// shadow them, boxed. A point of height h seen at the footprint point x' lies at x' + h E' (E' =
+// E_uv / E_w), h in [-depth, height]; what hides it lies further along the same view line, higher, so
+// within the same set; what shadows it lies along L' (= L_uv / L_w) from it, at most height + depth
+// further up. So the region is the footprint swept by [-depth, height] E' and then by
+// [0, height + depth] L' (the light's reach bounded like reach()). Pieces are clipped to it whole
+// or in part; a part of a piece still decides its occlusion of another at one point of their overlap
+// correctly: pieces of a height field have disjoint convex domains, which keep one order along every
+// view line (and light ray) crossing both. Its 4 edges keep the base plane's cells cheap to clip
+// against.
 ConvexPolygon workingRegion(const Job& job, const Box2& footprintBox) {
   const double e = 1e-6 * job.lengthScale;
   const Vec2 view = shiftPerHeight(job.frame.toViewer), light = shiftPerHeight(job.frame.toLight);
-  const double sweep[2] = {-job.heightRange, job.heightRange};
+  const double viewSweep[2] = {-job.depth - e, job.height + e};
+  const double lightSweep[2] = {0, job.height + job.depth + e};
   Box2 b;
   for (const double cu : {footprintBox.lower.u - e, footprintBox.upper.u + e})
     for (const double cv : {footprintBox.lower.v - e, footprintBox.upper.v + e})
-      for (const double h : sweep)
-        for (const double k : sweep) {
+      for (const double h : viewSweep)
+        for (const double k : lightSweep) {
           const Vec2 x{cu + h * view.u + k * light.u, cv + h * view.v + k * light.v};
           b.lower = {std::min(b.lower.u, x.u), std::min(b.lower.v, x.v)};
           b.upper = {std::max(b.upper.u, x.u), std::max(b.upper.v, x.v)};
@@ -347,11 +351,11 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
 
   Rgb sum{0, 0, 0};
   thread_local FragmentSet visible;
+  RadianceMemo radianceOf(job.scene.materials, f.toViewer, job.lighting);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
-    const Rgb radiance =
-        directRadiance(job.scene.materials[me.piece->material], me.piece->normal, f.toViewer, job.lighting);
+    const Rgb radiance = radianceOf(me.piece->material, me.piece->normal);
     if (isBlack(radiance)) continue;  // facing away from the light: no direct light at all
     visible.count = 0;
     visible.minArea = f.minArea;
@@ -391,7 +395,7 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
     shorter = {shorter.u - along.v / n * 1e-6 * span, shorter.v + along.u / n * 1e-6 * span};
   }
 
-  Job job{scene, straight, lighting, {}, extent.height + extent.depth,
+  Job job{scene, straight, lighting, {}, extent.height, extent.depth,
           std::max({span, extent.width, extent.height + extent.depth, 1e-300})};
   Frame& f = job.frame;
   f.toViewer = toViewer;

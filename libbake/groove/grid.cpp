@@ -154,9 +154,11 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
                 Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) {
   out.clear();
   if (grid.cellCount() == 0 || !(lower.u <= upper.u) || !(lower.v <= upper.v)) return;
-  std::vector<std::uint32_t> cells;
+  thread_local std::vector<std::uint32_t> cells;  // per-thread, reused: a lookup allocates nothing
+  cells.clear();
   grid_detail::cellsOfBox(latticeOf(grid), lower, upper, cells);
   for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
+  if (cells.size() < 2) return;  // one cell lists each reference once, in order
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }

@@ -134,6 +134,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   visibleSpans(section, e, visible);
   visibleSpans(section, inSection(section, lighting.toLight), lit);
   const std::vector<SectionPoint>& pts = section.points;
+  RadianceMemo radiance(scene.materials, toViewer, lighting);
   for (std::size_t i = 0; i < section.facetCount(); ++i) {
     const FacetSpan& v = visible[i];
     if (v.empty()) continue;
@@ -155,7 +156,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
     const double r = shareBetween(t0, t1);
     const double middle = pts[i].h + 0.5 * (t0 + t1) * (pts[i + 1].h - pts[i].h);
     const Vec3 normal = facetNormalSeen(section, i, e, middle);
-    const Rgb f = directRadiance(scene.materials[section.material[i]], normal, toViewer, lighting);
+    const Rgb f = radiance(section.material[i], normal);
     for (int c = 0; c < 3; ++c) out.direct[c] += r * f[c];
   }
   if (lighting.maxBounces > 0) out.mirrored = mirrorBounces(scene, section, density, toViewer, lighting, visible, lit);
@@ -164,12 +165,12 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
 
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                    const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings) {
-  const Rgb flat = directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting);
+  auto flat = [&] { return directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting); };
   thread_local std::vector<std::size_t> kept;
   kept.clear();
   for (std::size_t i = 0; i < grooves.size(); ++i)
     if (reachesFootprint(scene, grooves, grooves[i], footprint)) kept.push_back(i);
-  if (kept.empty()) return flat;
+  if (kept.empty()) return flat();
 
   const double reach = 0.5 * (std::hypot(footprint.axis1.u, footprint.axis1.v) +
                               std::hypot(footprint.axis2.u, footprint.axis2.v)) +
@@ -190,10 +191,11 @@ Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& gro
     return shadeClass(scene, grooves, members, footprint, toViewer, lighting, settings);
   };
   if (representatives.size() == 1) return shadeClassNumber(0);
-  Rgb sum = flat;
+  const Rgb base = flat();
+  Rgb sum = base;
   for (std::size_t c = 0; c < representatives.size(); ++c) {
     const Rgb value = shadeClassNumber(c);
-    for (int k = 0; k < 3; ++k) sum[k] += value[k] - flat[k];
+    for (int k = 0; k < 3; ++k) sum[k] += value[k] - base[k];
   }
   for (double& x : sum) x = std::max(0.0, x);
   return sum;

@@ -74,6 +74,19 @@ Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toV
   return out;
 }
 
+Rgb RadianceMemo::operator()(std::size_t material, const Vec3& normal) {
+  for (int i = 0; i < count_; ++i) {
+    const Entry& e = entries_[i];
+    if (e.material == material && e.normal.u == normal.u && e.normal.v == normal.v && e.normal.w == normal.w)
+      return e.radiance;
+  }
+  Entry& slot = entries_[next_];
+  slot = {material, normal, directRadiance(materials_[material], normal, toViewer_, lighting_)};
+  next_ = (next_ + 1) % kEntries;
+  count_ = std::max(count_, next_ == 0 ? kEntries : next_);
+  return slot.radiance;
+}
+
 Vec3 reflect(const Vec3& toViewer, const Vec3& normal) {
   const double d = 2 * dot(toViewer, normal);
   return normalised({d * normal.u - toViewer.u, d * normal.v - toViewer.v, d * normal.w - toViewer.w});

@@ -59,6 +59,30 @@ void setRgb(Image& image, int x, int y, const Rgb& value);
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting);
 Vec3 reflect(const Vec3& toViewer, const Vec3& normal);  // mirrored direction, unit
 
+// directRadiance under one view and light, remembering the last few (material, normal) pairs: the
+// facets of a section and the pieces of a footprint's surface repeat a handful of normals (the flat
+// ground between grooves above all), and the lobe's pow is most of a radiance's cost. Same values as
+// directRadiance, bit for bit.
+class RadianceMemo {
+ public:
+  RadianceMemo(const std::vector<Material>& materials, const Vec3& toViewer, const Lighting& lighting)
+      : materials_(materials), toViewer_(toViewer), lighting_(lighting) {}
+  Rgb operator()(std::size_t material, const Vec3& normal);
+
+ private:
+  struct Entry {
+    std::size_t material = 0;
+    Vec3 normal;
+    Rgb radiance{0, 0, 0};
+  };
+  static constexpr int kEntries = 4;
+  const std::vector<Material>& materials_;
+  const Vec3& toViewer_;
+  const Lighting& lighting_;
+  std::array<Entry, kEntries> entries_;
+  int count_ = 0, next_ = 0;
+};
+
 // Image error figures against a reference image (same size): RMSE over channels, relative MSE
 // (MSE / mean square of the reference), 99th percentile of the per-pixel max-channel error, max.
 struct ImageError {
