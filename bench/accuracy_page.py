@@ -291,7 +291,7 @@ def groove(d, run):
         "**Measured:** the seed's groove shading as the runtime shader computes it (CPU port of "
         "`libbake/groove/shade.h`: exact trapezoid footprint density), per view of "
         "`bench/groove/cases.json` on the scenes of `bench/groove/scenes/`: RMSE and cost per pixel "
-        "(CPU time of all threads over the pixels; small frames are rendered repeatedly per measurement).\n\n"
+        "(CPU time over the pixels, both renderers on one thread; small frames are rendered repeatedly per measurement).\n\n"
         f"**Reference:** the independent ray tracer of `libbake/groove/reference.h` at "
         f"{spp + ' stratified samples per pixel' if spp else 'its default samples per pixel'}, rendered "
         "twice with different seeds: the RMSE between the two is its noise floor, and errors are quoted "

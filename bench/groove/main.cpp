@@ -43,7 +43,11 @@ struct Options {
   std::string only;  // run the cases whose name contains this
   int spp = 256;
   int repeats = 3;
-  int threads = 2;
+  // One thread for both renderers by default: cost per pixel is then the CPU time of the shading
+  // alone. With more, every frame starts its threads anew, and a new thread's per-thread scratch
+  // (grown buffers, reused pixel after pixel) is allocated again: on small frames that start-up is
+  // a sizeable part of the method's CPU time and a negligible one of the reference's.
+  int threads = 1;
   bool quick = false;  // first view of every case, 64 spp
   bool curved = false;  // the method with curved sections on arcs
 };
@@ -105,8 +109,8 @@ std::vector<Job> readJobs(const std::string& path, const std::string& only, bool
 }
 
 // Wall and CPU seconds (all threads of the process) of one call. Cost per pixel is CPU time: it does
-// not depend on the thread count, nor on waits for a core on a shared machine (thread start-up on a
-// busy 2-core machine can take a scheduler slice, milliseconds, longer than a small frame itself).
+// not depend on waits for a core on a shared machine (thread start-up on a busy 2-core machine can
+// take a scheduler slice, milliseconds, longer than a small frame itself).
 struct Seconds {
   double wall = 0, cpu = 0;
 };
@@ -147,7 +151,7 @@ int main(int argc, char** argv) {
   app.add_option("--only", o.only, "only the cases whose name contains this");
   app.add_option("--spp", o.spp, "reference samples per pixel (a square)");
   app.add_option("--repeats", o.repeats, "method renders per view (the median is kept)");
-  app.add_option("--threads", o.threads, "threads for both renderers");
+  app.add_option("--threads", o.threads, "threads for both renderers (default 1: CPU time of the shading alone)");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
   app.add_flag("--curved", o.curved, "the method with curved sections on arcs (CPU only, not in the shader yet)");
   CLI11_PARSE(app, argc, argv);

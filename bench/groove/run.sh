@@ -3,7 +3,7 @@
 # BUILD_DIR (default build-bench), runs it on bench/groove/cases.json and plots groove.png: the seed's
 # method against the ray-traced reference, error against time per frame, view angle and
 # footprint/width. Arguments go to bench-groove (--quick, --only NAME, --spp, --repeats, --threads
-# (default 2), --images DIR, --out DIR; default BUILD_DIR/results).
+# (default 1), --images DIR, --out DIR; default BUILD_DIR/results).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 bench_setup "$@"

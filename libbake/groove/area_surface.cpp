@@ -103,6 +103,15 @@ void pushCell(std::vector<Cell>& cells, const ConvexPolygon& p, const HeightPlan
   cells.push_back({p, plane, owner});
 }
 
+// A cell this groove leaves whole: it passed pushCell's area test already.
+void keepCell(std::vector<Cell>& cells, const Cell& cell, SurfaceBuildStats& stats) {
+  if (cells.size() >= kMaxSurfacePieces) {
+    ++stats.overflows;
+    return;
+  }
+  cells.push_back(cell);
+}
+
 // The cell `inside` (already clipped to a strip) against the strip's plane: the lower (cuts) or higher
 // (ridges) plane wins, the cell's own on a tie (it comes from an earlier groove).
 void resolve(const Cell& cell, const ConvexPolygon& inside, const HeightPlane& stripPlane, int owner, bool cuts,
@@ -144,7 +153,7 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
     next.clear();
     for (const Cell& cell : cells) {
       if (!boundsOf(cell.polygon).overlaps(bandBox)) {
-        pushCell(next, cell.polygon, cell.plane, cell.owner, minArea, stats);
+        keepCell(next, cell, stats);
         continue;
       }
       // A cell inside every edge of the band has nothing outside it (subtract would find no piece),
@@ -152,11 +161,11 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
       const Side side = sideOf(cell.polygon, bandEdges, bandEdgeCount);
       int n = 0;
       if (side == Side::across) {
-        n = subtract(cell.polygon, band, minArea, outside, inBand);  // inBand: intersect(cell, band)
+        n = subtract(cell.polygon, bandEdges, bandEdgeCount, minArea, outside, inBand);  // inBand: cell and band
         if (area(inBand) <= minArea) n = -1;
       }
       if (side == Side::outside || n < 0) {
-        pushCell(next, cell.polygon, cell.plane, cell.owner, minArea, stats);
+        keepCell(next, cell, stats);
         continue;
       }
       for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);

@@ -231,9 +231,10 @@ void FragmentSet::subtract(const ConvexPolygon& hole) {
   for (int i = 0; i < original; ++i) {
     Fragment& f = fragment[i];
     if (f.polygon.empty() || !boundsOf(f.polygon).overlaps(holeBox)) continue;
-    const ConvexPolygon overlap = intersect(f.polygon, edges, edgeCount);
-    const double removed = area(overlap);
-    if (overlap.empty() || removed <= minArea) continue;
+    // One pass of clips gives both the pieces outside the hole and the overlap (`inside`).
+    const int n = groove::subtract(f.polygon, edges, edgeCount, minArea, pieces, inside);
+    const double removed = area(inside);
+    if (inside.empty() || removed <= minArea) continue;
     const double whole = area(f.polygon);
     if (removed >= whole - minArea) {
       f.polygon.count = 0;  // fully covered; compacted below
@@ -242,7 +243,6 @@ void FragmentSet::subtract(const ConvexPolygon& hole) {
     // A fragment of weight < 1 stands for itself minus holes that could not be cut out; the new hole
     // is taken to miss those, so the fragment's weighted area drops by exactly `removed`.
     const double remaining = std::max(0.0, f.weight * whole - removed);
-    const int n = groove::subtract(f.polygon, edges, edgeCount, minArea, pieces, inside);
     if (n == 0) {
       f.polygon.count = 0;
     } else if (count + n - 1 <= kMaxFragments) {

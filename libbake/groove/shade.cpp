@@ -8,8 +8,9 @@
 // hmax |E_uv| / E_w towards the viewer (the light), a cavity point of depth dmax up to dmax |E_uv| / E_w
 // away from it. The light's reach is capped at kMaxReach heights (a light at or below the horizon
 // would need an unbounded box; ridges further away are not found, so their shadows are missed).
-// Special cases (§4.2): a special-case record of the grid whose box meets the enlarged box sends the
-// pixel to area sampling. No groove: the flat base.
+// Special cases (§4.2): a special-case record of the grid whose box meets the footprint's box swept
+// along view and light (not grown by wmax: a record's box holds its bands) sends the pixel to area
+// sampling. No groove: the flat base.
 #include "groove/shade.h"
 
 #include <algorithm>
@@ -45,9 +46,11 @@ void enlargeAlong(Box& box, const Box& core, const Vec3& d, double hmax, double 
   }
 }
 
-Box queryBox(const GrooveScene& scene, const Footprint& f, const Vec3& toViewer, const Vec3& toLight) {
-  const double eu = 0.5 * (std::abs(f.axis1.u) + std::abs(f.axis2.u)) + scene.wmax;
-  const double ev = 0.5 * (std::abs(f.axis1.v) + std::abs(f.axis2.v)) + scene.wmax;
+// The footprint's box grown by `width` (wmax to find the bands that reach it, 0 for the special-case
+// records, whose boxes hold their bands already) and swept along the view and the light.
+Box queryBox(const GrooveScene& scene, const Footprint& f, const Vec3& toViewer, const Vec3& toLight, double width) {
+  const double eu = 0.5 * (std::abs(f.axis1.u) + std::abs(f.axis2.u)) + width;
+  const double ev = 0.5 * (std::abs(f.axis1.v) + std::abs(f.axis2.v)) + width;
   const Box core{{f.centre.u - eu, f.centre.v - ev}, {f.centre.u + eu, f.centre.v + ev}};
   Box box = core;
   enlargeAlong(box, core, toViewer, scene.hmax, scene.dmax);
@@ -138,7 +141,7 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
 
 Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
                       ShadeStats* stats) const {
-  const Box box = queryBox(scene_, footprint, toViewer, lighting.toLight);
+  const Box box = queryBox(scene_, footprint, toViewer, lighting.toLight, scene_.wmax);
   thread_local std::vector<std::uint32_t> found;
   thread_local std::vector<std::uint32_t> records;
   thread_local std::vector<LocalGroove> grooves;
@@ -149,17 +152,22 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   grooves.clear();
   for (std::uint32_t p : found)
     grooves.push_back(localGroove(scene_, p, nearestCopy(scene_, scene_.primitives[p], footprint.centre)));
+  // §4.2: a special case is an intersection or an end inside the box. A record's box already holds
+  // the bands around its point (the overlap of two regions, an end's cut and walls, a mitre), so it
+  // is met against the footprint's box swept along view and light, not grown by wmax again.
   // Records anywhere under the box count (an intersection inside a wide footprint is still one);
   // when the box covers more cells than there are records, testing every record is cheaper.
-  const double boxCells = (box.upper.u - box.lower.u) / grid_.cellSize.u * ((box.upper.v - box.lower.v) / grid_.cellSize.v);
+  const Box recordBox = queryBox(scene_, footprint, toViewer, lighting.toLight, 0);
+  const double boxCells = (recordBox.upper.u - recordBox.lower.u) / grid_.cellSize.u *
+                          ((recordBox.upper.v - recordBox.lower.v) / grid_.cellSize.v);
   bool special = false;
   if (boxCells > double(grid_.records.size())) {
     special = std::any_of(grid_.records.begin(), grid_.records.end(),
-                          [&](const SpecialRecord& record) { return meetsRecord(scene_, box, record); });
+                          [&](const SpecialRecord& record) { return meetsRecord(scene_, recordBox, record); });
   } else {
-    grid_.recordsInBox(box.lower, box.upper, records);
+    grid_.recordsInBox(recordBox.lower, recordBox.upper, records);
     special = std::any_of(records.begin(), records.end(),
-                          [&](std::uint32_t r) { return meetsRecord(scene_, box, grid_.records[r]); });
+                          [&](std::uint32_t r) { return meetsRecord(scene_, recordBox, grid_.records[r]); });
   }
   if (stats) stats->special = special;
   if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);

@@ -119,14 +119,16 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   gSpecialCase = false;
   vec3 flatBase = directRadiance(baseMaterial(), vec3(0.0, 0.0, 1.0), toViewer);
   vec2 lower, upper;
-  queryBox(axis1, axis2, toViewer, gLightDir, lower, upper);
+  queryBox(axis1, axis2, toViewer, gLightDir, uBounds.x, lower, upper);
   gatherPrimitives(lower, upper);
   if (gFoundCount == 0) return flatBase;
   gGrooveCount = gFoundCount;
   for (int i = 0; i < gFoundCount; ++i) gGrooves[i] = localGroove(gFound[i]);
 #if defined(HAS_SPECIAL_CASES) && defined(SHADING_INPUTS)
   // Only reported for now (area sampling is not ported), so only looked up where it is reported.
-  gSpecialCase = specialCaseUnder(lower, upper);
+  vec2 recordLower, recordUpper;
+  queryBox(axis1, axis2, toViewer, gLightDir, 0.0, recordLower, recordUpper);
+  gSpecialCase = specialCaseUnder(recordLower, recordUpper);
 #endif
   return lineSample(axis1, axis2, toViewer, flatBase);
 }

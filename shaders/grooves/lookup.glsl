@@ -52,8 +52,10 @@ void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 core
   }
 }
 
-void queryBox(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 toLight, out vec2 lower, out vec2 upper) {
-  vec2 extent = 0.5 * (abs(axis1) + abs(axis2)) + vec2(uBounds.x);
+// `width`: wmax to find the bands reaching the footprint, 0 for the special-case records (their boxes
+// hold their bands already).
+void queryBox(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 toLight, float width, out vec2 lower, out vec2 upper) {
+  vec2 extent = 0.5 * (abs(axis1) + abs(axis2)) + vec2(width);
   vec2 coreLower = -extent, coreUpper = extent;
   lower = coreLower;
   upper = coreUpper;
