@@ -72,6 +72,7 @@ Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Latti
 // primitive then meets a handful of cells, and the whole coarse CSR stays in cache, where the fine
 // one (megabytes of mostly empty cells) would be read from memory for every primitive.
 constexpr std::uint32_t kCoarsening = 4;
+constexpr std::size_t kStampedGather = 256;  // references gathered, past which repeats are stamped out
 
 Lattice coarseLattice(const Lattice& fine) {
   Lattice coarse = fine;
@@ -150,15 +151,43 @@ Status buildCsr(std::uint64_t cellCount, const std::vector<std::uint32_t>& itemS
   return {};
 }
 
+// The references of the cells meeting any of the boxes, each once, ascending. Large gathers (a wide
+// footprint's boundary lists a groove in many cells) drop repeats with per-thread stamps before the
+// sort, so the sort sees each reference once.
 void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start, const std::vector<std::uint32_t>& refs,
-                Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) {
+                const GridBox* boxes, int boxCount, std::vector<std::uint32_t>& out) {
   out.clear();
-  if (grid.cellCount() == 0 || !(lower.u <= upper.u) || !(lower.v <= upper.v)) return;
+  if (grid.cellCount() == 0) return;
   thread_local std::vector<std::uint32_t> cells;  // per-thread, reused: a lookup allocates nothing
   cells.clear();
-  grid_detail::cellsOfBox(latticeOf(grid), lower, upper, cells);
-  for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
-  if (cells.size() < 2) return;  // one cell lists each reference once, in order
+  const grid_detail::Lattice lattice = latticeOf(grid);
+  for (int b = 0; b < boxCount; ++b) {
+    const GridBox& box = boxes[b];
+    if (!(box.lower.u <= box.upper.u) || !(box.lower.v <= box.upper.v)) continue;
+    grid_detail::cellsOfBox(lattice, box.lower, box.upper, cells);
+  }
+  // A cell listed by two boxes repeats its references: both paths below drop repeats.
+  std::size_t total = 0;
+  for (const std::uint32_t cell : cells) total += start[cell + 1] - start[cell];
+  if (cells.size() < 2 || total < kStampedGather) {
+    for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
+    if (cells.size() < 2) return;  // one cell lists each reference once, in order
+  } else {
+    thread_local std::vector<std::uint32_t> stamp;  // the gather that last saw each reference
+    thread_local std::uint32_t gather = 0;
+    if (++gather == 0) {  // wrapped: forget every stamp
+      std::fill(stamp.begin(), stamp.end(), 0);
+      gather = 1;
+    }
+    for (const std::uint32_t cell : cells)
+      for (std::uint32_t k = start[cell]; k < start[cell + 1]; ++k) {
+        const std::uint32_t r = refs[k];
+        if (r >= stamp.size()) stamp.resize(std::size_t(r) + 1, 0);
+        if (stamp[r] == gather) continue;
+        stamp[r] = gather;
+        out.push_back(r);
+      }
+  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
@@ -166,11 +195,17 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
 }  // namespace
 
 void GrooveGrid::primitivesInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const {
-  gatherRefs(*this, cellStart, primitiveRefs, lower, upper, out);
+  const GridBox box{lower, upper};
+  gatherRefs(*this, cellStart, primitiveRefs, &box, 1, out);
+}
+
+void GrooveGrid::primitivesInBoxes(const GridBox* boxes, int count, std::vector<std::uint32_t>& out) const {
+  gatherRefs(*this, cellStart, primitiveRefs, boxes, count, out);
 }
 
 void GrooveGrid::recordsInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const {
-  gatherRefs(*this, recordStart, recordRefs, lower, upper, out);
+  const GridBox box{lower, upper};
+  gatherRefs(*this, recordStart, recordRefs, &box, 1, out);
 }
 
 GridStats gridStats(const GrooveGrid& grid) {

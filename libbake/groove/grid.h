@@ -40,6 +40,10 @@ struct PrimitiveJoints {
 };
 PrimitiveJoints jointsOf(const GrooveScene& scene, std::size_t primitive);
 
+struct GridBox {
+  Vec2 lower, upper;
+};
+
 struct GrooveGrid {
   Vec2 origin;                       // lower corner of the domain
   Vec2 cellSize;                     // per axis (the domain is an integer number of cells)
@@ -56,6 +60,8 @@ struct GrooveGrid {
   // the scene repeats), each once, ascending.
   void primitivesInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const;
   void recordsInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const;
+  // The primitives of the cells that meet any of the boxes, each once, ascending.
+  void primitivesInBoxes(const GridBox* boxes, int count, std::vector<std::uint32_t>& out) const;
 };
 
 struct GridStats {

@@ -13,6 +13,7 @@
 // cells it meets, so a long diagonal line lists only the cells along it, not its bounding box.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "groove/grid_stages.h"
 
@@ -158,6 +159,10 @@ void addAllCells(const Lattice& lattice, std::vector<std::uint32_t>& cells) {
 }
 
 void sortUnique(std::vector<std::uint32_t>& cells, std::size_t from) {
+  // Rows come in order and each row's run ascends, so outside a wrapping domain the list is usually
+  // sorted and unique already.
+  const auto first = cells.begin() + std::ptrdiff_t(from);
+  if (std::adjacent_find(first, cells.end(), std::greater_equal<std::uint32_t>()) == cells.end()) return;
   std::sort(cells.begin() + std::ptrdiff_t(from), cells.end());
   cells.erase(std::unique(cells.begin() + std::ptrdiff_t(from), cells.end()), cells.end());
 }

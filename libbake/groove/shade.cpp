@@ -125,16 +125,13 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
     grid.primitivesInBox(box.lower, box.upper, out);
     return;
   }
-  thread_local std::vector<std::uint32_t> edge;
-  out.clear();
   const Vec2 corners[4] = {box.lower, {box.upper.u, box.lower.v}, box.upper, {box.lower.u, box.upper.v}};
+  GridBox edges[4];
   for (int k = 0; k < 4; ++k) {
     const Vec2 a = corners[k], b = corners[(k + 1) % 4];
-    grid.primitivesInBox({std::min(a.u, b.u), std::min(a.v, b.v)}, {std::max(a.u, b.u), std::max(a.v, b.v)}, edge);
-    out.insert(out.end(), edge.begin(), edge.end());
+    edges[k] = {{std::min(a.u, b.u), std::min(a.v, b.v)}, {std::max(a.u, b.u), std::max(a.v, b.v)}};
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  grid.primitivesInBoxes(edges, 4, out);
 }
 
 }  // namespace

@@ -395,6 +395,40 @@ TEST(GrooveGrid, BoxQueriesAreAscendingAndDeduplicated) {
   EXPECT_TRUE(std::is_sorted(found.begin(), found.end()));
 }
 
+// Many boxes at once give the union of what each box gives, ascending and once each, both below and
+// above the size past which repeats are stamped out before sorting (600 long parallel lines, each
+// listed in every cell it crosses).
+TEST(GrooveGrid, SeveralBoxesGiveTheUnionOnceEachAscending) {
+  json lines = json::array();
+  for (int i = 0; i < 600; ++i) {
+    const double v = 0.05 + 0.9 * i / 599.0;
+    lines.push_back(line(0.02, v, 0.98, v + 0.01 * (i % 3)));
+  }
+  const GrooveScene scene = parseOk(sceneWith(lines, "none", 0.0005));
+  const GrooveGrid grid = buildGridOk(scene);
+  const std::vector<GridBox> boxSets[2] = {{{{0.1, 0.1}, {0.12, 0.2}}, {{0.11, 0.15}, {0.3, 0.16}}},
+                                           {{{0.05, 0.0}, {0.06, 1.0}}, {{0.9, 0.0}, {0.95, 1.0}}, {{0.0, 0.5}, {1.0, 0.52}}}};
+  for (const std::vector<GridBox>& boxes : boxSets) {
+    std::vector<std::uint32_t> expected, one, found;
+    for (const GridBox& b : boxes) {
+      grid.primitivesInBox(b.lower, b.upper, one);
+      expected.insert(expected.end(), one.begin(), one.end());
+    }
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    grid.primitivesInBoxes(boxes.data(), int(boxes.size()), found);
+    EXPECT_EQ(found, expected);
+    EXPECT_FALSE(found.empty());
+  }
+  // The tall boxes cross every line: all 600 (the stamped path), and again (the stamps of the
+  // previous gather must not hide anything).
+  std::vector<std::uint32_t> all;
+  grid.primitivesInBoxes(boxSets[1].data(), 2, all);
+  EXPECT_EQ(all.size(), 600u);
+  grid.primitivesInBoxes(boxSets[1].data(), 2, all);
+  EXPECT_EQ(all.size(), 600u);
+}
+
 TEST(GrooveGrid, StatsCountReferencesAndRecords) {
   const GrooveScene scene = parseOk(sceneWith({line(0.2, 0.5, 0.8, 0.5), line(0.4, 0.2, 0.4, 0.8)}));
   const GrooveGrid grid = buildGridOk(scene);
