@@ -138,10 +138,11 @@ bool inFrontOfPlaneOf(const Projected& me, const Projected& other, double margin
 }
 
 // The visible part of piece i inside the footprint: its projection minus the pieces in front.
-void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ConvexPolygon& footprint,
+void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i,
+                 const std::array<HalfPlane, kPolygonMaxVertices>& footprintEdges, int footprintEdgeCount,
                  FragmentSet& visible) {
   const Projected& me = all[i];
-  visible.add(intersect(me.screen, footprint));
+  visible.add(intersect(me.screen, footprintEdges, footprintEdgeCount));
   Box2 bounds = visible.bounds();
   std::array<HalfPlane, kPolygonMaxVertices> meEdges;  // me.screen clips every overlap below
   const int meEdgeCount = edgeHalfPlanes(me.screen, meEdges);  // kept up to date: it only changes with a subtraction
@@ -352,6 +353,8 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
   Rgb sum{0, 0, 0};
   thread_local FragmentSet visible;
   RadianceMemo radianceOf(job.scene.materials, f.toViewer, job.lighting);
+  std::array<HalfPlane, kPolygonMaxVertices> fpEdges;  // every visible part starts as a piece clipped by these
+  const int fpEdgeCount = edgeHalfPlanes(fp, fpEdges);
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
@@ -360,7 +363,7 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     visible.count = 0;
     visible.minArea = f.minArea;
     visible.overflows = 0;
-    visiblePart(f, all, i, fp, visible);
+    visiblePart(f, all, i, fpEdges, fpEdgeCount, visible);
     if (visible.count == 0) continue;
     ++stats.visiblePieces;
     litPart(f, all, i, visible);
