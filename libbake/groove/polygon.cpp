@@ -198,6 +198,11 @@ int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
 int subtract(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVertices>& edges, int count,
              double minArea, std::array<ConvexPolygon, kPolygonMaxVertices>& pieces, ConvexPolygon& rest) {
   int n = 0;
+  if (count == 0) {  // an empty hole removes nothing: p is one piece, nothing of it is inside
+    if (!p.empty() && area(p) > minArea) pieces[n++] = p;
+    rest.count = 0;
+    return n;
+  }
   rest = p;
   for (int i = 0; i < count && !rest.empty(); ++i) {
     const HalfPlane& inside = edges[i];

@@ -76,7 +76,7 @@ ConvexPolygon intersect(const ConvexPolygon& p, const std::array<HalfPlane, kPol
 bool contains(const ConvexPolygon& p, Vec2 x);  // p counter-clockwise; boundary included
 
 // p minus hole (hole counter-clockwise) as at most hole.count disjoint convex pieces, written to
-// `pieces`; returns their number. Pieces of area <= minArea are left out. Here and in intersect(),
+// `pieces`; returns their number (an empty hole leaves p whole: one piece). Pieces of area <= minArea are left out. Here and in intersect(),
 // edges shorter than 1e-12 of the polygon's size are ignored (their direction is rounding noise).
 int subtract(const ConvexPolygon& p, const ConvexPolygon& hole, double minArea,
              std::array<ConvexPolygon, kPolygonMaxVertices>& pieces);

@@ -163,11 +163,11 @@ TEST(GrooveAreaStiff, FootprintHundredGrooveWidthsOverAGrid) {
 
 TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
   // A light 1° above the horizon, along the grid's diagonal: whatever may shadow the footprint lies up
-  // to 57 groove depths away, across both families of grooves, so even an eighth of the footprint
-  // sees dozens of crossings of a dense grid.
+  // to 57 groove depths away towards the light, across both families of grooves, so even an eighth of
+  // the footprint sees dozens of crossings of a dense grid (grooves 0.02 wide, 0.025 apart).
   std::string grooves;
-  for (int i = 0; i < 13; ++i) {
-    const double x = 1.7 + 0.05 * i;
+  for (int i = 0; i < 25; ++i) {
+    const double x = 1.7 + 0.025 * i;
     grooves += (i ? ", " : "") + line("v", "red", {x, 1}, {x, 3}) + ", " + line("v", "red", {1, x}, {3, x});
   }
   const GrooveScene s = sceneWith(grooves, 4);

@@ -122,6 +122,14 @@ TEST(GroovePolygon, DegenerateInputs) {
   set.add(rectangle(0, 0, 1, 1));
   set.subtract(flat);
   EXPECT_NEAR(set.weightedArea(), 1, 1e-15);
+  // p minus an empty hole is p, whole: one piece and nothing inside (the surface build subtracts
+  // the part of a cell where one layer wins, which can be empty).
+  std::array<ConvexPolygon, kPolygonMaxVertices> pieces;
+  ConvexPolygon inside;
+  const int n = subtract(rectangle(0, 0, 1, 1), ConvexPolygon{}, 0, pieces, inside);
+  ASSERT_EQ(n, 1);
+  EXPECT_NEAR(area(pieces[0]), 1, 1e-15);
+  EXPECT_TRUE(inside.empty());
   // A point outside, on the edge, inside.
   const ConvexPolygon square = rectangle(0, 0, 1, 1);
   EXPECT_FALSE(contains(square, {1.5, 0.5}));
