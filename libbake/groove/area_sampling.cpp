@@ -48,7 +48,7 @@ struct Projected {
   double facingLight = 0;   // N . L
   ConvexPolygon screen;
   Box2 screenBox;
-  ConvexPolygon lightView;
+  ConvexPolygon lightView;  // point samples only
   Box2 lightBox;
 };
 
@@ -74,19 +74,23 @@ void perpendicularAxes(const Vec3& d, Vec3& a, Vec3& b) {
   b = {d.v * a.w - d.w * a.v, d.w * a.u - d.u * a.w, d.u * a.v - d.v * a.u};
 }
 
-Projected project(const Frame& f, const SurfacePiece& piece) {
+// `withLightView`: the point sample tests containment in the light's view; area samples need only its
+// box.
+Projected project(const Frame& f, const SurfacePiece& piece, bool withLightView) {
   Projected p;
   p.piece = &piece;
   p.facingViewer = dot(piece.normal, f.toViewer);
   p.facingLight = dot(piece.normal, f.toLight);
   for (int i = 0; i < piece.count; ++i) {
     p.screen.add(toScreen(f, piece.vertex[i]));
-    p.lightView.add(toLightPlane(f, piece.vertex[i]));
+    const Vec2 l = toLightPlane(f, piece.vertex[i]);
+    p.lightBox.lower = {std::min(p.lightBox.lower.u, l.u), std::min(p.lightBox.lower.v, l.v)};
+    p.lightBox.upper = {std::max(p.lightBox.upper.u, l.u), std::max(p.lightBox.upper.v, l.v)};
+    if (withLightView) p.lightView.add(l);
   }
   makeCounterClockwise(p.screen);
-  makeCounterClockwise(p.lightView);
+  if (withLightView) makeCounterClockwise(p.lightView);
   p.screenBox = boundsOf(p.screen);
-  p.lightBox = boundsOf(p.lightView);
   return p;
 }
 
@@ -348,7 +352,7 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     return sum;
   }
   all.clear();
-  for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
+  for (const SurfacePiece& p : pieces) all.push_back(project(f, p, false));
 
   Rgb sum{0, 0, 0};
   thread_local FragmentSet visible;
@@ -415,7 +419,7 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
   if (!buildPieces(job, point, f.minArea, false, pieces, stats)) ++stats.incomplete;
   std::vector<Projected> all;
   all.reserve(pieces.size());
-  for (const SurfacePiece& p : pieces) all.push_back(project(f, p));
+  for (const SurfacePiece& p : pieces) all.push_back(project(f, p, true));
   return pointSample(scene, f, all, lighting);
 }
 

@@ -70,6 +70,13 @@ ConvexPolygon clipToGroove(ConvexPolygon p, const StraightGroove& g, double b0, 
   return p;
 }
 
+// True unless the whole polygon lies inside h (clipping by h leaves it as it is).
+bool cutsPolygon(const HalfPlane& h, const ConvexPolygon& p) {
+  for (int i = 0; i < p.count; ++i)
+    if (h.distance(p.vertex[i]) < 0) return true;
+  return false;
+}
+
 enum class Side { inside, outside, across };
 
 // Where polygon p lies with respect to a convex polygon given by its edges' half-planes.
@@ -147,8 +154,19 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
     const ConvexPolygon band = clipToGroove(region, g, g.profile.front().u, g.profile.back().u);
     if (band.empty() || area(band) <= minArea) continue;
     const Box2 bandBox = boundsOf(band);
+    // The band as the groove's own lines (joints, then the strip's two sides), those that cut the
+    // region: inside the region (every cell is) they bound the same polygon as the band's edges, with
+    // the exact lines the strips below are clipped by, and no edge along the region's border to peel
+    // off for nothing.
+    const HalfPlane lines[4] = {g.joint[0], g.joint[1], g.atLeast(g.profile.front().u), g.atMost(g.profile.back().u)};
     std::array<HalfPlane, kPolygonMaxVertices> bandEdges;
-    const int bandEdgeCount = edgeHalfPlanes(band, bandEdges);
+    int bandEdgeCount = 0;
+    bool jointCuts[2] = {false, false};
+    for (int k = 0; k < 4; ++k) {
+      if (!cutsPolygon(lines[k], region)) continue;
+      bandEdges[bandEdgeCount++] = lines[k];
+      if (k < 2) jointCuts[k] = true;
+    }
     stripsOf(g, cuts, strips);
     next.clear();
     for (const Cell& cell : cells) {
@@ -156,8 +174,8 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
         keepCell(next, cell, stats);
         continue;
       }
-      // A cell inside every edge of the band has nothing outside it (subtract would find no piece),
-      // one outside some edge misses it: both without clipping.
+      // A cell inside every line of the band has nothing outside it (subtract would find no piece),
+      // one outside some line misses it: both without clipping.
       const Side side = sideOf(cell.polygon, bandEdges, bandEdgeCount);
       int n = 0;
       if (side == Side::across) {
@@ -172,8 +190,8 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
       // The joint lines once per cell, then each strip's two lines (the same clips as clipToGroove);
       // strips that miss the cell's range across the groove are skipped.
       ConvexPolygon jointed = cell.polygon;
-      clipInPlace(jointed, g.joint[0]);
-      clipInPlace(jointed, g.joint[1]);
+      if (jointCuts[0]) clipInPlace(jointed, g.joint[0]);
+      if (jointCuts[1]) clipInPlace(jointed, g.joint[1]);
       if (jointed.empty()) continue;
       double bLow = 1e300, bHigh = -1e300;
       for (int i = 0; i < jointed.count; ++i) {
