@@ -21,7 +21,7 @@ rows(c) = sprintf("< awk -F, 'NR > 1 && $1 == \"%s\"' '%s/groove.csv'", c, dir)
 
 set title 'error against time per frame (filled: method; open: reference noise floor)'
 set logscale xy
-set xlabel 'method seconds per frame (median)'
+set xlabel 'method seconds per frame (fastest of the repeats)'
 set ylabel 'RMSE against the reference'
 set key outside bottom center horizontal maxrows 3 font ',8'
 plot for [k = 1:words(cases)] rows(word(cases, k)) using 12:($17 > 0 ? $17 : 1e-9) with points pt 7 lc k title word(cases, k), \
