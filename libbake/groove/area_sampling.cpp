@@ -251,7 +251,7 @@ Extent extentOf(const std::vector<StraightGroove>& grooves) {
 // near or below the horizon is followed up to a bounded distance.
 constexpr double kMaxLightSlope = format::grooves::kMaxReach;  // as far as the query box (shade.cpp)
 double reach(const Vec3& d, double heightRange) {
-  const double horizontal = std::hypot(d.u, d.v);
+  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);  // d is a unit direction: no overflow
   if (horizontal == 0) return 0;
   const double slope = d.w > horizontal / kMaxLightSlope ? horizontal / d.w : kMaxLightSlope;
   return heightRange * slope;
@@ -268,7 +268,7 @@ struct Job {
 
 // The horizontal shift per unit of height along d (d / d_w, bounded like reach()).
 Vec2 shiftPerHeight(const Vec3& d) {
-  const double horizontal = std::hypot(d.u, d.v);
+  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);  // d is a unit direction: no overflow
   if (horizontal == 0) return {0, 0};
   const double k = reach(d, 1) / horizontal;
   return {k * d.u, k * d.v};

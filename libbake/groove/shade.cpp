@@ -36,7 +36,7 @@ struct Box {
 
 // Shifts the box by the projections of a ridge (towards the direction) and a cavity (away from it).
 void enlargeAlong(Box& box, const Box& core, const Vec3& d, double hmax, double dmax) {
-  const double horizontal = std::hypot(d.u, d.v);
+  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);  // d is a unit direction: no overflow
   if (horizontal == 0) return;
   const double reach = d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
   const Vec2 unit{d.u / horizontal, d.v / horizontal};
