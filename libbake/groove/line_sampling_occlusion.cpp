@@ -93,6 +93,8 @@ SectionPoint movedAlong(const SectionPoint& p, const SectionDirection& d) {
 }
 
 double acrossCoordinate(const CrossSection& section, const SectionPoint& point, const SectionDirection& d) {
+  // An unperturbed point of a straight section stays where it is (the common case, first).
+  if (point.rateB == 0 && point.rateH == 0 && !std::isfinite(section.centre)) return point.b * d.w - point.h * d.b;
   const SectionPoint p = movedAlong(point, d);
   double b = p.b;
   if (std::isfinite(section.centre) && p.h != 0) {

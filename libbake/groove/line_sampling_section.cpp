@@ -88,6 +88,32 @@ constexpr std::size_t kWall = static_cast<std::size_t>(-1);  // resolved after t
 // Appends H over [x0, x1] for the given pieces, split at their crossings.
 void appendInterval(CrossSection& out, const std::vector<Piece>& pieces, double x0, double x1, std::size_t base,
                     std::vector<double>& splits) {
+  // The common cases without the general split list: no groove (flat base), or one, which only
+  // splits where it crosses h = 0. The same points and materials as below.
+  if (pieces.empty()) {
+    appendPoint(out, x0, 0, kWall);
+    appendPoint(out, x1, 0, base);
+    return;
+  }
+  if (pieces.size() == 1) {
+    const Piece& piece = pieces.front();
+    double ts[3] = {0, 1, 1};
+    int count = 2;
+    const double d0 = piece.left, d1 = piece.right;
+    if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
+      const double t = d0 / (d0 - d1);
+      if (t > 0 && t < 1) ts[1] = t, count = 3;
+    }
+    for (int k = 0; k + 1 < count; ++k) {
+      const double ta = ts[k], tb = ts[k + 1];
+      const double xa = k == 0 ? x0 : x0 + ta * (x1 - x0);
+      const double xb = k + 2 == count ? x1 : x0 + tb * (x1 - x0);
+      const std::size_t material = std::abs(piece.at(0.5 * (ta + tb))) > 0 ? piece.material : base;
+      appendPoint(out, xa, surfaceAt(pieces, ta), kWall);
+      appendPoint(out, xb, surfaceAt(pieces, tb), material);
+    }
+    return;
+  }
   splits.clear();
   splits.push_back(0);
   splits.push_back(1);
