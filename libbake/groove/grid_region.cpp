@@ -135,9 +135,17 @@ void addRun(const Lattice& lattice, std::int64_t row, std::int64_t first, std::i
     first = std::max<std::int64_t>(first, 0);
     last = std::min<std::int64_t>(last, std::int64_t(lattice.cells[0]) - 1);
   }
+  if (first > last) return;
+  // The row and the first column wrapped (or checked) once; the run then steps along the row.
   std::uint32_t cell = 0;
-  for (std::int64_t i = first; i <= last; ++i)
-    if (lattice.storedCell(i, row, cell)) cells.push_back(cell);
+  if (!lattice.storedCell(first, row, cell)) return;
+  const std::int64_t nx = lattice.cells[0];
+  std::int64_t column = cell % nx;
+  const std::uint32_t rowStart = cell - std::uint32_t(column);
+  for (std::int64_t i = first; i <= last; ++i) {
+    cells.push_back(rowStart + std::uint32_t(column));
+    if (++column == nx) column = 0;  // only a wrapping run reaches the row's end before `last`
+  }
 }
 
 // The rows to visit; false when a wrapping region spans the domain several times over (then every
