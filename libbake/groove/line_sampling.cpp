@@ -150,10 +150,11 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
       return std::abs(density.cdfAcross(p0 + tb * (p1 - p0), r0 + tb * (r1 - r0)) -
                       density.cdfAcross(p0 + ta * (p1 - p0), r0 + ta * (r1 - r0)));
     };
-    out.visibleShare += shareBetween(v.t0, v.t1);
+    const double visibleShare = shareBetween(v.t0, v.t1);
+    out.visibleShare += visibleShare;
     const double t0 = std::max(v.t0, lit[i].t0), t1 = std::min(v.t1, lit[i].t1);
     if (!(t1 > t0)) continue;
-    const double r = shareBetween(t0, t1);
+    const double r = t0 == v.t0 && t1 == v.t1 ? visibleShare : shareBetween(t0, t1);  // wholly lit: the same share
     const double middle = pts[i].h + 0.5 * (t0 + t1) * (pts[i + 1].h - pts[i].h);
     const Vec3 normal = facetNormalSeen(section, i, e, middle);
     const Rgb f = radiance(section.material[i], normal);

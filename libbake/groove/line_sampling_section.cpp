@@ -165,7 +165,6 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
   thread_local std::vector<double> breaks;
   placed.clear();
   profiles.clear();
-  breaks.assign({lo, hi});
   for (const SectionGroove& g : grooves) {
     const std::size_t n = g.groove->profile->points.size();
     PlacedProfile p{&g, placed.size(), n};
@@ -173,16 +172,24 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
       const std::size_t j = g.reversed ? n - 1 - k : k;
       const double b = g.reversed ? g.centre - g.groove->profileB(j) : g.centre + g.groove->profileB(j);
       placed.push_back({b, g.groove->profileH(j)});
-      breaks.push_back(b);
     }
     profiles.push_back(p);
   }
-  std::sort(breaks.begin(), breaks.end());
-  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-  // Sweep: grooves enter in order of their first b.
-  std::sort(profiles.begin(), profiles.end(), [&](const PlacedProfile& a, const PlacedProfile& b) {
+  // Sweep: grooves enter in order of their first b. Grooves found in index order often lie in order
+  // across the section (a set of parallel lines), forwards or backwards: then no sort is needed, and
+  // the breaks, gathered profile after profile, come out sorted too when the bands do not overlap.
+  const auto firstB = [&](const PlacedProfile& a, const PlacedProfile& b) {
     return placed[a.first].b < placed[b.first].b;
-  });
+  };
+  if (std::is_sorted(profiles.rbegin(), profiles.rend(), firstB)) std::reverse(profiles.begin(), profiles.end());
+  if (!std::is_sorted(profiles.begin(), profiles.end(), firstB)) std::sort(profiles.begin(), profiles.end(), firstB);
+  breaks.clear();
+  for (const PlacedProfile& p : profiles)
+    for (std::size_t k = 0; k < p.count; ++k) breaks.push_back(placed[p.first + k].b);
+  if (!std::is_sorted(breaks.begin(), breaks.end())) std::sort(breaks.begin(), breaks.end());
+  breaks.insert(std::lower_bound(breaks.begin(), breaks.end(), lo), lo);
+  breaks.insert(std::upper_bound(breaks.begin(), breaks.end(), hi), hi);
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
 
   thread_local std::vector<std::size_t> active;  // indices into profiles
   thread_local std::vector<std::size_t> cursor;  // the segment of each profile under the interval

@@ -77,8 +77,8 @@ class RadianceMemo {
   };
   static constexpr int kEntries = 4;
   const std::vector<Material>& materials_;
-  const Vec3& toViewer_;
-  const Lighting& lighting_;
+  Vec3 toViewer_;
+  Lighting lighting_;
   std::array<Entry, kEntries> entries_;
   int count_ = 0, next_ = 0;
 };

@@ -54,6 +54,30 @@ void expectRgbNear(const Rgb& a, const Rgb& b, double tolerance) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], tolerance) << "channel " << c;
 }
 
+// The radiance memo of a pixel gives directRadiance's values bit for bit, for pairs it remembers,
+// pairs it has forgotten (more than its few entries) and the same normal under two materials.
+TEST(SeedShader, RadianceMemoGivesDirectRadianceExactly) {
+  std::vector<Material> materials(2);
+  for (int c = 0; c < 3; ++c) {
+    materials[0].albedo[c] = 0.5 - 0.1 * c;
+    materials[1].albedo[c] = 0.2 + 0.1 * c;
+    materials[1].specular[c] = 0.6;
+  }
+  materials[1].shininess = 37;
+  Lighting lighting;
+  lighting.toLight = {0.3, -0.2, 0.932737905};
+  const Vec3 toViewer{-0.4, 0.1, 0.910439453};
+  RadianceMemo memo(materials, toViewer, lighting);
+  const Vec3 normals[] = {{0, 0, 1}, {0.6, 0, 0.8}, {-0.6, 0, 0.8}, {0, 0.6, 0.8}, {0, -0.6, 0.8}, {0.28, 0.96, 0}};
+  for (int round = 0; round < 3; ++round)
+    for (std::size_t m = 0; m < materials.size(); ++m)
+      for (const Vec3& n : normals) {
+        const Rgb expected = directRadiance(materials[m], n, toViewer, lighting);
+        const Rgb got = memo(m, n);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(got[c], expected[c]) << round << " " << m << " " << c;
+      }
+}
+
 TEST(SeedShader, NoGrooveNearIsTheFlatBase) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}));
   const GrooveGrid grid = buildGridOk(s);
