@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <sys/stat.h>
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -40,11 +41,35 @@ std::uint64_t nextRandom() {
   return z ^ (z >> 31);
 }
 
+// A signal runs the handler on whichever thread the kernel picks, while the others go on: one may be
+// creating a temporary at that very moment (after its name was checked, before the file exists), and
+// would create it after the handler has unlinked everything. So creations announce themselves, the
+// handler first closes the door (`dying`: no creation starts after it), waits for the creations in
+// flight to finish (bounded: the creating thread may be the one the handler interrupted), and only
+// then unlinks. Both flags are sequentially consistent: a creation sees `dying`, or the handler sees
+// it in `creating`.
+std::atomic<bool> dying{false};
+std::atomic<int> creating{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+              "the signal handler may only use lock-free atomics");
+
 extern "C" void removeTemporariesAndDie(int signal) {
+  dying.store(true);
+  for (int wait = 0; wait < 200 && creating.load() > 0; ++wait) {
+    const timespec millisecond{0, 1000000};
+    ::nanosleep(&millisecond, nullptr);
+  }
   for (Slot& slot : slots) {
     if (slot.state.load(std::memory_order_acquire) == kLive) ::unlink(slot.path);
   }
-  // SA_RESETHAND restored the default action: re-raise so the process ends as the signal says.
+  // Only now the default action, then the signal again, so the process ends as the signal says. The
+  // handler stayed installed until here: a second signal (timeout(1) signals the process and then its
+  // whole group) delivered to another thread meanwhile runs this handler too, instead of ending the
+  // process before the files are gone.
+  struct sigaction byDefault {};
+  byDefault.sa_handler = SIG_DFL;
+  sigemptyset(&byDefault.sa_mask);
+  ::sigaction(signal, &byDefault, nullptr);
   ::raise(signal);
 }
 
@@ -57,7 +82,7 @@ void installHandlers() {
     struct sigaction action {};
     action.sa_handler = removeTemporariesAndDie;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;
+    action.sa_flags = 0;
     ::sigaction(signal, &action, nullptr);
   }
 }
@@ -91,8 +116,14 @@ int createRegisteredTemporary(std::string& pattern, int suffixLength) {
     for (std::size_t i = 0; i < 6; ++i, bits /= 62) pattern[letters + i] = kNameLetters[bits % 62];
     struct stat existing {};
     if (::lstat(pattern.c_str(), &existing) == 0) continue;
+    creating.fetch_add(1);
+    if (dying.load()) {  // a signal is removing the temporaries: create nothing more, wait for the end
+      creating.fetch_sub(1);
+      for (;;) ::pause();
+    }
     registerTemporary(pattern);
     const int fd = ::open(pattern.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    creating.fetch_sub(1);
     if (fd >= 0) return fd;
     const int err = errno;
     unregisterTemporary(pattern);

@@ -2,7 +2,10 @@
 // exist, so that a bake stopped by a catchable signal removes them before it dies: Ctrl-C (SIGINT), a
 // build system cancelling a job (SIGTERM, SIGHUP), a pipe closed under it (SIGPIPE), or a file-size
 // limit hit in the middle of a write (SIGXFSZ). The handler unlinks the registered files and then
-// lets the signal take its default course, so the exit status still says which signal it was.
+// lets the signal take its default course, so the exit status still says which signal it was. It
+// stays installed until the files are gone (a second signal on another thread runs it too rather than
+// ending the process first) and waits for a temporary being created on another thread; writers use
+// the open descriptor, never the name, so nothing re-creates a removed temporary.
 // Targets are only ever replaced by rename, so an interrupted bake leaves every earlier output
 // byte-identical; SIGKILL cannot be caught and may leave a hidden `.NAME.tmp.XXXXXX` beside the
 // target, never a partial target.

@@ -1,7 +1,9 @@
 // Image input and output through OpenImageIO (io/image.h). Reading converts whatever OIIO can read to
 // interleaved floats (8/16-bit values k become exactly k/255, k/65535); writing picks the format from the
 // extension and stays atomic: OIIO writes a temporary file beside the target (with the same extension, since
-// OIIO chooses its writer by name), which is flushed and renamed over the target only when complete.
+// OIIO chooses its writer by name), which is flushed and renamed over the target only when complete. OIIO
+// writes through a proxy on the temporary's open descriptor, never by its name: a signal that removes the
+// temporary (core/temporaries.h) while another thread writes cannot see it created again.
 //
 // Two OIIO defaults would break exact round trips of data images (normal maps, masks) and are turned
 // off: PNG alpha is kept unassociated (OIIO would premultiply on read and divide on write), and EXR
@@ -25,6 +27,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -135,6 +138,7 @@ Status checkFormatAllows(const std::string& extension, PixelType type, int chann
 class TemporaryFile {
  public:
   ~TemporaryFile() {
+    if (file_) std::fclose(file_);
     if (path_.empty()) return;
     ::unlink(path_.c_str());
     unregisterTemporary(path_);
@@ -148,25 +152,34 @@ class TemporaryFile {
       return ioError("cannot create a file in " + dir.string() + ": " + std::strerror(errno),
                      {target.string(), ""});
     }
-    ::close(fd);
     path_ = pattern;
+    file_ = ::fdopen(fd, "w+b");
+    if (!file_) {
+      const int err = errno;
+      ::close(fd);
+      return ioError(std::string("cannot open the temporary image file: ") + std::strerror(err), {target.string(), ""});
+    }
     return {};
   }
 
-  // mkstemps makes the file private; give it the permissions a plain new file would get.
+  // Flushed to disk and closed; mkstemps makes the file private, so it gets the permissions a plain
+  // new file would get.
   Status finish(const fs::path& target) {
     const mode_t mask = ::umask(0);
     ::umask(mask);
-    const int fd = ::open(path_.c_str(), O_RDONLY);
-    const bool ok = fd >= 0 && ::fchmod(fd, 0666 & ~mask) == 0 && ::fsync(fd) == 0;
+    const int fd = ::fileno(file_);
+    const bool ok = std::fflush(file_) == 0 && ::fchmod(fd, 0666 & ~mask) == 0 && ::fsync(fd) == 0;
     const int err = errno;
-    if (fd >= 0) ::close(fd);
-    if (!ok) {
-      return ioError(std::string("cannot flush the written image: ") + std::strerror(err),
+    const bool closed = std::fclose(file_) == 0;
+    file_ = nullptr;
+    if (!ok || !closed) {
+      return ioError(std::string("cannot flush the written image: ") + std::strerror(ok ? errno : err),
                      {target.string(), ""});
     }
     return {};
   }
+
+  FILE* file() const { return file_; }
 
   Status renameOver(const fs::path& target) {
     std::error_code ec;
@@ -181,6 +194,7 @@ class TemporaryFile {
 
  private:
   fs::path path_;
+  FILE* file_ = nullptr;
 };
 
 OIIO::ImageSpec outputSpec(const Image& image, PixelType type, const std::string& extension) {
@@ -190,15 +204,20 @@ OIIO::ImageSpec outputSpec(const Image& image, PixelType type, const std::string
   return spec;
 }
 
-Status writeWithOiio(const fs::path& file, const Image& image, PixelType type, const std::string& extension,
+// Writes the image into `file` (FILE* on the temporary's descriptor; the name only picks the writer).
+Status writeWithOiio(const fs::path& name, FILE* file, const Image& image, PixelType type, const std::string& extension,
                      const fs::path& target) {
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(file.string());
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name.string());
   if (!out) {
     return unsupported("no image writer for '" + extension + "': " + globalOiioError(),
                        {target.string(), ""});
   }
+  OIIO::Filesystem::IOFile proxy(file, OIIO::Filesystem::IOProxy::Write);
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy)) {
+    return unsupported("the image writer for '" + extension + "' cannot write to an open file", {target.string(), ""});
+  }
   const OIIO::ImageSpec spec = outputSpec(image, type, extension);
-  if (!out->open(file.string(), spec)) {
+  if (!out->open(name.string(), spec)) {
     return ioError("cannot write the image: " + oiioErrorOf(*out), {target.string(), ""});
   }
   if (!out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())) {
@@ -335,7 +354,7 @@ Status writeImage(const fs::path& path, const Image& image, PixelType type) {
 
   TemporaryFile temporary;
   BAKE_RETURN_IF_ERROR(temporary.create(path, path.extension().string()));
-  BAKE_RETURN_IF_ERROR(writeWithOiio(temporary.path(), image, type, extension, path));
+  BAKE_RETURN_IF_ERROR(writeWithOiio(temporary.path(), temporary.file(), image, type, extension, path));
   BAKE_RETURN_IF_ERROR(temporary.finish(path));
   return temporary.renameOver(path);
 }
