@@ -204,7 +204,7 @@ OIIO::ImageSpec outputSpec(const Image& image, PixelType type, const std::string
   return spec;
 }
 
-// Writes the image into `file` (FILE* on the temporary's descriptor; the name only picks the writer).
+// Writes the image into `file` (FILE* on the temporary's descriptor; the name picks the writer).
 Status writeWithOiio(const fs::path& name, FILE* file, const Image& image, PixelType type, const std::string& extension,
                      const fs::path& target) {
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name.string());
@@ -212,9 +212,10 @@ Status writeWithOiio(const fs::path& name, FILE* file, const Image& image, Pixel
     return unsupported("no image writer for '" + extension + "': " + globalOiioError(),
                        {target.string(), ""});
   }
+  // The few writers without proxy support (SGI, ICO, HEIF in OIIO 2.4) write the same file by name.
   OIIO::Filesystem::IOFile proxy(file, OIIO::Filesystem::IOProxy::Write);
-  if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy)) {
-    return unsupported("the image writer for '" + extension + "' cannot write to an open file", {target.string(), ""});
+  if (out->supports("ioproxy") && !out->set_ioproxy(&proxy)) {
+    return ioError("cannot write the image: " + oiioErrorOf(*out), {target.string(), ""});
   }
   const OIIO::ImageSpec spec = outputSpec(image, type, extension);
   if (!out->open(name.string(), spec)) {
