@@ -5,7 +5,7 @@
 // lets the signal take its default course, so the exit status still says which signal it was. It
 // stays installed until the files are gone (a second signal on another thread runs it too rather than
 // ending the process first) and waits for a temporary being created on another thread; writers use
-// the open descriptor, never the name, so nothing re-creates a removed temporary.
+// the open descriptor, not the name, so nothing re-creates a removed temporary.
 // Targets are only ever replaced by rename, so an interrupted bake leaves every earlier output
 // byte-identical; SIGKILL cannot be caught and may leave a hidden `.NAME.tmp.XXXXXX` beside the
 // target, never a partial target.

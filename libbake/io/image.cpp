@@ -2,8 +2,9 @@
 // interleaved floats (8/16-bit values k become exactly k/255, k/65535); writing picks the format from the
 // extension and stays atomic: OIIO writes a temporary file beside the target (with the same extension, since
 // OIIO chooses its writer by name), which is flushed and renamed over the target only when complete. OIIO
-// writes through a proxy on the temporary's open descriptor, never by its name: a signal that removes the
-// temporary (core/temporaries.h) while another thread writes cannot see it created again.
+// writes through a proxy on the temporary's open descriptor, not by its name (but for the few writers
+// without proxy support): a signal that removes the temporary (core/temporaries.h) while another thread
+// writes cannot see it created again.
 //
 // Two OIIO defaults would break exact round trips of data images (normal maps, masks) and are turned
 // off: PNG alpha is kept unassociated (OIIO would premultiply on read and divide on write), and EXR
