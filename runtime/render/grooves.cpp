@@ -25,6 +25,13 @@ constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2;
 constexpr GLuint kHeaderBinding = 0;
 // Primitives kept per footprint (the shader's fixed arrays; more under one footprint are dropped).
 constexpr std::size_t kMaxFound = 24;
+// The area sampling arena of shaders/grooves/area_polygon.glsl (packages with special cases only):
+// kAreaSlots flags, then kAreaSlots x kAreaSlotFloats floats (40 MiB) that the shader cuts into as
+// many slots as fit (one invocation's cells, pieces and polygons: about 32,800 floats with 24
+// primitives found and 8-point profiles, so about 320 slots). A pixel sampled by area while every
+// slot is taken is line sampled instead.
+constexpr GLuint kAreaScratchBinding = 10;
+constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -68,11 +75,15 @@ std::array<std::size_t, fmt::kArrayCount> viewIndices(const nlohmann::json& exte
 std::size_t alignUp(std::size_t x, std::size_t alignment) { return (x + alignment - 1) / alignment * alignment; }
 
 // The defines of the variant a package needs.
-std::vector<std::string> packageDefines(const groove::GroovePackage& p) {
+std::vector<std::string> packageDefines(const groove::GroovePackage& p, bool areaSampling) {
   std::vector<std::string> defines;
   const bool mirrors = std::any_of(p.materials.begin(), p.materials.end(), [](const fmt::Material& m) { return m.specular[3] > 0.5f; });
   if (mirrors) defines.push_back("HAS_MIRRORS");
   if (!p.records.empty()) defines.push_back("HAS_SPECIAL_CASES");
+  if (!p.records.empty() && areaSampling) {
+    defines.push_back("HAS_AREA_SAMPLING");
+    defines.push_back("AREA_SLOTS " + std::to_string(kAreaSlots));
+  }
   std::uint32_t longest = 3;
   for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
   defines.push_back("MAX_PROFILE_POINTS " + std::to_string(longest));
@@ -94,6 +105,18 @@ GroovesRenderer::~GroovesRenderer() {
     const GLuint buffers[] = {upload.storage, upload.header};
     glDeleteBuffers(2, buffers);
   }
+  if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
+}
+
+// The arena, zeroed (every slot free), made once for all packages with special cases.
+void GroovesRenderer::makeAreaScratch() {
+  if (areaScratch_ != 0) return;
+  const std::size_t bytes = kAreaSlots * sizeof(std::uint32_t) + kAreaSlots * kAreaSlotFloats * sizeof(float);
+  glCreateBuffers(1, &areaScratch_);
+  glNamedBufferStorage(areaScratch_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(areaScratch_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  bytes_ += bytes;
 }
 
 Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_t>& instances,
@@ -134,7 +157,8 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       glNamedBufferStorage(upload.header, sizeof header, &header, 0);
       bytes_ += bytes.size() + sizeof header;
       uploadOfPackage[key] = uploads_.size();
-      definesOfPackage[key] = packageDefines(decoded);
+      definesOfPackage[key] = packageDefines(decoded, options_.areaSampling);
+      if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
       uploads_.push_back(upload);
     }
 
@@ -173,9 +197,11 @@ void GroovesRenderer::draw(const FrameContext& frame) {
       glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(k), upload.storage, GLintptr(upload.offset[k]),
                         GLsizeiptr(upload.size[k]));
     glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
+    if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
     item.mesh.draw();
   }
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
+  if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
 }
 

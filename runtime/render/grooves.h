@@ -22,6 +22,9 @@ namespace bake::play {
 struct GroovesOptions {
   int maxBounces = 2;           // mirror reflections followed (seed §7); the rendering model's maxBounces
   bool shadingInputs = false;   // also write F, A1, A2, E, L to colour attachments 1-3 (tests)
+  // Special cases sampled by area (seed §6), as the CPU method does; off: line sampled like the rest
+  // (a shader variant that compiles in seconds instead of minutes on llvmpipe).
+  bool areaSampling = true;
 };
 
 // Loader checks of BAKE_grooves for `bakeplay validate`: every package whose material carries it
@@ -42,6 +45,8 @@ class GroovesRenderer : public TechniqueRenderer {
   std::size_t gpuBytes() const override;
 
  private:
+  void makeAreaScratch();
+  unsigned areaScratch_ = 0;  // the area sampling arena (special cases), shared by every package
   // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
   struct Upload {
     unsigned storage = 0, header = 0;

@@ -3,12 +3,14 @@
 // the base plane in domain units (F = TEXCOORD_0 x domain, A1 = dFdx(F), A2 = dFdy(F)); the view and
 // light directions in the surface's tangent frame (u, v, w), built from the uv derivatives of the
 // position (for the package's preview plane: the plane's own axes); then the seed's method exactly as
-// the CPU oracle libbake/groove/shade.cpp computes it (line_sampling.glsl). The output is linear
-// radiance (formats/groove-scene.md "Rendering model"), no ambient term and no tone mapping.
+// the CPU oracle libbake/groove/shade.cpp computes it (line_sampling.glsl; special cases sampled by
+// area, area_sampling.glsl). The output is linear radiance (formats/groove-scene.md "Rendering
+// model"), no ambient term and no tone mapping.
 // Variants: HAS_NORMALS, HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES
-// (the package has records), MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1,
-// A2, E, L to colour attachments 1-3 and the special-case flag to alpha, for testing against the CPU
-// method).
+// (the package has records), HAS_AREA_SAMPLING (special cases sampled by area), AREA_SLOTS n,
+// MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1, A2, E, L to colour attachments
+// 1-3 and to alpha the special-case flag, 2, or 3 and 4 where area sampling fell back to line
+// sampling, for testing against the CPU method).
 #include "line_sampling.glsl"
 
 in vec3 vWorldPosition;
@@ -61,6 +63,10 @@ void main() {
   fragColor = vec4(radiance, 1.0);
 #ifdef SHADING_INPUTS
   fragColor.a = gSpecialCase ? 2.0 : 1.0;  // the §4.2 dispatch, to compare with the CPU's
+#ifdef HAS_AREA_SAMPLING
+  if (gAreaNoSlot) fragColor.a = 3.0;  // area sampling found no arena slot and line sampled
+  if (gAreaCut) fragColor.a = 4.0;     // area sampling was cut short by the driver and line sampled
+#endif
   inputsCentreAxis1 = vec4(centre, axis1);
   inputsAxis2View = vec4(axis2, toViewer.xy);
   inputsViewLight = vec4(toViewer.z, gLightDir);

@@ -7,10 +7,9 @@
 // the flat base plus the sum of each class's difference from it (occlusion between classes neglected,
 // as on the CPU).
 //
-// Special cases (§4.2): where a record's box meets the query box the CPU method samples the footprint
-// by area (§6, area_sampling.cpp). That path is not ported yet: such footprints are line sampled here
-// like the others (exact away from the record itself; at a crossing, the classes' sum), and
-// gSpecialCase says so.
+// Special cases (§4.2): where a record's box meets the footprint's box swept along view and light, the
+// footprint is sampled by area (§6, area_sampling.glsl, compiled in with HAS_AREA_SAMPLING), as on the
+// CPU; gSpecialCase says so (HAS_SPECIAL_CASES alone looks the records up but line samples).
 #ifndef BAKE_GROOVES_LINE_SAMPLING_GLSL
 #define BAKE_GROOVES_LINE_SAMPLING_GLSL
 
@@ -112,6 +111,20 @@ vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
   return max(sum, vec3(0.0));
 }
 
+#ifdef HAS_AREA_SAMPLING
+#include "area_sampling.glsl"
+
+bool gAreaCut;
+
+// True when loops no longer run (a driver's cap on the loop iterations of an invocation was reached):
+// a loop of two iterations, its bound unknown to the compiler, runs fewer.
+bool loopsCutShort() {
+  int ran = 0;
+  for (int k = 0; k < 2 + int(uBounds.w); ++k) ++ran;
+  return ran < 2;
+}
+#endif
+
 // The pixel value of the footprint centred at `centre` (domain units) with edges axis1, axis2, seen
 // from toViewer (groove space). gLightDir, gLightRadiance and gMaxBounces are set by the caller.
 vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
@@ -124,13 +137,31 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   if (gFoundCount == 0) return flatBase;
   gGrooveCount = gFoundCount;
   for (int i = 0; i < gFoundCount; ++i) gGrooves[i] = localGroove(gFound[i]);
-#if defined(HAS_SPECIAL_CASES) && defined(SHADING_INPUTS)
-  // Only reported for now (area sampling is not ported), so only looked up where it is reported.
+  // Line sampled before the area branch, not after: Mesa's llvmpipe stops every loop of a SIMD group
+  // once the group has run 65,535 loop iterations in all (drivers of real GPUs have no such cap), and
+  // area sampling can use them up; a loop run after it would then do nothing for the whole group.
+  vec3 radiance = vec3(0.0);
+  bool sampled = false;
+  vec3 lineSampled = lineSample(axis1, axis2, toViewer, flatBase);
+#ifdef HAS_SPECIAL_CASES
   vec2 recordLower, recordUpper;
   queryBox(axis1, axis2, toViewer, gLightDir, 0.0, recordLower, recordUpper);
   gSpecialCase = specialCaseUnder(recordLower, recordUpper);
 #endif
-  return lineSample(axis1, axis2, toViewer, flatBase);
+#ifdef HAS_AREA_SAMPLING
+  gAreaNoSlot = false;
+  gAreaCut = false;
+  // A footprint without area (no screen-space derivatives) is line sampled: a rasterised pixel has one.
+  if (gSpecialCase && length(axis1) + length(axis2) > 0.0) {
+    sampled = areaSample(axis1, axis2, toViewer, radiance);
+    gAreaNoSlot = !sampled;  // every arena slot tried was taken: line sampled instead
+    // Cut short by such a cap, the area sample misses the pieces it had not reached: the line
+    // sample stands in, and gAreaCut says so.
+    gAreaCut = sampled && loopsCutShort();
+    sampled = sampled && !gAreaCut;
+  }
+#endif
+  return sampled ? radiance : lineSampled;
 }
 
 #endif

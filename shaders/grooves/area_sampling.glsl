@@ -1,0 +1,340 @@
+// Area sampling for the special cases of seed 000 §6 (intersections, ends, corners), as
+// libbake/groove/area_sampling.cpp: the local surface as planar convex pieces (area_surface.glsl); for
+// every piece facing the viewer, its projection along the view onto the base plane clipped to the
+// footprint, minus the projections of the pieces in front of it (§6.1, §6.3), minus the shadows of the
+// pieces nearer the light (§6.3), and Eq. 1 over the visible, lit shares (§6.4). Occlusion between two
+// pieces is decided at one point of their overlap (pieces of a height field keep one order along
+// every view line and light ray), or without clipping when one lies wholly on one side of the other's
+// plane. Only direct light, as on the CPU. Pieces cover the working region: the footprint swept along
+// the view over the grooves' depth and height, then along the light over their whole range.
+// Caps are below the CPU's (160 pieces and 128 cells per layer here, 512 there; 16 fragments per
+// piece, 48 there; 16 vertices per polygon, 24 there): when they are reached the footprint is split
+// in 2 x 2, 4 x 4, then 8 x 8 equal parts (the CPU splits only the parts that overflow; both are
+// exact), and past that what does not fit is left out. A footprint of zero area (no screen-space
+// derivatives) is line sampled: a rasterised pixel always has one.
+#ifndef BAKE_GROOVES_AREA_SAMPLING_GLSL
+#define BAKE_GROOVES_AREA_SAMPLING_GLSL
+
+#include "area_surface.glsl"
+#include "material.glsl"
+
+const int kAreaMaxSplitLevel = 3;  // up to 8 x 8 parts, as the CPU's three halvings
+
+vec3 gAreaView, gAreaLight;
+float gAreaMinArea, gAreaDepthTolerance;
+bool gAreaLightAllOccluders;  // light near or below the horizon: back faces occlude too
+float gAreaHeight, gAreaDepth, gAreaLengthScale;
+
+// --- The fragments of one visible piece (polygon.h FragmentSet) ----------------------------------
+// When a subtraction needs more room than there is, the fragment is kept whole with its weight lowered
+// so that its weighted area drops by the area of the hole inside it (counted in gAreaOverflows).
+
+int gFragmentCount;
+int fragmentAt(int i) { return kFragments + i * AREA_POLY; }
+float fragmentWeight(int i) { return arenaAt(kFragmentWeights + i); }
+void setFragmentWeight(int i, float w) { setArena(kFragmentWeights + i, w); }
+
+vec4 fragmentsBox() {
+  vec4 b = vec4(vec2(kInfinity), vec2(-kInfinity));
+  for (int i = 0; i < gFragmentCount; ++i) b = boxUnion(b, polygonBox(fragmentAt(i)));
+  return b;
+}
+
+// Removes polygon `hole` (counter-clockwise) from every fragment.
+void subtractFromFragments(int hole) {
+  if (negligible(hole, 0.0)) return;
+  vec4 holeBox = polygonBox(hole);
+  int edgeCount = edgeHalfPlanes(hole, kEdgesHole);
+  int original = gFragmentCount;
+  float minArea = gAreaMinArea;
+  for (int i = 0; i < original; ++i) {
+    int f = fragmentAt(i);
+    if (isEmpty(f) || !boxesOverlap(polygonBox(f), holeBox)) continue;
+    int n = subtractEdges(f, kEdgesHole, edgeCount, minArea, kSubtracted, kHoleInside, kSpare);
+    float removed = polygonArea(kHoleInside);
+    if (negligible(kHoleInside, minArea)) continue;
+    float whole = polygonArea(f);
+    float weight = fragmentWeight(i);
+    float remaining = max(0.0, weight * whole - removed);
+    if (removed >= whole - minArea || n == 0) {
+      setVertexCount(f, 0);  // fully covered; compacted below
+    } else if (gFragmentCount + n - 1 <= AREA_MAX_FRAGMENTS) {
+      float newWeight = weight == 1.0 ? 1.0 : min(1.0, remaining / (whole - removed));
+      for (int k = 0; k < n; ++k) {
+        int slot = k == 0 ? i : gFragmentCount++;
+        copyPolygon(fragmentAt(slot), kSubtracted + AREA_POLY * k);
+        setFragmentWeight(slot, newWeight);
+      }
+    } else {
+      ++gAreaOverflows;
+      setFragmentWeight(i, remaining / whole);
+    }
+  }
+  int kept = 0;
+  for (int i = 0; i < gFragmentCount; ++i) {
+    if (isEmpty(fragmentAt(i))) continue;
+    if (kept != i) {
+      copyPolygon(fragmentAt(kept), fragmentAt(i));
+      setFragmentWeight(kept, fragmentWeight(i));
+    }
+    ++kept;
+  }
+  gFragmentCount = kept;
+}
+
+float fragmentsWeightedArea() {
+  float sum = 0.0;
+  for (int i = 0; i < gFragmentCount; ++i) sum += fragmentWeight(i) * polygonArea(fragmentAt(i));
+  return sum;
+}
+
+// --- Pieces as the sampler sees them --------------------------------------------------------------
+
+vec2 toScreen(vec3 p) { return p.xy - (p.z / gAreaView.z) * gAreaView.xy; }
+
+void projectPieces() {
+  vec3 helper = abs(gAreaLight.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+  vec3 axis1 = normalize(cross(helper, gAreaLight)), axis2 = cross(gAreaLight, axis1);
+  for (int i = 0; i < gSurfaceCount; ++i) {
+    int piece = pieceAt(i);
+    vec3 normal = pieceNormal(i);
+    setArena(piece + kPieceFacingViewer, dot(normal, gAreaView));
+    setArena(piece + kPieceFacingLight, dot(normal, gAreaLight));
+    int screen = pieceScreen(i);
+    setVertexCount(screen, 0);
+    vec4 lightBox = vec4(vec2(kInfinity), vec2(-kInfinity));
+    int n = pieceVertexCount(i);
+    for (int k = 0; k < n; ++k) {
+      vec3 x = pieceVertex(i, k);
+      addVertex(screen, toScreen(x));
+      vec2 l = vec2(dot(x, axis1), dot(x, axis2));
+      lightBox = vec4(min(lightBox.xy, l), max(lightBox.zw, l));
+    }
+    makeCounterClockwise(screen);
+    setArena4(piece + kPieceScreenBox, polygonBox(screen));
+    setArena4(piece + kPieceLightBox, lightBox);
+  }
+}
+
+// Distance along the view line through screen point x to piece p's plane.
+float viewDepth(int p, vec2 x) { return (piecePlaneOffset(p) - dot(pieceNormal(p).xy, x)) / pieceFacingViewer(p); }
+
+vec3 seenPoint(int p, vec2 x) {
+  float t = viewDepth(p, x);
+  return vec3(x + t * gAreaView.xy, t * gAreaView.z);
+}
+
+// Signed distance from q along L to piece p's plane (positive: the plane is towards the light).
+float lightDistance(int p, vec3 q) { return (piecePlaneOffset(p) - dot(pieceNormal(p), q)) / pieceFacingLight(p); }
+
+bool occludesLight(int p) {
+  return gAreaLightAllOccluders ? abs(pieceFacingLight(p)) > 1e-7 : pieceFacingLight(p) > 1e-7;
+}
+
+// Where the vertices of `other` lie against me's plane: .x the least, .y the greatest signed distance
+// (positive: the side me's normal points to). No vertex in front (.y <= 0): other hides (shadows)
+// nothing of me. All of it in front by more than the tolerance: it does wherever they overlap.
+vec2 againstPlaneOf(int me, int other) {
+  vec3 normal = pieceNormal(me);
+  float offset = piecePlaneOffset(me);
+  vec2 range = vec2(kInfinity, -kInfinity);
+  int n = pieceVertexCount(other);
+  for (int k = 0; k < n; ++k) {
+    float d = dot(normal, pieceVertex(other, k)) - offset;
+    range = vec2(min(range.x, d), max(range.y, d));
+  }
+  return range;
+}
+
+// Piece `caster`'s shadow on piece `receiver`'s plane, seen on the screen, into kShadow.
+void shadowOnScreen(int receiver, int caster) {
+  setVertexCount(kShadow, 0);
+  int n = pieceVertexCount(caster);
+  for (int k = 0; k < n; ++k) {
+    vec3 q = pieceVertex(caster, k);
+    addVertex(kShadow, toScreen(q + lightDistance(receiver, q) * gAreaLight));
+  }
+  makeCounterClockwise(kShadow);
+}
+
+// The visible, lit part of piece i in the footprint, as fragments: first the pieces in front of it
+// (pass 0), then the shadows of those nearer the light (pass 1). One loop for both keeps a single copy
+// of the clipping code.
+void visibleLitPart(int i) {
+  intersectEdgesInto(fragmentAt(0), pieceScreen(i), kEdgesFootprint, edgeHalfPlanes(kFootprint, kEdgesFootprint),
+                     kSpare);
+  gFragmentCount = negligible(fragmentAt(0), gAreaMinArea) ? 0 : 1;
+  setFragmentWeight(0, 1.0);
+  vec4 bounds = fragmentsBox();
+  int meEdgeCount = edgeHalfPlanes(pieceScreen(i), kEdgesMe);
+  bool facesLight = pieceFacingLight(i) > 0.0;
+  vec4 lightBox = pieceLightBox(i);
+  for (int step = 0; step < 2 * gSurfaceCount && gFragmentCount > 0; ++step) {
+    bool shadows = step >= gSurfaceCount;
+    int j = shadows ? step - gSurfaceCount : step;
+    if (j == i) continue;
+    int hole;
+    bool sure;  // wholly in front of i's plane: no need to find a point of the overlap
+    if (!shadows) {
+      if (pieceFacingViewer(j) <= 1e-7 || !boxesOverlap(pieceScreenBox(j), bounds)) continue;
+      vec2 range = againstPlaneOf(i, j);
+      if (range.y <= 0.0) continue;
+      sure = range.x > gAreaDepthTolerance;
+      hole = pieceScreen(j);
+    } else {
+      if (!occludesLight(j) || !boxesOverlap(pieceLightBox(j), lightBox)) continue;
+      vec2 range = facesLight ? againstPlaneOf(i, j) : vec2(-kInfinity, kInfinity);
+      if (range.y <= 0.0) continue;
+      shadowOnScreen(i, j);
+      if (!isEmpty(kShadow) && !boxesOverlap(polygonBox(kShadow), bounds)) continue;
+      sure = facesLight && range.x > gAreaDepthTolerance;
+      hole = kShadow;
+    }
+    if (!sure) {
+      intersectEdgesInto(kOverlap, hole, kEdgesMe, meEdgeCount, kSpare);
+      if (negligible(kOverlap, gAreaMinArea)) continue;
+      vec2 c = polygonCentroid(kOverlap);
+      bool inFront = shadows ? lightDistance(j, seenPoint(i, c)) > gAreaDepthTolerance
+                             : viewDepth(j, c) > viewDepth(i, c) + gAreaDepthTolerance;
+      if (!inFront) continue;
+    }
+    subtractFromFragments(hole);
+    bounds = fragmentsBox();
+  }
+}
+
+// How far a line along d travels across the base plane per unit of height (bounded like the query
+// box: kMaxReach).
+vec2 shiftPerHeight(vec3 d) {
+  float horizontal = length(d.xy);
+  if (horizontal == 0.0) return vec2(0.0);
+  float slope = d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
+  return (slope / horizontal) * d.xy;
+}
+
+// The footprint box swept along the view over [-depth, height], then along the light over
+// [0, height + depth] (what is seen in the footprint, hides it or shadows it), into kRegion.
+void workingRegion(vec4 footprintBox) {
+  float e = 1e-5 * gAreaLengthScale;
+  vec2 view = shiftPerHeight(gAreaView), light = shiftPerHeight(gAreaLight);
+  vec2 viewSweep = vec2(-gAreaDepth - e, gAreaHeight + e);
+  vec2 lightSweep = vec2(0.0, gAreaHeight + gAreaDepth + e);
+  vec4 b = vec4(vec2(kInfinity), vec2(-kInfinity));
+  for (int corner = 0; corner < 16; ++corner) {
+    vec2 c = vec2((corner & 1) != 0 ? footprintBox.z + e : footprintBox.x - e,
+                  (corner & 2) != 0 ? footprintBox.w + e : footprintBox.y - e);
+    vec2 x = c + ((corner & 4) != 0 ? viewSweep.y : viewSweep.x) * view +
+             ((corner & 8) != 0 ? lightSweep.y : lightSweep.x) * light;
+    b = vec4(min(b.xy, x), max(b.zw, x));
+  }
+  setVertexCount(kRegion, 0);
+  addVertex(kRegion, b.xy);
+  addVertex(kRegion, b.zy);
+  addVertex(kRegion, b.zw);
+  addVertex(kRegion, b.xw);
+}
+
+void footprintParallelogram(int p, vec2 centre, vec2 axis1, vec2 axis2) {
+  vec2 h1 = 0.5 * axis1, h2 = 0.5 * axis2;
+  setVertexCount(p, 0);
+  addVertex(p, centre - h1 - h2);
+  addVertex(p, centre + h1 - h2);
+  addVertex(p, centre + h1 + h2);
+  addVertex(p, centre - h1 + h2);
+  makeCounterClockwise(p);
+}
+
+// The radiance of one (part of a) footprint; false when a cap was reached (then, unless this is the
+// last level, the caller splits; on the last level the value leaves out what did not fit).
+bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, out vec3 radiance) {
+  radiance = vec3(0.0);
+  footprintParallelogram(kFootprint, centre, axis1, axis2);
+  float footprintArea = polygonArea(kFootprint);
+  gAreaMinArea = 1e-8 * footprintArea;
+  vec4 footprintBox = polygonBox(kFootprint);
+  gAreaOverflows = 0;
+  gAreaStopAtCap = !lastLevel;
+  gSurfaceCount = 0;
+  gWallCount = 0;
+  workingRegion(footprintBox);
+  buildHeightPieces(gAreaMinArea);
+  buildWalls(gAreaLengthScale);
+  bool split = gAreaOverflows > 0 && !lastLevel;  // the caller splits: no need to sample
+  if (!split) projectPieces();
+  for (int i = 0; i < (split ? 0 : gSurfaceCount); ++i) {
+    if (pieceFacingViewer(i) <= 1e-7 || !boxesOverlap(pieceScreenBox(i), footprintBox)) continue;
+    vec3 direct = directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView);
+    if (direct == vec3(0.0)) continue;  // facing away from the light
+    visibleLitPart(i);
+    if (gFragmentCount == 0) continue;
+    radiance += (fragmentsWeightedArea() / footprintArea) * direct;
+  }
+  return gAreaOverflows == 0;
+}
+
+// The extent of the local geometry: half-width, height above and depth below the base plane.
+float areaExtent() {
+  gAreaHeight = 0.0;
+  gAreaDepth = 0.0;
+  float width = 0.0;
+  for (int g = 0; g < gStraightCount; ++g) {
+    int count = straightProfileCount(g);
+    for (int k = 0; k < count; ++k) {
+      vec2 p = straightPoint(g, k);
+      width = max(width, abs(p.x));
+      gAreaHeight = max(gAreaHeight, p.y);
+      gAreaDepth = max(gAreaDepth, -p.y);
+    }
+  }
+  return width;
+}
+
+// The footprint F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) relative to F, by area (§6); false when no
+// arena slot was free (the caller line samples).
+bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, out vec3 radiance) {
+  radiance = vec3(0.0);
+  // A helper invocation has no side effects (its arena writes and atomics are dropped) and its value
+  // is never seen: nothing to do. One exit, no break (see shadeFootprint).
+  bool helper = gl_HelperInvocation;
+  bool slot = !helper && acquireSlot(kAreaSlotSize);
+  if (slot) {
+    straightenFound();
+    float width = areaExtent();
+    float span = length(axis1) + length(axis2);
+    footprintParallelogram(kFootprint, vec2(0.0), axis1, axis2);
+    if (polygonArea(kFootprint) < 1e-8 * span * span) {
+      // Parallel axes: a thin parallelogram (the shorter axis gets a small perpendicular part).
+      bool firstLonger = length(axis1) >= length(axis2);
+      vec2 along = normalize(firstLonger ? axis1 : axis2);
+      vec2 nudge = 1e-4 * span * vec2(-along.y, along.x);
+      if (firstLonger) axis2 += nudge;
+      else axis1 += nudge;
+    }
+    gAreaLengthScale = max(max(span, width), max(gAreaHeight + gAreaDepth, 1e-30));
+    gAreaView = toViewer;
+    gAreaLight = gLightDir;
+    gAreaDepthTolerance = 1e-5 * gAreaLengthScale;
+    gAreaLightAllOccluders = gLightDir.z < 0.05;
+    bool done = false;
+    for (int level = 0; level <= kAreaMaxSplitLevel && !done; ++level) {
+      int parts = 1 << level;
+      bool last = level == kAreaMaxSplitLevel;
+      vec2 a1 = axis1 / float(parts), a2 = axis2 / float(parts);
+      vec3 sum = vec3(0.0);
+      bool complete = true;
+      for (int part = 0; part < parts * parts && (complete || last); ++part) {
+        vec2 centre = (float(part % parts) + 0.5 - 0.5 * float(parts)) * a1 +
+                      (float(part / parts) + 0.5 - 0.5 * float(parts)) * a2;
+        vec3 partRadiance;
+        complete = sampleParallelogram(centre, a1, a2, last, partRadiance) && complete;
+        sum += partRadiance;
+      }
+      done = complete || last;
+      if (done) radiance = sum / float(parts * parts);
+    }
+    releaseSlot();
+  }
+  return helper || slot;
+}
+
+#endif
