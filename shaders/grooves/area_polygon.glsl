@@ -188,13 +188,69 @@ vec4 boxUnion(vec4 a, vec4 b) { return vec4(min(a.xy, b.xy), max(a.zw, b.zw)); }
 // is below kSliver of its box's squared diagonal counts as empty, like one below minArea (its area is
 // at most kSliver of that box: below rounding of the result).
 const float kSliver = 1e-5;
+// Area and box in one loop, as signedArea and polygonBox compute them.
 bool negligible(int p, float minArea) {
-  if (vertexCount(p) < 3) return true;
-  float area = polygonArea(p);
-  if (area <= minArea) return true;
-  vec4 b = polygonBox(p);
-  vec2 size = b.zw - b.xy;
-  return area <= kSliver * dot(size, size);
+  int n = vertexCount(p);
+  if (n < 3) return true;
+  vec2 o = vertexAt(p, 0);
+  vec4 box = vec4(o, o);
+  float twice = 0.0;
+  vec2 a = vertexAt(p, 1) - o;
+  for (int i = 1; i < n; ++i) {
+    vec2 x = vertexAt(p, i);
+    box = vec4(min(box.xy, x), max(box.zw, x));
+    if (i + 1 < n) {
+      vec2 b = vertexAt(p, i + 1) - o;
+      twice += a.x * b.y - a.y * b.x;
+      a = b;
+    }
+  }
+  float area = abs(0.5 * twice);
+  vec2 size = box.zw - box.xy;
+  return area <= minArea || area <= kSliver * dot(size, size);
+}
+
+// Ends a clipped polygon: a last vertex equal to the first is dropped, fewer than 3 leave it empty.
+void closeClipped(int p) {
+  int m = vertexCount(p);
+  if (m > 1 && sameVertex(vertexAt(p, 0), vertexAt(p, m - 1))) setVertexCount(p, --m);
+  if (m < 3) setVertexCount(p, 0);
+}
+
+// One Sutherland-Hodgman pass over `from` against h: the part inside into `inside`, and unless
+// `outside` is negative the part outside into `outside` (neither the same as `from`). Returns where
+// `from` lies, found in the same loop: 1 wholly inside, -1 wholly outside, 0 across, 2 on the line
+// (each side includes the boundary). A polygon wholly on one side is kept as it is, as on the CPU:
+// the pass's output is then not used. The side and both parts in one loop: loop iterations are what
+// some drivers cap (see visibleLitPart in area_sampling.glsl).
+int clipPass(int from, vec3 h, int inside, int outside) {
+  setVertexCount(inside, 0);
+  if (outside >= 0) setVertexCount(outside, 0);
+  int n = vertexCount(from);
+  bool allInside = true, allOutside = true;
+  vec2 first = vertexAt(from, 0);
+  float firstDistance = planeDistance(h, first);
+  vec2 a = first;
+  float da = firstDistance;
+  for (int i = 0; i < n; ++i) {
+    bool closing = i + 1 == n;
+    vec2 b = closing ? first : vertexAt(from, i + 1);
+    float db = closing ? firstDistance : planeDistance(h, b);
+    allInside = allInside && da >= 0.0;
+    allOutside = allOutside && da <= 0.0;
+    if (da >= 0.0) addDistinct(inside, a);
+    if (outside >= 0 && da <= 0.0) addDistinct(outside, a);
+    if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) {
+      vec2 crossing = a + (da / (da - db)) * (b - a);  // the same point for either side
+      addDistinct(inside, crossing);
+      if (outside >= 0) addDistinct(outside, crossing);
+    }
+    a = b;
+    da = db;
+  }
+  closeClipped(inside);
+  if (outside >= 0) closeClipped(outside);
+  return allInside ? (allOutside ? 2 : 1) : (allOutside ? -1 : 0);
 }
 
 // 1: p inside h (boundary included), -1: outside, 0: crossed.
@@ -211,44 +267,16 @@ int sideOfPlane(int p, vec3 h) {
 
 // to = from clipped by h (to != from).
 void clipInto(int to, int from, vec3 h) {
-  setVertexCount(to, 0);
-  int n = vertexCount(from);
-  if (n == 0) return;
-  int side = sideOfPlane(from, h);
-  if (side > 0) {
-    copyPolygon(to, from);
-    return;
-  }
-  if (side < 0) return;
-  vec2 first = vertexAt(from, 0);
-  float firstDistance = planeDistance(h, first);
-  vec2 a = first;
-  float da = firstDistance;
-  for (int i = 0; i < n; ++i) {
-    bool closing = i + 1 == n;
-    vec2 b = closing ? first : vertexAt(from, i + 1);
-    float db = closing ? firstDistance : planeDistance(h, b);
-    if (da >= 0.0) addDistinct(to, a);
-    if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) addDistinct(to, a + (da / (da - db)) * (b - a));
-    a = b;
-    da = db;
-  }
-  int m = vertexCount(to);
-  if (m > 1 && sameVertex(vertexAt(to, 0), vertexAt(to, m - 1))) setVertexCount(to, --m);
-  if (m < 3) setVertexCount(to, 0);
+  int side = clipPass(from, h, to, -1);
+  if (side > 0) copyPolygon(to, from);
+  else if (side < 0) setVertexCount(to, 0);
 }
 
 // p = p clipped by h, through the scratch polygon `spare`.
 void clipInPlace(int p, vec3 h, int spare) {
-  if (vertexCount(p) == 0) return;
-  int side = sideOfPlane(p, h);
-  if (side > 0) return;
-  if (side < 0) {
-    setVertexCount(p, 0);
-    return;
-  }
-  clipInto(spare, p, h);
-  copyPolygon(p, spare);
+  int side = clipPass(p, h, spare, -1);
+  if (side < 0) setVertexCount(p, 0);
+  else if (side == 0) copyPolygon(p, spare);
 }
 
 bool cutsPolygon(vec3 h, int p) { return sideOfPlane(p, h) <= 0 && vertexCount(p) > 0; }
@@ -287,11 +315,14 @@ int subtractEdges(int p, int edges, int count, float minArea, int pieces, int re
   }
   copyPolygon(rest, p);
   for (int i = 0; i < count && !isEmpty(rest); ++i) {
-    vec3 inside = edgeAt(edges, i);
+    // rest's parts outside and inside edge i, in one pass (as clipInto by -edge, then clipInPlace).
     int piece = pieces + AREA_POLY * n;
-    clipInto(piece, rest, -inside);
+    int side = clipPass(rest, edgeAt(edges, i), spare, piece);
+    if (side == -1 || side == 2) copyPolygon(piece, rest);
+    else if (side == 1) setVertexCount(piece, 0);
     if (!negligible(piece, minArea)) ++n;
-    clipInPlace(rest, inside, spare);
+    if (side == -1) setVertexCount(rest, 0);
+    else if (side == 0) copyPolygon(rest, spare);
   }
   if (isEmpty(rest)) setVertexCount(rest, 0);
   return n;

@@ -32,11 +32,13 @@ float gAreaHeight, gAreaDepth, gAreaLengthScale;
 int gFragmentCount;
 int fragmentAt(int i) { return kFragments + i * AREA_POLY; }
 float fragmentWeight(int i) { return arenaAt(kFragmentWeights + i); }
+vec4 fragmentBox(int i) { return arena4(kFragmentBoxes + 4 * i); }  // inverted when empty
+void updateFragmentBox(int i) { setArena4(kFragmentBoxes + 4 * i, polygonBox(fragmentAt(i))); }
 void setFragmentWeight(int i, float w) { setArena(kFragmentWeights + i, w); }
 
 vec4 fragmentsBox() {
   vec4 b = vec4(vec2(kInfinity), vec2(-kInfinity));
-  for (int i = 0; i < gFragmentCount; ++i) b = boxUnion(b, polygonBox(fragmentAt(i)));
+  for (int i = 0; i < gFragmentCount; ++i) b = boxUnion(b, fragmentBox(i));
   return b;
 }
 
@@ -48,8 +50,9 @@ void subtractFromFragments(int hole) {
   int original = gFragmentCount;
   float minArea = gAreaMinArea;
   for (int i = 0; i < original; ++i) {
+    while (i < original && !boxesOverlap(fragmentBox(i), holeBox)) ++i;  // a loop without loops inside
+    if (i == original) break;
     int f = fragmentAt(i);
-    if (isEmpty(f) || !boxesOverlap(polygonBox(f), holeBox)) continue;
     int n = subtractEdges(f, kEdgesHole, edgeCount, minArea, kSubtracted, kHoleInside, kSpare);
     float removed = polygonArea(kHoleInside);
     if (negligible(kHoleInside, minArea)) continue;
@@ -58,12 +61,14 @@ void subtractFromFragments(int hole) {
     float remaining = max(0.0, weight * whole - removed);
     if (removed >= whole - minArea || n == 0) {
       setVertexCount(f, 0);  // fully covered; compacted below
+      updateFragmentBox(i);
     } else if (gFragmentCount + n - 1 <= AREA_MAX_FRAGMENTS) {
       float newWeight = weight == 1.0 ? 1.0 : min(1.0, remaining / (whole - removed));
       for (int k = 0; k < n; ++k) {
         int slot = k == 0 ? i : gFragmentCount++;
         copyPolygon(fragmentAt(slot), kSubtracted + AREA_POLY * k);
         setFragmentWeight(slot, newWeight);
+        updateFragmentBox(slot);
       }
     } else {
       ++gAreaOverflows;
@@ -76,6 +81,7 @@ void subtractFromFragments(int hole) {
     if (kept != i) {
       copyPolygon(fragmentAt(kept), fragmentAt(i));
       setFragmentWeight(kept, fragmentWeight(i));
+      setArena4(kFragmentBoxes + 4 * kept, fragmentBox(i));
     }
     ++kept;
   }
@@ -157,47 +163,67 @@ void shadowOnScreen(int receiver, int caster) {
   makeCounterClockwise(kShadow);
 }
 
-// The visible, lit part of piece i in the footprint, as fragments: first the pieces in front of it
-// (pass 0), then the shadows of those nearer the light (pass 1). One loop for both keeps a single copy
-// of the clipping code.
+int stepPiece(int step) { return step < gSurfaceCount ? step : step - gSurfaceCount; }
+
+// Whether piece j may hide (first pass) or shadow (second pass) part of piece i, from what is known
+// without a loop: which way it faces and whether the boxes overlap.
+bool mayOcclude(int i, int j, bool shadows, vec4 bounds, vec4 lightBox) {
+  if (j == i) return false;
+  if (shadows) return occludesLight(j) && boxesOverlap(pieceLightBox(j), lightBox);
+  return pieceFacingViewer(j) > 1e-7 && boxesOverlap(pieceScreenBox(j), bounds);
+}
+
+// Whether piece j hides (shadows) part of piece i; the polygon to subtract is then `hole`.
+bool occludes(int i, int j, bool shadows, vec4 bounds, int meEdgeCount, out int hole) {
+  bool facesLight = pieceFacingLight(i) > 0.0;
+  bool sure;  // wholly in front of i's plane: no need to find a point of the overlap
+  vec2 range = !shadows || facesLight ? againstPlaneOf(i, j) : vec2(-kInfinity, kInfinity);
+  if (range.y <= 0.0) return false;
+  if (!shadows) {
+    sure = range.x > gAreaDepthTolerance;
+    hole = pieceScreen(j);
+  } else {
+    shadowOnScreen(i, j);
+    if (!isEmpty(kShadow) && !boxesOverlap(polygonBox(kShadow), bounds)) return false;
+    sure = facesLight && range.x > gAreaDepthTolerance;
+    hole = kShadow;
+  }
+  if (sure) return true;
+  intersectEdgesInto(kOverlap, hole, kEdgesMe, meEdgeCount, kSpare);
+  if (negligible(kOverlap, gAreaMinArea)) return false;
+  vec2 c = polygonCentroid(kOverlap);
+  return shadows ? lightDistance(j, seenPoint(i, c)) > gAreaDepthTolerance
+                 : viewDepth(j, c) > viewDepth(i, c) + gAreaDepthTolerance;
+}
+
+// The visible, lit part of piece i in the footprint, as fragments: minus the pieces in front of it
+// (steps 0 to n - 1), then minus the shadows of those nearer the light (steps n to 2n - 1).
+// The steps are scanned in two tiers, a loop without loops inside for the box tests, then the full
+// test, and only occluders reach the subtraction: SIMD drivers run a masked-off loop body once with
+// every loop inside it (Mesa's llvmpipe does, and counts those runs towards its cap), so a body
+// holding the clipping code would cost dozens of iterations for every piece it skips.
 void visibleLitPart(int i) {
   intersectEdgesInto(fragmentAt(0), pieceScreen(i), kEdgesFootprint, edgeHalfPlanes(kFootprint, kEdgesFootprint),
                      kSpare);
   gFragmentCount = negligible(fragmentAt(0), gAreaMinArea) ? 0 : 1;
   setFragmentWeight(0, 1.0);
+  updateFragmentBox(0);
   vec4 bounds = fragmentsBox();
   int meEdgeCount = edgeHalfPlanes(pieceScreen(i), kEdgesMe);
-  bool facesLight = pieceFacingLight(i) > 0.0;
   vec4 lightBox = pieceLightBox(i);
-  for (int step = 0; step < 2 * gSurfaceCount && gFragmentCount > 0; ++step) {
-    bool shadows = step >= gSurfaceCount;
-    int j = shadows ? step - gSurfaceCount : step;
-    if (j == i) continue;
-    int hole;
-    bool sure;  // wholly in front of i's plane: no need to find a point of the overlap
-    if (!shadows) {
-      if (pieceFacingViewer(j) <= 1e-7 || !boxesOverlap(pieceScreenBox(j), bounds)) continue;
-      vec2 range = againstPlaneOf(i, j);
-      if (range.y <= 0.0) continue;
-      sure = range.x > gAreaDepthTolerance;
-      hole = pieceScreen(j);
-    } else {
-      if (!occludesLight(j) || !boxesOverlap(pieceLightBox(j), lightBox)) continue;
-      vec2 range = facesLight ? againstPlaneOf(i, j) : vec2(-kInfinity, kInfinity);
-      if (range.y <= 0.0) continue;
-      shadowOnScreen(i, j);
-      if (!isEmpty(kShadow) && !boxesOverlap(polygonBox(kShadow), bounds)) continue;
-      sure = facesLight && range.x > gAreaDepthTolerance;
-      hole = kShadow;
+  int steps = 2 * gSurfaceCount;
+  int step = 0;
+  while (gFragmentCount > 0 && step < steps) {
+    int hole = -1;
+    while (hole < 0 && step < steps) {
+      while (step < steps && !mayOcclude(i, stepPiece(step), step >= gSurfaceCount, bounds, lightBox)) ++step;
+      if (step < steps) {
+        int found;
+        if (occludes(i, stepPiece(step), step >= gSurfaceCount, bounds, meEdgeCount, found)) hole = found;
+        ++step;
+      }
     }
-    if (!sure) {
-      intersectEdgesInto(kOverlap, hole, kEdgesMe, meEdgeCount, kSpare);
-      if (negligible(kOverlap, gAreaMinArea)) continue;
-      vec2 c = polygonCentroid(kOverlap);
-      bool inFront = shadows ? lightDistance(j, seenPoint(i, c)) > gAreaDepthTolerance
-                             : viewDepth(j, c) > viewDepth(i, c) + gAreaDepthTolerance;
-      if (!inFront) continue;
-    }
+    if (hole < 0) break;
     subtractFromFragments(hole);
     bounds = fragmentsBox();
   }
@@ -261,12 +287,16 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
   buildWalls(gAreaLengthScale);
   bool split = gAreaOverflows > 0 && !lastLevel;  // the caller splits: no need to sample
   if (!split) projectPieces();
-  for (int i = 0; i < (split ? 0 : gSurfaceCount); ++i) {
-    if (pieceFacingViewer(i) <= 1e-7 || !boxesOverlap(pieceScreenBox(i), footprintBox)) continue;
-    vec3 direct = directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView);
-    if (direct == vec3(0.0)) continue;  // facing away from the light
+  // The pieces seen in the footprint and lit, found by a loop without loops inside (see
+  // visibleLitPart).
+  int count = split ? 0 : gSurfaceCount;
+  for (int i = 0; i < count; ++i) {
+    while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), footprintBox) &&
+                          directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)))
+      ++i;
+    if (i == count) break;
     visibleLitPart(i);
-    if (gFragmentCount == 0) continue;
+    vec3 direct = directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView);
     radiance += (fragmentsWeightedArea() / footprintArea) * direct;
   }
   return gAreaOverflows == 0;

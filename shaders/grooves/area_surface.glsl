@@ -35,8 +35,8 @@ const int kStraightMaterial = 0, kStraightFoot = 1, kStraightTangent = 3, kStrai
           kStraightOpenEnd = 19, kStraightSize = 21;
 // A strip of one groove's profile: b0, b1, takes part, plane.
 const int kStripSize = 6;
-// A cell: polygon, plane, owner.
-const int kCellPlane = AREA_POLY, kCellOwner = AREA_POLY + 3, kCellSize = AREA_POLY + 4;
+// A cell: polygon, plane, owner, box.
+const int kCellPlane = AREA_POLY, kCellOwner = AREA_POLY + 3, kCellBox = AREA_POLY + 4, kCellSize = AREA_POLY + 8;
 // A piece: vertex count, vertices (3D), normal, plane offset, material, N.E, N.L, screen box, light
 // box, screen polygon.
 const int kPieceVertices = 1, kPieceNormal = 1 + 3 * AREA_MAX_VERTICES, kPieceOffset = kPieceNormal + 3,
@@ -55,7 +55,8 @@ const int kEdgesBand = kSpare + AREA_POLY, kEdgesFootprint = kEdgesBand + AREA_E
 const int kSubtracted = kEdgesOther + AREA_EDGES;  // AREA_MAX_VERTICES polygons
 const int kFragments = kSubtracted + AREA_MAX_VERTICES * AREA_POLY;
 const int kFragmentWeights = kFragments + AREA_MAX_FRAGMENTS * AREA_POLY;
-const int kStraight = kFragmentWeights + AREA_MAX_FRAGMENTS;
+const int kFragmentBoxes = kFragmentWeights + AREA_MAX_FRAGMENTS;
+const int kStraight = kFragmentBoxes + 4 * AREA_MAX_FRAGMENTS;
 const int kStraightProfiles = kStraight + MAX_FOUND * kStraightSize;
 const int kStrips = kStraightProfiles + 2 * MAX_FOUND * AREA_MAX_STRAIGHT_POINTS;
 const int kBreaks = kStrips + kStripSize * AREA_MAX_STRAIGHT_POINTS;
@@ -148,12 +149,16 @@ int pieceScreen(int i) { return pieceAt(i) + kPieceScreen; }
 int cellAt(int bank, int c) { return kCells + (bank * AREA_MAX_CELLS + c) * kCellSize; }
 vec3 cellPlane(int cell) { return arena3(cell + kCellPlane); }
 int cellOwner(int cell) { return int(arenaAt(cell + kCellOwner)); }
+// Kept with the cell so that the loops that skip cells by their box need no loop inside (see
+// visibleLitPart in area_sampling.glsl).
+vec4 cellBox(int cell) { return arena4(cell + kCellBox); }
 int gCellBank, gCellCount, gNextCount;
 
 void copyCell(int to, int from) {
   copyPolygon(to, from);
   setArena3(to + kCellPlane, cellPlane(from));
   setArena(to + kCellOwner, arenaAt(from + kCellOwner));
+  setArena4(to + kCellBox, cellBox(from));
 }
 
 bool isCutFacet(vec2 a, vec2 b) { return a.y <= 0.0 && b.y <= 0.0 && (a.y < 0.0 || b.y < 0.0); }
@@ -208,6 +213,7 @@ void pushCell(int p, vec3 plane, int owner, float minArea) {
   copyPolygon(cell, p);
   setArena3(cell + kCellPlane, plane);
   setArena(cell + kCellOwner, float(owner));
+  setArena4(cell + kCellBox, polygonBox(p));
 }
 
 // -1: outside some edge, 1: inside every edge, 0: across.
@@ -256,6 +262,7 @@ void buildLayer(bool cuts, float minArea) {
   copyPolygon(cellAt(0, 0), kRegion);
   setArena3(cellAt(0, 0) + kCellPlane, vec3(0.0));
   setArena(cellAt(0, 0) + kCellOwner, -1.0);
+  setArena4(cellAt(0, 0) + kCellBox, polygonBox(kRegion));
   for (int g = 0; g < gStraightCount; ++g) {
     if (gAreaStopAtCap && gAreaOverflows > 0) return;
     if (!hasLayer(g, cuts)) continue;
@@ -276,8 +283,14 @@ void buildLayer(bool cuts, float minArea) {
     stripsOf(g, cuts);
     gNextCount = 0;
     for (int c = 0; c < gCellCount; ++c) {
+      // Cells away from the band's box are kept whole, in a loop that holds only their copy.
+      for (; c < gCellCount && !boxesOverlap(cellBox(cellAt(gCellBank, c)), bandBox); ++c) {
+        if (gNextCount == AREA_MAX_CELLS) ++gAreaOverflows;
+        else copyCell(cellAt(1 - gCellBank, gNextCount++), cellAt(gCellBank, c));
+      }
+      if (c == gCellCount) break;
       int cell = cellAt(gCellBank, c);
-      int side = boxesOverlap(polygonBox(cell), bandBox) ? sideOfEdges(cell, kEdgesBand, bandEdgeCount) : -1;
+      int side = sideOfEdges(cell, kEdgesBand, bandEdgeCount);
       int n = 0;
       if (side == 0) {
         n = subtractEdges(cell, kEdgesBand, bandEdgeCount, minArea, kSubtracted, kInBand, kSpare);
@@ -382,10 +395,11 @@ void buildHeightPieces(float minArea) {
   }
   for (int c = 0; c < cutCount; ++c) {
     int cut = cellAt(2, c);
-    vec4 cutBox = polygonBox(cut);
+    vec4 cutBox = cellBox(cut);
     for (int r = 0; r < gCellCount; ++r) {
+      while (r < gCellCount && !boxesOverlap(cutBox, cellBox(cellAt(gCellBank, r)))) ++r;  // a loop without loops inside
+      if (r == gCellCount) break;
       int ridge = cellAt(gCellBank, r);
-      if (!boxesOverlap(cutBox, polygonBox(ridge))) continue;
       int edges = edgeHalfPlanes(ridge, kEdgesOther);
       intersectEdgesInto(kBoth, cut, kEdgesOther, edges, kSpare);
       if (negligible(kBoth, minArea)) continue;

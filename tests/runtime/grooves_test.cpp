@@ -231,10 +231,8 @@ class GroovesOracle : public test::GlTest {
   }
 
   // `special`: special-case pixels are in view; the shader's area sampling is held to the same 2/255,
-  // and unless `fewSpecial` (a view with a handful of them, all of which llvmpipe may cut short) at
-  // least one must have been area sampled to the end.
-  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name, bool special = false,
-                             bool fewSpecial = false) {
+  // and every one of them must have been sampled by area to the end.
+  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name, bool special = false) {
     RecordProperty(name + "_rmse", std::to_string(f.rmse));
     RecordProperty(name + "_max_levels", f.maxLevels);
     std::printf("[ grooves ] %s: %zu pixels (%zu special, %zu flagged differently), RMSE %.3g, max |diff| %.3g linear = "
@@ -249,7 +247,10 @@ class GroovesOracle : public test::GlTest {
                   "driver's loop cap and %zu without an arena slot (line sampled, not counted)\n",
                   name.c_str(), f.specialRmse, f.specialMaxLevels, f.cut, f.noSlot);
       EXPECT_GT(f.special, 0u) << "the view should show the special case";
-      if (!fewSpecial) EXPECT_LT(f.cut, f.special) << "no pixel was area sampled to the end";
+      // Every one sampled by area to the end, on llvmpipe too: the area sampler is written to stay
+      // well inside its loop cap on these views (about 40,000 of 65,535 iterations at most on the
+      // tiles' T-junctions).
+      EXPECT_EQ(f.cut, 0u) << "special-case pixels cut short by the driver's loop cap";
       EXPECT_EQ(f.noSlot, 0u) << "every area-sampled pixel should find a slot of the arena";
       EXPECT_LE(f.specialMaxLevels, 2);
     } else {
@@ -395,8 +396,9 @@ TEST_F(GroovesOracle, CrossingSampledByAreaAsOnTheCpu) {
 }
 
 // The example scenes of pipelines/grooves, as the examples bake them: the record (no special case
-// but its two ends) and the tiles (the joints between the T-junctions and ends). At the tiles'
-// T-junctions llvmpipe cuts many area samples short (its loop cap), and those pixels are line sampled.
+// but its two ends) and the tiles (the joints between the T-junctions and ends). The tiles'
+// T-junctions are the costliest area samples of the examples: every one must stay inside llvmpipe's
+// loop cap.
 std::string exampleScene(const std::string& name) {
   std::ifstream in(std::string(BAKE_SOURCE_DIR) + "/pipelines/grooves/" + name);
   std::stringstream text;
@@ -410,7 +412,7 @@ TEST_F(GroovesOracle, ExampleRecord) {
   const Baked baked = bake(exampleScene("record.json"), "example_record");
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.2f, -0.05f, 0.3f}, {0.15f, 0.15f, 0.0f}, {-0.3f, 0.6f, 0.7f}, 0);
-  expectWithinTwoLevels(f, "example_record", true, true);  // the spiral's outer end is in view
+  expectWithinTwoLevels(f, "example_record", true);  // the spiral's outer end is in view
 }
 
 TEST_F(GroovesOracle, ExampleTiles) {
