@@ -99,6 +99,7 @@ Status renderScene(const RenderSettings& settings, BakeSession& session) {
   const nlohmann::json techniqueStatistics = renderer.statistics();
   for (const auto& [technique, statistics] : techniqueStatistics.items())
     for (const auto& [key, value] : statistics.items()) session.report().setStatistic(key, value);
+  for (const std::string& warning : renderer.warnings()) session.diagnostics().warning("technique-fallback", warning);
   if (settings.compareStandard) {
     // The same scene, camera and light with every instance drawn by the standard renderer.
     RendererRegistry standardOnly;

@@ -32,6 +32,9 @@ constexpr std::size_t kMaxFound = 24;
 // slot is taken is line sampled instead.
 constexpr GLuint kAreaScratchBinding = 10;
 constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
+// After the slot flags, the shader's areaCounts: special-case fragments sampled by area, line sampled
+// for want of a slot, line sampled because a driver's loop cap cut the area sample short.
+constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kAreaCounts = 4;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -111,7 +114,8 @@ GroovesRenderer::~GroovesRenderer() {
 // The arena, zeroed (every slot free), made once for all packages with special cases.
 void GroovesRenderer::makeAreaScratch() {
   if (areaScratch_ != 0) return;
-  const std::size_t bytes = kAreaSlots * sizeof(std::uint32_t) + kAreaSlots * kAreaSlotFloats * sizeof(float);
+  const std::size_t bytes =
+      kAreaCountsOffset + kAreaCounts * sizeof(std::uint32_t) + kAreaSlots * kAreaSlotFloats * sizeof(float);
   glCreateBuffers(1, &areaScratch_);
   glNamedBufferStorage(areaScratch_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const std::uint32_t zero = 0;
@@ -181,6 +185,11 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
 
 void GroovesRenderer::draw(const FrameContext& frame) {
   const Mat4 viewProjection = multiply(frame.projection, frame.view);
+  if (areaScratch_ != 0) {  // the counts are the frame's own
+    const std::uint32_t zero = 0;
+    glClearNamedBufferSubData(areaScratch_, GL_R32UI, GLintptr(kAreaCountsOffset), kAreaCounts * sizeof(std::uint32_t),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
   for (const Item& item : items_) {
     const unsigned program = item.program;
     glUseProgram(program);
@@ -203,6 +212,28 @@ void GroovesRenderer::draw(const FrameContext& frame) {
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
+}
+
+nlohmann::json GroovesRenderer::statistics() const {
+  if (areaScratch_ == 0) return nullptr;  // no package with special cases, or area sampling off
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t counts[kAreaCounts] = {};
+  glGetNamedBufferSubData(areaScratch_, GLintptr(kAreaCountsOffset), sizeof counts, counts);
+  return {{"grooveAreaFragments", counts[0] + counts[1] + counts[2]},
+          {"grooveAreaLineSampledNoSlot", counts[1]},
+          {"grooveAreaLineSampledLoopCap", counts[2]}};
+}
+
+std::vector<std::string> GroovesRenderer::warnings() const {
+  const nlohmann::json s = statistics();
+  if (s.is_null()) return {};
+  const auto noSlot = s["grooveAreaLineSampledNoSlot"].get<std::uint32_t>();
+  const auto loopCap = s["grooveAreaLineSampledLoopCap"].get<std::uint32_t>();
+  if (noSlot + loopCap == 0) return {};
+  return {"grooves: " + std::to_string(noSlot + loopCap) + " of " + s["grooveAreaFragments"].dump() +
+          " special-case fragments of the last frame were line sampled instead of sampled by area (" +
+          std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
+          " were cut short by the driver's cap on loop iterations, as llvmpipe has)"};
 }
 
 std::size_t GroovesRenderer::gpuBytes() const {

@@ -43,6 +43,9 @@ class GroovesRenderer : public TechniqueRenderer {
                  gl::ShaderLibrary& shaders) override;
   void draw(const FrameContext& frame) override;
   std::size_t gpuBytes() const override;
+  // Of the last frame: special-case fragments sampled by area and those line sampled instead.
+  nlohmann::json statistics() const override;
+  std::vector<std::string> warnings() const override;
 
  private:
   void makeAreaScratch();

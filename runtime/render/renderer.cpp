@@ -74,6 +74,15 @@ std::size_t SceneRenderer::gpuBytes() const {
   return total;
 }
 
+std::vector<std::string> SceneRenderer::warnings() const {
+  std::vector<std::string> out;
+  for (const auto& renderer : renderers_) {
+    std::vector<std::string> w = renderer->warnings();
+    out.insert(out.end(), w.begin(), w.end());
+  }
+  return out;
+}
+
 nlohmann::json SceneRenderer::statistics() const {
   nlohmann::json out = nlohmann::json::object();
   for (std::size_t i = 0; i < renderers_.size(); ++i) {

@@ -38,6 +38,9 @@ class TechniqueRenderer {
   // What the technique measured about the last frame drawn (e.g. polygons generated), for the
   // report; null when it measures nothing.
   virtual nlohmann::json statistics() const { return nullptr; }
+  // What the user should know about the last frame drawn (a result that departs from the technique's
+  // method), one sentence each.
+  virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 using RendererFactory = std::function<std::unique_ptr<TechniqueRenderer>()>;
@@ -64,6 +67,7 @@ class SceneRenderer {
   std::size_t gpuBytes() const;
   // The statistics of every technique that has some, keyed by technique (an object, maybe empty).
   nlohmann::json statistics() const;
+  std::vector<std::string> warnings() const;  // of every technique
   const std::vector<std::string>& techniques() const { return techniques_; }
 
  private:

@@ -159,6 +159,7 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
     // sample stands in, and gAreaCut says so.
     gAreaCut = sampled && loopsCutShort();
     sampled = sampled && !gAreaCut;
+    atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaCut ? 2 : 0)], 1u);  // no effect in helper invocations
   }
 #endif
   return sampled ? radiance : lineSampled;

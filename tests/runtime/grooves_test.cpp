@@ -131,6 +131,8 @@ struct OracleFigures {
   // are counted apart and left out of the special figures: noSlot (no arena slot was free) and cut
   // (llvmpipe's cap of 65,535 loop iterations per SIMD group cut the area sample short).
   std::size_t noSlot = 0, cut = 0;
+  std::size_t shaderSpecial = 0;  // pixels the shader flags as special (alpha 2, 3 or 4)
+  nlohmann::json statistics;      // the renderer's counts of the frame
   double specialRmse = 0;
   int specialMaxLevels = 0;
 };
@@ -172,6 +174,7 @@ class GroovesOracle : public test::GlTest {
                              in2 = targetBuffers.read(3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     figures.radiance = radiance;
+    figures.statistics = renderer.statistics();
 
     const groove::SeedShader oracle(baked.scene, baked.grid);
     double squared = 0, sum = 0, specialSquared = 0;
@@ -188,6 +191,7 @@ class GroovesOracle : public test::GlTest {
       groove::ShadeStats stats;
       const groove::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
       const bool shaderSpecial = radiance[p * 4 + 3] > 1.5f;
+      figures.shaderSpecial += shaderSpecial ? 1 : 0;
       const float flag = radiance[p * 4 + 3];
       figures.noSlot += flag > 2.5f && flag < 3.5f ? 1 : 0;
       const bool cut = flag > 3.5f;
@@ -252,6 +256,11 @@ class GroovesOracle : public test::GlTest {
       // tiles' T-junctions).
       EXPECT_EQ(f.cut, 0u) << "special-case pixels cut short by the driver's loop cap";
       EXPECT_EQ(f.noSlot, 0u) << "every area-sampled pixel should find a slot of the arena";
+      // The renderer's counts (what `bakeplay render` reports) are the flags' counts.
+      ASSERT_TRUE(f.statistics.is_object()) << "area sampling draws report their counts";
+      EXPECT_EQ(f.statistics["grooveAreaFragments"], f.shaderSpecial);
+      EXPECT_EQ(f.statistics["grooveAreaLineSampledNoSlot"], f.noSlot);
+      EXPECT_EQ(f.statistics["grooveAreaLineSampledLoopCap"], f.cut);
       EXPECT_LE(f.specialMaxLevels, 2);
     } else {
       EXPECT_EQ(f.special, 0u) << "no special case was meant to be in view";
