@@ -7,7 +7,7 @@
 // every view line and light ray), or without clipping when one lies wholly on one side of the other's
 // plane. Only direct light, as on the CPU. Pieces cover the working region: the footprint swept along
 // the view over the grooves' depth and height, then along the light over their whole range.
-// Caps are below the CPU's (160 pieces and 128 cells per layer here, 512 there; 16 fragments per
+// Caps are below the CPU's (160 pieces and 160 cells here, 512 there; 16 fragments per
 // piece, 48 there; 16 vertices per polygon, 24 there): when they are reached the footprint is split
 // in 2 x 2, 4 x 4, then 8 x 8 equal parts (the CPU splits only the parts that overflow; both are
 // exact), and past that what does not fit is left out. A footprint of zero area (no screen-space

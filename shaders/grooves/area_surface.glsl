@@ -2,12 +2,14 @@
 // as libbake/groove/area_surface.cpp (facets after the seed's intersection removal, §6.2, done by
 // clipping) and area_walls.cpp (the walls of open ends and vertical profile segments, §6.5). Every
 // found primitive is straightened at F; H = min(cuts) + max(ridges) is built by overlaying the grooves
-// one after the other on a list of convex cells, each with one plane (the lower plane wins in the cut
-// layer, the higher in the ridge layer, split where they are equal); the two layers are then added.
+// one after the other on a list of convex cells, each with a plane per layer (the lower plane wins in
+// the cut layer, the higher in the ridge layer, split where they are equal), which are then added.
+// (The CPU builds the two layers apart and intersects their cells pairwise; one overlay gives the same
+// surface with far fewer loop iterations, which some drivers cap: see area_sampling.glsl.)
 // Where H jumps, a vertical wall between its two side limits. Materials as the spec says: the
 // primitive with the larger |h|, the earlier one on a tie, else the base material.
 // Everything lives in the invocation's arena slot (area_polygon.glsl); its layout is below. Caps
-// (AREA_MAX_CELLS cells per layer, AREA_MAX_PIECES pieces, AREA_MAX_BREAKS breaks along a wall line)
+// (AREA_MAX_CELLS cells, AREA_MAX_PIECES pieces, AREA_MAX_BREAKS breaks along a wall line)
 // are counted in gAreaOverflows; the sampler splits the footprint when they are reached.
 #ifndef BAKE_GROOVES_AREA_SURFACE_GLSL
 #define BAKE_GROOVES_AREA_SURFACE_GLSL
@@ -16,7 +18,7 @@
 #include "lookup.glsl"
 
 #ifndef AREA_MAX_CELLS
-#define AREA_MAX_CELLS 128
+#define AREA_MAX_CELLS 160
 #endif
 #ifndef AREA_MAX_PIECES
 #define AREA_MAX_PIECES 160
@@ -35,8 +37,8 @@ const int kStraightMaterial = 0, kStraightFoot = 1, kStraightTangent = 3, kStrai
           kStraightOpenEnd = 19, kStraightSize = 21;
 // A strip of one groove's profile: b0, b1, takes part, plane.
 const int kStripSize = 6;
-// A cell: polygon, plane, owner, box.
-const int kCellPlane = AREA_POLY, kCellOwner = AREA_POLY + 3, kCellBox = AREA_POLY + 4, kCellSize = AREA_POLY + 8;
+// A cell: polygon, the cut layer's plane and owner, the ridge layer's plane and owner, box.
+const int kCellPlane = AREA_POLY, kCellRidge = 4, kCellBox = AREA_POLY + 8, kCellSize = AREA_POLY + 12;
 // A piece: vertex count, vertices (3D), normal, plane offset, material, N.E, N.L, screen box, light
 // box, screen polygon.
 const int kPieceVertices = 1, kPieceNormal = 1 + 3 * AREA_MAX_VERTICES, kPieceOffset = kPieceNormal + 3,
@@ -46,7 +48,7 @@ const int kPieceVertices = 1, kPieceNormal = 1 + 3 * AREA_MAX_VERTICES, kPieceOf
           kPieceSize = kPieceScreen + AREA_POLY;
 
 const int kRegion = 0, kBand = kRegion + AREA_POLY, kJointed = kBand + AREA_POLY, kInside = kJointed + AREA_POLY,
-          kInBand = kInside + AREA_POLY, kBoth = kInBand + AREA_POLY, kFirst = kBoth + AREA_POLY,
+          kInBand = kInside + AREA_POLY, kFirst = kInBand + AREA_POLY,
           kFootprint = kFirst + AREA_POLY, kOverlap = kFootprint + AREA_POLY, kShadow = kOverlap + AREA_POLY,
           kHoleInside = kShadow + AREA_POLY, kSpare = kHoleInside + AREA_POLY;
 const int kEdgesBand = kSpare + AREA_POLY, kEdgesFootprint = kEdgesBand + AREA_EDGES,
@@ -60,8 +62,8 @@ const int kStraight = kFragmentBoxes + 4 * AREA_MAX_FRAGMENTS;
 const int kStraightProfiles = kStraight + MAX_FOUND * kStraightSize;
 const int kStrips = kStraightProfiles + 2 * MAX_FOUND * AREA_MAX_STRAIGHT_POINTS;
 const int kBreaks = kStrips + kStripSize * AREA_MAX_STRAIGHT_POINTS;
-const int kCells = kBreaks + AREA_MAX_BREAKS;  // three banks: two layers' work and the kept cut layer
-const int kPieces = kCells + 3 * AREA_MAX_CELLS * kCellSize;
+const int kCells = kBreaks + AREA_MAX_BREAKS;  // two banks
+const int kPieces = kCells + 2 * AREA_MAX_CELLS * kCellSize;
 const int kAreaSlotSize = kPieces + AREA_MAX_PIECES * kPieceSize;
 
 // --- Straightened primitives ---------------------------------------------------------------------
@@ -145,10 +147,11 @@ vec4 pieceScreenBox(int i) { return arena4(pieceAt(i) + kPieceScreenBox); }
 vec4 pieceLightBox(int i) { return arena4(pieceAt(i) + kPieceLightBox); }
 int pieceScreen(int i) { return pieceAt(i) + kPieceScreen; }
 
-// Cells: bank 0 and 1 take turns as the current and the next list of a layer, bank 2 keeps the cuts.
+// Cells: bank 0 and 1 take turns as the current and the next list.
 int cellAt(int bank, int c) { return kCells + (bank * AREA_MAX_CELLS + c) * kCellSize; }
-vec3 cellPlane(int cell) { return arena3(cell + kCellPlane); }
-int cellOwner(int cell) { return int(arenaAt(cell + kCellOwner)); }
+int layerAt(int cell, bool cuts) { return cell + kCellPlane + (cuts ? 0 : kCellRidge); }
+vec3 cellPlane(int cell, bool cuts) { return arena3(layerAt(cell, cuts)); }
+int cellOwner(int cell, bool cuts) { return int(arenaAt(layerAt(cell, cuts) + 3)); }
 // Kept with the cell so that the loops that skip cells by their box need no loop inside (see
 // visibleLitPart in area_sampling.glsl).
 vec4 cellBox(int cell) { return arena4(cell + kCellBox); }
@@ -156,14 +159,13 @@ int gCellBank, gCellCount, gNextCount;
 
 void copyCell(int to, int from) {
   copyPolygon(to, from);
-  setArena3(to + kCellPlane, cellPlane(from));
-  setArena(to + kCellOwner, arenaAt(from + kCellOwner));
+  setArena4(layerAt(to, true), arena4(layerAt(from, true)));
+  setArena4(layerAt(to, false), arena4(layerAt(from, false)));
   setArena4(to + kCellBox, cellBox(from));
 }
 
 bool isCutFacet(vec2 a, vec2 b) { return a.y <= 0.0 && b.y <= 0.0 && (a.y < 0.0 || b.y < 0.0); }
 bool isRidgeFacet(vec2 a, vec2 b) { return a.y >= 0.0 && b.y >= 0.0 && (a.y > 0.0 || b.y > 0.0); }
-bool inLayer(vec2 a, vec2 b, bool cuts) { return cuts ? isCutFacet(a, b) : isRidgeFacet(a, b); }
 
 vec3 facetPlane(int g, vec2 a, vec2 b) {
   float slope = (b.y - a.y) / (b.x - a.x);
@@ -171,39 +173,43 @@ vec3 facetPlane(int g, vec2 a, vec2 b) {
   return vec3(a.y - slope * (footB + a.x), slope * straightBinormal(g));
 }
 
-// The strips of groove g's profile in this layer: a facet of the layer with its plane, or a run of
-// facets that keep the cells' planes.
+// The strips of groove g's profile: a facet of the cut layer (kind 1) or of the ridge layer (kind 2)
+// with its plane, or a run of facets that keep the cells' planes (kind 0, facets at h = 0).
 int gStripCount;
 int stripAt(int s) { return kStrips + s * kStripSize; }
 
-void stripsOf(int g, bool cuts) {
+float facetKind(vec2 a, vec2 b) { return isCutFacet(a, b) ? 1.0 : (isRidgeFacet(a, b) ? 2.0 : 0.0); }
+
+void stripsOf(int g) {
   gStripCount = 0;
   int count = straightProfileCount(g);
   for (int k = 0; k + 1 < count; ++k) {
     vec2 a = straightPoint(g, k), b = straightPoint(g, k + 1);
     if (b.x <= a.x) continue;  // a vertical segment: its wall is built apart
-    bool part = inLayer(a, b, cuts);
-    if (!part && gStripCount > 0 && arenaAt(stripAt(gStripCount - 1) + 2) == 0.0) {
+    float kind = facetKind(a, b);
+    if (kind == 0.0 && gStripCount > 0 && arenaAt(stripAt(gStripCount - 1) + 2) == 0.0) {
       setArena(stripAt(gStripCount - 1) + 1, b.x);  // runs that keep the cells' planes merge
       continue;
     }
     int s = stripAt(gStripCount++);
-    setArena3(s, vec3(a.x, b.x, part ? 1.0 : 0.0));
-    setArena3(s + 3, part ? facetPlane(g, a, b) : vec3(0.0));
+    setArena3(s, vec3(a.x, b.x, kind));
+    setArena3(s + 3, kind != 0.0 ? facetPlane(g, a, b) : vec3(0.0));
   }
 }
 
-bool hasLayer(int g, bool cuts) {
+// Whether groove g changes the height anywhere (a facet off h = 0).
+bool changesHeight(int g) {
   int count = straightProfileCount(g);
   for (int k = 0; k + 1 < count; ++k) {
     vec2 a = straightPoint(g, k), b = straightPoint(g, k + 1);
-    if (b.x > a.x && inLayer(a, b, cuts)) return true;
+    if (b.x > a.x && facetKind(a, b) != 0.0) return true;
   }
   return false;
 }
 
-// Appends polygon p with its plane and owner to the next list.
-void pushCell(int p, vec3 plane, int owner, float minArea) {
+// Appends polygon p to the next list with the layers of cell `like`, the one of `cuts` set to plane
+// and owner.
+void pushCell(int p, int like, bool cuts, vec3 plane, int owner, float minArea) {
   if (negligible(p, minArea)) return;
   if (gNextCount == AREA_MAX_CELLS) {
     ++gAreaOverflows;
@@ -211,9 +217,14 @@ void pushCell(int p, vec3 plane, int owner, float minArea) {
   }
   int cell = cellAt(1 - gCellBank, gNextCount++);
   copyPolygon(cell, p);
-  setArena3(cell + kCellPlane, plane);
-  setArena(cell + kCellOwner, float(owner));
+  setArena4(layerAt(cell, !cuts), arena4(layerAt(like, !cuts)));
+  setArena4(layerAt(cell, cuts), vec4(plane, float(owner)));
   setArena4(cell + kCellBox, polygonBox(p));
+}
+
+// Appends polygon p to the next list with the layers of cell `like`.
+void pushPartOf(int p, int like, float minArea) {
+  pushCell(p, like, true, cellPlane(like, true), cellOwner(like, true), minArea);
 }
 
 // -1: outside some edge, 1: inside every edge, 0: across.
@@ -231,7 +242,7 @@ int sideOfEdges(int p, int edges, int edgeCount) {
 // higher (ridges) wins, the cell's own on a tie; where neither wins everywhere, split where they are
 // equal (both halves pushed in one loop).
 void resolveCell(int cell, int inside, vec3 stripPlane, int owner, bool cuts, float minArea) {
-  vec3 plane = cellPlane(cell);
+  vec3 plane = cellPlane(cell, cuts);
   float lowest = kInfinity, highest = -kInfinity;
   int n = vertexCount(inside);
   for (int i = 0; i < n; ++i) {
@@ -251,21 +262,21 @@ void resolveCell(int cell, int inside, vec3 stripPlane, int owner, bool cuts, fl
       clipInto(kSpare, inside, (cellHalf == cuts) ? cellLower : -cellLower);
       part = kSpare;
     }
-    pushCell(part, cellHalf ? plane : stripPlane, cellHalf ? cellOwner(cell) : owner, minArea);
+    pushCell(part, cell, cuts, cellHalf ? plane : stripPlane, cellHalf ? cellOwner(cell, cuts) : owner, minArea);
   }
 }
 
-// One layer (cuts or ridges) into bank gCellBank: the region overlaid with every groove in turn.
-void buildLayer(bool cuts, float minArea) {
+// Both layers into bank gCellBank: the region overlaid with every groove in turn.
+void buildLayers(float minArea) {
   gCellBank = 0;
   gCellCount = 1;
   copyPolygon(cellAt(0, 0), kRegion);
-  setArena3(cellAt(0, 0) + kCellPlane, vec3(0.0));
-  setArena(cellAt(0, 0) + kCellOwner, -1.0);
+  setArena4(layerAt(cellAt(0, 0), true), vec4(0.0, 0.0, 0.0, -1.0));
+  setArena4(layerAt(cellAt(0, 0), false), vec4(0.0, 0.0, 0.0, -1.0));
   setArena4(cellAt(0, 0) + kCellBox, polygonBox(kRegion));
   for (int g = 0; g < gStraightCount; ++g) {
     if (gAreaStopAtCap && gAreaOverflows > 0) return;
-    if (!hasLayer(g, cuts)) continue;
+    if (!changesHeight(g)) continue;
     vec3 lines[4] = vec3[4](straightJoint(g, 0), straightJoint(g, 1), atLeastB(g, straightFirstB(g)),
                             atMostB(g, straightLastB(g)));
     copyPolygon(kBand, kRegion);
@@ -280,7 +291,7 @@ void buildLayer(bool cuts, float minArea) {
       setArena3(kEdgesBand + 3 * bandEdgeCount++, lines[k]);
       if (k < 2) jointCuts[k] = true;
     }
-    stripsOf(g, cuts);
+    stripsOf(g);
     gNextCount = 0;
     for (int c = 0; c < gCellCount; ++c) {
       // Cells away from the band's box are kept whole, in a loop that holds only their copy.
@@ -301,7 +312,7 @@ void buildLayer(bool cuts, float minArea) {
         else copyCell(cellAt(1 - gCellBank, gNextCount++), cell);
         continue;
       }
-      for (int i = 0; i < n; ++i) pushCell(kSubtracted + AREA_POLY * i, cellPlane(cell), cellOwner(cell), minArea);
+      for (int i = 0; i < n; ++i) pushPartOf(kSubtracted + AREA_POLY * i, cell, minArea);
       copyPolygon(kJointed, cell);
       for (int e = 0; e < 2; ++e)
         if (jointCuts[e]) clipInPlace(kJointed, straightJoint(g, e), kSpare);
@@ -321,9 +332,9 @@ void buildLayer(bool cuts, float minArea) {
         for (int e = 0; e < 2; ++e) clipInPlace(kInside, e == 0 ? atLeastB(g, strip.x) : atMostB(g, strip.y), kSpare);
         if (isEmpty(kInside)) continue;
         if (strip.z == 0.0)
-          pushCell(kInside, cellPlane(cell), cellOwner(cell), minArea);
+          pushPartOf(kInside, cell, minArea);
         else
-          resolveCell(cell, kInside, arena3(stripAt(s) + 3), g, cuts, minArea);
+          resolveCell(cell, kInside, arena3(stripAt(s) + 3), g, strip.z == 1.0, minArea);
       }
     }
     gCellBank = 1 - gCellBank;
@@ -351,61 +362,32 @@ void emitPiece(int polygon, vec3 plane, int material) {
 
 int materialOfOwner(int owner) { return owner < 0 ? baseMaterial() : straightMaterial(owner); }
 
-// A cut cell and a ridge cell over the same ground (their overlap in kBoth): the heights add; the
-// material is the one of the larger |h| (the earlier primitive on a tie).
-void combineCells(int cut, int ridge, float minArea) {
-  vec3 sum = cellPlane(cut) + cellPlane(ridge);
-  int cutOwner = cellOwner(cut), ridgeOwner = cellOwner(ridge);
+// A cell's two layers: the heights add; the material is the one of the larger |h| (the earlier
+// primitive on a tie).
+void emitCell(int cell, float minArea) {
+  vec3 sum = cellPlane(cell, true) + cellPlane(cell, false);
+  int cutOwner = cellOwner(cell, true), ridgeOwner = cellOwner(cell, false);
   if (cutOwner < 0 || ridgeOwner < 0) {
-    emitPiece(kBoth, sum, materialOfOwner(cutOwner >= 0 ? cutOwner : ridgeOwner));
+    emitPiece(cell, sum, materialOfOwner(cutOwner >= 0 ? cutOwner : ridgeOwner));
     return;
   }
   vec3 cutDeeper = whereLower(sum, vec3(0.0));  // |cut| >= ridge where the sum is <= 0
   bool cutFirst = cutOwner < ridgeOwner;
-  clipInto(kFirst, kBoth, cutFirst ? cutDeeper : -cutDeeper);
+  clipInto(kFirst, cell, cutFirst ? cutDeeper : -cutDeeper);
   makeCounterClockwise(kFirst);
   int holeEdges = edgeHalfPlanes(kFirst, kEdgesOther);
-  int n = subtractEdges(kBoth, kEdgesOther, holeEdges, minArea, kSubtracted, kInBand, kSpare);
+  int n = subtractEdges(cell, kEdgesOther, holeEdges, minArea, kSubtracted, kInBand, kSpare);
   if (!negligible(kFirst, minArea))
     emitPiece(kFirst, sum, materialOfOwner(cutFirst ? cutOwner : ridgeOwner));
   for (int i = 0; i < n; ++i)
     emitPiece(kSubtracted + AREA_POLY * i, sum, materialOfOwner(cutFirst ? ridgeOwner : cutOwner));
 }
 
-// The cut layer, then (when some groove has ridges) the ridge layer; one loop, so the layer's code is
-// there once.
+// H over the region as pieces: the layers built, then every cell emitted.
 void buildHeightPieces(float minArea) {
-  bool anyRidge = false;
-  for (int g = 0; g < gStraightCount; ++g) anyRidge = anyRidge || hasLayer(g, false);
-  int cutCount = 0;
-  for (int layer = 0; layer < (anyRidge ? 2 : 1); ++layer) {
-    buildLayer(layer == 0, minArea);
-    if (gAreaStopAtCap && gAreaOverflows > 0) return;
-    if (layer == 0 && anyRidge) {
-      cutCount = gCellCount;
-      for (int c = 0; c < cutCount; ++c) copyCell(cellAt(2, c), cellAt(gCellBank, c));
-    }
-  }
-  if (!anyRidge) {
-    for (int c = 0; c < gCellCount; ++c) {
-      int cell = cellAt(gCellBank, c);
-      emitPiece(cell, cellPlane(cell), materialOfOwner(cellOwner(cell)));
-    }
-    return;
-  }
-  for (int c = 0; c < cutCount; ++c) {
-    int cut = cellAt(2, c);
-    vec4 cutBox = cellBox(cut);
-    for (int r = 0; r < gCellCount; ++r) {
-      while (r < gCellCount && !boxesOverlap(cutBox, cellBox(cellAt(gCellBank, r)))) ++r;  // a loop without loops inside
-      if (r == gCellCount) break;
-      int ridge = cellAt(gCellBank, r);
-      int edges = edgeHalfPlanes(ridge, kEdgesOther);
-      intersectEdgesInto(kBoth, cut, kEdgesOther, edges, kSpare);
-      if (negligible(kBoth, minArea)) continue;
-      combineCells(cut, ridge, minArea);
-    }
-  }
+  buildLayers(minArea);
+  if (gAreaStopAtCap && gAreaOverflows > 0) return;
+  for (int c = 0; c < gCellCount; ++c) emitCell(cellAt(gCellBank, c), minArea);
 }
 
 // --- Walls (area_walls.cpp) -----------------------------------------------------------------------
