@@ -142,7 +142,6 @@ float signedArea(int p) {
 
 float polygonArea(int p) { return abs(signedArea(p)); }
 
-
 vec2 polygonCentroid(int p) {
   int n = vertexCount(p);
   if (n == 0) return vec2(0.0);

@@ -35,7 +35,7 @@
 const int kStraightMaterial = 0, kStraightFoot = 1, kStraightTangent = 3, kStraightBinormal = 5,
           kStraightProfileFirst = 7, kStraightProfileCount = 8, kStraightJoint = 9, kStraightJointPoint = 15,
           kStraightOpenEnd = 19, kStraightSize = 21;
-// A strip of one groove's profile: b0, b1, takes part, plane.
+// A strip of one groove's profile: b0, b1, kind (0 keeps the cells' planes, 1 cut, 2 ridge), plane.
 const int kStripSize = 6;
 // A cell: polygon, the cut layer's plane and owner, the ridge layer's plane and owner, box.
 const int kCellPlane = AREA_POLY, kCellRidge = 4, kCellBox = AREA_POLY + 8, kCellSize = AREA_POLY + 12;
