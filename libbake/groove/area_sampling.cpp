@@ -88,7 +88,10 @@ Projected project(const Frame& f, const SurfacePiece& piece, bool withLightView)
     p.lightBox.upper = {std::max(p.lightBox.upper.u, l.u), std::max(p.lightBox.upper.v, l.v)};
     if (withLightView) p.lightView.add(l);
   }
-  makeCounterClockwise(p.screen);
+  // A facet's screen image keeps its counter-clockwise order when it faces the viewer (the map
+  // x -> x - h(x) E_uv / E_w has determinant N.E / (N_w E_w) > 0, and the sampler skips the pieces
+  // facing it less than that); walls and back faces are sorted.
+  if (piece.wall || !(p.facingViewer > 1e-12)) makeCounterClockwise(p.screen);
   if (withLightView) makeCounterClockwise(p.lightView);
   p.screenBox = boundsOf(p.screen);
   return p;
@@ -141,15 +144,20 @@ bool inFrontOfPlaneOf(const Projected& me, const Projected& other, double margin
   return true;
 }
 
-// The visible part of piece i inside the footprint: its projection minus the pieces in front.
-void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i,
-                 const std::array<HalfPlane, kPolygonMaxVertices>& footprintEdges, int footprintEdgeCount,
-                 FragmentSet& visible) {
+// The half-planes of a piece's screen image: they clip the footprint and every overlap with it.
+struct ScreenEdges {
+  std::array<HalfPlane, kPolygonMaxVertices> edge;
+  int count = 0;
+};
+
+// The visible part of piece i inside the footprint: its projection minus the pieces in front. The
+// footprint is clipped by the piece (rather than the other way round): it is the smaller of the two,
+// mostly inside every edge of the piece, and such an edge costs no clip.
+void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ConvexPolygon& footprint,
+                 const ScreenEdges& meEdges, FragmentSet& visible) {
   const Projected& me = all[i];
-  visible.add(intersect(me.screen, footprintEdges, footprintEdgeCount));
-  Box2 bounds = visible.bounds();
-  std::array<HalfPlane, kPolygonMaxVertices> meEdges;  // me.screen clips every overlap below
-  const int meEdgeCount = edgeHalfPlanes(me.screen, meEdges);  // kept up to date: it only changes with a subtraction
+  visible.add(intersect(footprint, meEdges.edge, meEdges.count));
+  Box2 bounds = visible.bounds();  // kept up to date: it only changes with a subtraction
   for (std::size_t j = 0; j < all.size() && visible.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds) || behindPlaneOf(me, other))
@@ -159,7 +167,7 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
       bounds = visible.bounds();
       continue;
     }
-    const ConvexPolygon overlap = intersect(other.screen, meEdges, meEdgeCount);
+    const ConvexPolygon overlap = intersect(other.screen, meEdges.edge, meEdges.count);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
     if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) {
@@ -182,11 +190,10 @@ ConvexPolygon shadowOnScreen(const Frame& f, const Projected& receiver, const Pr
 }
 
 // The lit part of `part` (visible fragments of piece i).
-void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, FragmentSet& part) {
+void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ScreenEdges& meEdges,
+             FragmentSet& part) {
   const Projected& me = all[i];
   Box2 bounds = part.bounds();  // kept up to date: it only changes with a subtraction
-  std::array<HalfPlane, kPolygonMaxVertices> meEdges;  // me.screen clips every overlap below
-  const int meEdgeCount = edgeHalfPlanes(me.screen, meEdges);
   for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
     const Projected& other = all[j];
     if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
@@ -198,7 +205,7 @@ void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, F
       bounds = part.bounds();
       continue;
     }
-    const ConvexPolygon overlap = intersect(shadow, meEdges, meEdgeCount);
+    const ConvexPolygon overlap = intersect(shadow, meEdges.edge, meEdges.count);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec3 p = seenPoint(f, me, centroid(overlap));
     if (lightDistance(other, p) > f.depthTolerance) {
@@ -357,8 +364,7 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
   Rgb sum{0, 0, 0};
   thread_local FragmentSet visible;
   RadianceMemo radianceOf(job.scene.materials, f.toViewer, job.lighting);
-  std::array<HalfPlane, kPolygonMaxVertices> fpEdges;  // every visible part starts as a piece clipped by these
-  const int fpEdgeCount = edgeHalfPlanes(fp, fpEdges);
+  ScreenEdges meEdges;
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
@@ -367,10 +373,11 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     visible.count = 0;
     visible.minArea = f.minArea;
     visible.overflows = 0;
-    visiblePart(f, all, i, fpEdges, fpEdgeCount, visible);
+    meEdges.count = edgeHalfPlanes(me.screen, meEdges.edge);
+    visiblePart(f, all, i, fp, meEdges, visible);
     if (visible.count == 0) continue;
     ++stats.visiblePieces;
-    litPart(f, all, i, visible);
+    litPart(f, all, i, meEdges, visible);
     stats.fragmentOverflows += visible.overflows;
     const double share = visible.weightedArea() / footprintArea;
     for (int c = 0; c < 3; ++c) sum[c] += share * radiance[c];

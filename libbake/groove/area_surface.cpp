@@ -62,19 +62,15 @@ bool hasLayer(const StraightGroove& g, bool cuts) {
   return false;
 }
 
-ConvexPolygon clipToGroove(ConvexPolygon p, const StraightGroove& g, double b0, double b1) {
-  clipInPlace(p, g.joint[0]);
-  clipInPlace(p, g.joint[1]);
-  clipInPlace(p, g.atLeast(b0));
-  clipInPlace(p, g.atMost(b1));
-  return p;
-}
-
-// True unless the whole polygon lies inside h (clipping by h leaves it as it is).
-bool cutsPolygon(const HalfPlane& h, const ConvexPolygon& p) {
-  for (int i = 0; i < p.count; ++i)
-    if (h.distance(p.vertex[i]) < 0) return true;
-  return false;
+// 1: the polygon lies inside h (boundary included), -1: outside it, 0: h's line crosses it.
+int sideOf(const ConvexPolygon& p, const HalfPlane& h) {
+  bool allIn = true, allOut = true;
+  for (int i = 0; i < p.count; ++i) {
+    const double d = h.distance(p.vertex[i]);
+    allIn = allIn && d >= 0;
+    allOut = allOut && d <= 0;
+  }
+  return allIn ? 1 : allOut ? -1 : 0;
 }
 
 enum class Side { inside, outside, across };
@@ -133,10 +129,48 @@ void resolve(const Cell& cell, const ConvexPolygon& inside, const HeightPlane& s
   const bool stripWinsEverywhere = cuts ? lowest >= 0 : highest <= 0;
   if (cellWinsEverywhere) return pushCell(out, inside, cell.plane, cell.owner, minArea, stats);
   if (stripWinsEverywhere) return pushCell(out, inside, stripPlane, owner, minArea, stats);
-  const HalfPlane cellLower = whereLower(cell.plane, stripPlane);
-  const HalfPlane stripLower{{-cellLower.normal.u, -cellLower.normal.v}, -cellLower.offset};
-  pushCell(out, clip(inside, cuts ? cellLower : stripLower), cell.plane, cell.owner, minArea, stats);
-  pushCell(out, clip(inside, cuts ? stripLower : cellLower), stripPlane, owner, minArea, stats);
+  ConvexPolygon cellLower, stripLower;
+  split(inside, whereLower(cell.plane, stripPlane), cellLower, stripLower);
+  pushCell(out, cuts ? cellLower : stripLower, cell.plane, cell.owner, minArea, stats);
+  pushCell(out, cuts ? stripLower : cellLower, stripPlane, owner, minArea, stats);
+}
+
+// The part of `cell` inside g's band (`inBand`, already clipped by its joint and side lines) cut into
+// g's strips. They follow each other across the groove, so one split per line between two strips
+// slices it; lines the part lies wholly on one side of (by its range across the groove, with a
+// rounding margin) are not clipped by.
+void sliceIntoStrips(const StraightGroove& g, const std::vector<Strip>& strips, const Cell& cell,
+                     const ConvexPolygon& inBand, bool cuts, double minArea, std::vector<Cell>& out,
+                     SurfaceBuildStats& stats) {
+  double bLow = 1e300, bHigh = -1e300;
+  for (int i = 0; i < inBand.count; ++i) {
+    const double b = g.across(inBand.vertex[i]);
+    bLow = std::min(bLow, b);
+    bHigh = std::max(bHigh, b);
+  }
+  const double slack = 1e-9 * (std::abs(bLow) + std::abs(bHigh) + (bHigh - bLow));
+  ConvexPolygon buffers[2] = {inBand, {}};
+  ConvexPolygon* rest = &buffers[0];  // the part beyond the strips done so far
+  ConvexPolygon* beyond = &buffers[1];
+  ConvexPolygon piece;
+  for (std::size_t k = 0; k < strips.size() && !rest->empty(); ++k) {
+    const Strip& s = strips[k];
+    if (s.b1 < bLow - slack) continue;  // the part lies beyond this strip
+    const bool last = k + 1 == strips.size() || s.b1 > bHigh + slack;
+    const ConvexPolygon* inStrip = rest;
+    if (!last) {
+      split(*rest, g.atMost(s.b1), piece, *beyond);
+      std::swap(rest, beyond);
+      inStrip = &piece;
+    }
+    if (!inStrip->empty()) {
+      if (!s.takesPart)
+        pushCell(out, *inStrip, cell.plane, cell.owner, minArea, stats);
+      else
+        resolve(cell, *inStrip, s.plane, int(g.order), cuts, minArea, out, stats);
+    }
+    if (last) break;
+  }
 }
 
 // One layer (cuts or ridges): the base plane's cell overlaid with every groove in turn.
@@ -151,29 +185,23 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
   for (const StraightGroove& g : grooves) {
     if (stopAtCap && stats.overflows > 0) break;
     if (!hasLayer(g, cuts)) continue;
-    const ConvexPolygon band = clipToGroove(region, g, g.profile.front().u, g.profile.back().u);
-    if (band.empty() || area(band) <= minArea) continue;
-    const Box2 bandBox = boundsOf(band);
     // The band as the groove's own lines (joints, then the strip's two sides), those that cut the
-    // region: inside the region (every cell is) they bound the same polygon as the band's edges, with
-    // the exact lines the strips below are clipped by, and no edge along the region's border to peel
-    // off for nothing.
+    // region: inside the region (every cell is) they bound the band's part of it, with the exact
+    // lines the strips below are clipped by, and no edge along the region's border to peel off for
+    // nothing. A band that misses the region (which lies outside one of its lines) is skipped.
     const HalfPlane lines[4] = {g.joint[0], g.joint[1], g.atLeast(g.profile.front().u), g.atMost(g.profile.back().u)};
     std::array<HalfPlane, kPolygonMaxVertices> bandEdges;
     int bandEdgeCount = 0;
-    bool jointCuts[2] = {false, false};
-    for (int k = 0; k < 4; ++k) {
-      if (!cutsPolygon(lines[k], region)) continue;
-      bandEdges[bandEdgeCount++] = lines[k];
-      if (k < 2) jointCuts[k] = true;
+    bool missesRegion = false;
+    for (int k = 0; k < 4 && !missesRegion; ++k) {
+      const int side = sideOf(region, lines[k]);
+      missesRegion = side < 0;
+      if (side == 0) bandEdges[bandEdgeCount++] = lines[k];
     }
+    if (missesRegion) continue;
     stripsOf(g, cuts, strips);
     next.clear();
     for (const Cell& cell : cells) {
-      if (!boundsOf(cell.polygon).overlaps(bandBox)) {
-        keepCell(next, cell, stats);
-        continue;
-      }
       // A cell inside every line of the band has nothing outside it (subtract would find no piece),
       // one outside some line misses it: both without clipping.
       const Side side = sideOf(cell.polygon, bandEdges, bandEdgeCount);
@@ -181,36 +209,15 @@ void buildLayer(const std::vector<StraightGroove>& grooves, const ConvexPolygon&
       if (side == Side::across) {
         n = subtract(cell.polygon, bandEdges, bandEdgeCount, minArea, outside, inBand);  // inBand: cell and band
         if (area(inBand) <= minArea) n = -1;
+      } else {
+        inBand = cell.polygon;
       }
       if (side == Side::outside || n < 0) {
         keepCell(next, cell, stats);
         continue;
       }
       for (int i = 0; i < n; ++i) pushCell(next, outside[i], cell.plane, cell.owner, minArea, stats);
-      // The joint lines once per cell, then each strip's two lines (the same clips as clipToGroove);
-      // strips that miss the cell's range across the groove are skipped.
-      ConvexPolygon jointed = cell.polygon;
-      if (jointCuts[0]) clipInPlace(jointed, g.joint[0]);
-      if (jointCuts[1]) clipInPlace(jointed, g.joint[1]);
-      if (jointed.empty()) continue;
-      double bLow = 1e300, bHigh = -1e300;
-      for (int i = 0; i < jointed.count; ++i) {
-        const double b = g.across(jointed.vertex[i]);
-        bLow = std::min(bLow, b);
-        bHigh = std::max(bHigh, b);
-      }
-      const double slack = 1e-9 * (std::abs(bLow) + std::abs(bHigh) + (bHigh - bLow));
-      for (const Strip& s : strips) {
-        if (s.b1 < bLow - slack || s.b0 > bHigh + slack) continue;
-        ConvexPolygon inside = jointed;
-        clipInPlace(inside, g.atLeast(s.b0));
-        clipInPlace(inside, g.atMost(s.b1));
-        if (inside.empty()) continue;
-        if (!s.takesPart)
-          pushCell(next, inside, cell.plane, cell.owner, minArea, stats);
-        else
-          resolve(cell, inside, s.plane, int(g.order), cuts, minArea, next, stats);
-      }
+      sliceIntoStrips(g, strips, cell, inBand, cuts, minArea, next, stats);
     }
     cells.swap(next);
   }
@@ -254,10 +261,9 @@ void combine(const std::vector<StraightGroove>& grooves, std::size_t baseMateria
   }
   // |cut| >= ridge where -cut - ridge >= 0, i.e. where the summed plane is <= 0.
   const HeightPlane zero{};
-  const HalfPlane cutDeeper = whereLower(sum, zero);
-  const HalfPlane ridgeHigher{{-cutDeeper.normal.u, -cutDeeper.normal.v}, -cutDeeper.offset};
   const bool cutFirst = cut.owner < ridge.owner;  // ties go to the earlier primitive
-  const ConvexPolygon cutPart = clip(both, cutDeeper), ridgePart = clip(both, ridgeHigher);
+  ConvexPolygon cutPart, ridgePart;  // where the cut is deeper, where the ridge is higher
+  split(both, whereLower(sum, zero), cutPart, ridgePart);
   const ConvexPolygon& first = cutFirst ? cutPart : ridgePart;
   std::array<ConvexPolygon, kPolygonMaxVertices> rest;
   const int n = subtract(both, first, minArea, rest);
@@ -338,10 +344,14 @@ void buildHeightPieces(const std::vector<StraightGroove>& grooves, std::size_t b
   }
   buildLayer(grooves, region, false, minArea, stopAtCap, ridges, scratch, stats);
   if (stopAtCap && stats.overflows > 0) return;
+  thread_local std::vector<Box2> ridgeBoxes;
+  ridgeBoxes.clear();
+  for (const Cell& r : ridges) ridgeBoxes.push_back(boundsOf(r.polygon));
   for (const Cell& c : cuts) {
-    const Box2 cb = boundsOf(c.polygon);
-    for (const Cell& r : ridges) {
-      if (!cb.overlaps(boundsOf(r.polygon))) continue;
+    const Box2 cutBox = boundsOf(c.polygon);
+    for (std::size_t k = 0; k < ridges.size(); ++k) {
+      const Cell& r = ridges[k];
+      if (!cutBox.overlaps(ridgeBoxes[k])) continue;
       const ConvexPolygon both = intersect(c.polygon, r.polygon);
       if (both.empty() || area(both) <= minArea) continue;
       combine(grooves, baseMaterial, c, r, both, minArea, out, stats);

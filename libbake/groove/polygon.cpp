@@ -13,14 +13,6 @@ HalfPlane leftOf(Vec2 a, Vec2 b) {
   return {n, n.u * a.u + n.v * a.v};
 }
 
-void ConvexPolygon::add(Vec2 x) {
-  if (count == kPolygonMaxVertices) {
-    truncated = true;
-    return;
-  }
-  vertex[count++] = x;
-}
-
 ConvexPolygon parallelogram(Vec2 centre, Vec2 axis1, Vec2 axis2) {
   ConvexPolygon p;
   const double h1u = 0.5 * axis1.u, h1v = 0.5 * axis1.v, h2u = 0.5 * axis2.u, h2v = 0.5 * axis2.v;
@@ -107,6 +99,37 @@ void clipWithDistances(const ConvexPolygon& p, const std::array<double, kPolygon
   if (out.count < 3) out.count = 0;
 }
 
+// Both parts of p at once: `in` where d >= 0 and `out` where d <= 0, the very vertices
+// clipWithDistances gives for d and for -d (a crossing's t = d_i / (d_i - d_j) is the same number
+// for both signs), in one pass over p.
+void splitWithDistances(const ConvexPolygon& p, const std::array<double, kPolygonMaxVertices>& d, ConvexPolygon& in,
+                        ConvexPolygon& out) {
+  in.count = out.count = 0;
+  in.truncated = out.truncated = p.truncated;
+  auto addDistinct = [](ConvexPolygon& to, Vec2 x) {
+    if (to.count > 0 && to.vertex[to.count - 1].u == x.u && to.vertex[to.count - 1].v == x.v) return;
+    to.add(x);
+  };
+  for (int i = 0; i < p.count; ++i) {
+    const int j = i + 1 == p.count ? 0 : i + 1;
+    if (d[i] >= 0) addDistinct(in, p.vertex[i]);
+    if (d[i] <= 0) addDistinct(out, p.vertex[i]);
+    if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
+      const double t = d[i] / (d[i] - d[j]);
+      const Vec2 a = p.vertex[i], b = p.vertex[j];
+      const Vec2 x{a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)};
+      addDistinct(in, x);
+      addDistinct(out, x);
+    }
+  }
+  for (ConvexPolygon* part : {&in, &out}) {
+    ConvexPolygon& q = *part;
+    if (q.count > 1 && q.vertex[0].u == q.vertex[q.count - 1].u && q.vertex[0].v == q.vertex[q.count - 1].v)
+      --q.count;
+    if (q.count < 3) q.count = 0;
+  }
+}
+
 // -1: p lies outside h (boundary included), 1: inside, 0: crossed (d holds the distances).
 int sideOf(const ConvexPolygon& p, const HalfPlane& h, std::array<double, kPolygonMaxVertices>& d) {
   bool allInside = true, allOutside = true;
@@ -146,19 +169,60 @@ void clipInPlace(ConvexPolygon& p, const HalfPlane& h) {
   p = out;
 }
 
+int split(const ConvexPolygon& p, const HalfPlane& h, ConvexPolygon& inside, ConvexPolygon& outside) {
+  inside.truncated = outside.truncated = p.truncated;
+  if (p.count == 0) {
+    inside.count = outside.count = 0;
+    return -1;
+  }
+  std::array<double, kPolygonMaxVertices> d;
+  const int side = sideOf(p, h, d);
+  if (side != 0) {
+    (side > 0 ? inside : outside) = p;
+    (side > 0 ? outside : inside).count = 0;
+    return side;
+  }
+  splitWithDistances(p, d, inside, outside);
+  return 0;
+}
+
+void splitInPlace(ConvexPolygon& p, const HalfPlane& h, ConvexPolygon& outside) {
+  outside.truncated = p.truncated;
+  if (p.count == 0) {
+    outside.count = 0;
+    return;
+  }
+  std::array<double, kPolygonMaxVertices> d;
+  const int side = sideOf(p, h, d);
+  if (side > 0) {
+    outside.count = 0;
+  } else if (side < 0) {
+    outside = p;
+    p.count = 0;
+  } else {
+    ConvexPolygon in;
+    splitWithDistances(p, d, in, outside);
+    p = in;
+  }
+}
+
 // The half-planes of a convex polygon's edges, leaving out edges too short to have a reliable
 // direction (rounding leaves such slivers where clip lines pass through vertices): the neighbouring
 // edges bound the polygon there to within that length.
 int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVertices>& out) {
-  const Box2 b = boundsOf(p);
-  const double size = std::max(b.upper.u - b.lower.u, b.upper.v - b.lower.v);
-  const double shortest = 1e-12 * size;
-  int n = 0;
+  // The polygon's size: its longest edge's larger extent (within a factor of the vertex count of the
+  // box's size, all a relative threshold needs).
+  std::array<double, kPolygonMaxVertices> extent;
+  double size = 0;
   for (int i = 0; i < p.count; ++i) {
     const Vec2 a = p.vertex[i], c = p.vertex[i + 1 == p.count ? 0 : i + 1];
-    if (std::max(std::abs(c.u - a.u), std::abs(c.v - a.v)) <= shortest) continue;
-    out[n++] = leftOf(a, c);
+    extent[i] = std::max(std::abs(c.u - a.u), std::abs(c.v - a.v));
+    size = std::max(size, extent[i]);
   }
+  const double shortest = 1e-12 * size;
+  int n = 0;
+  for (int i = 0; i < p.count; ++i)
+    if (extent[i] > shortest) out[n++] = leftOf(p.vertex[i], p.vertex[i + 1 == p.count ? 0 : i + 1]);
   return n;
 }
 
@@ -205,11 +269,9 @@ int subtract(const ConvexPolygon& p, const std::array<HalfPlane, kPolygonMaxVert
   }
   rest = p;
   for (int i = 0; i < count && !rest.empty(); ++i) {
-    const HalfPlane& inside = edges[i];
-    const HalfPlane outside{{-inside.normal.u, -inside.normal.v}, -inside.offset};
-    const ConvexPolygon piece = clip(rest, outside);
-    if (!piece.empty() && area(piece) > minArea) pieces[n++] = piece;
-    clipInPlace(rest, inside);
+    // The part outside this edge is a piece; what is inside goes on to the next edge.
+    splitInPlace(rest, edges[i], pieces[n]);
+    if (!pieces[n].empty() && area(pieces[n]) > minArea) ++n;
   }
   if (rest.empty()) rest.count = 0;
   return n;

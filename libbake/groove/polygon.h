@@ -47,7 +47,13 @@ struct ConvexPolygon {
   }
 
   bool empty() const { return count < 3; }
-  void add(Vec2 x);  // drops x (and sets `truncated`) when full
+  void add(Vec2 x) {  // drops x (and sets `truncated`) when full
+    if (count == kPolygonMaxVertices) {
+      truncated = true;
+      return;
+    }
+    vertex[count++] = x;
+  }
 };
 
 ConvexPolygon parallelogram(Vec2 centre, Vec2 axis1, Vec2 axis2);  // centre +- axis1/2 +- axis2/2, CCW
@@ -66,8 +72,15 @@ Box2 boundsOf(const ConvexPolygon& p);
 
 ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h);
 void clipInPlace(ConvexPolygon& p, const HalfPlane& h);  // p = clip(p, h), without copying when unchanged
+// Both sides of h's line in one pass: `inside` = clip(p, h) and `outside` = clip(p, -h), vertex for
+// vertex. Returns 1 when p lies inside h (boundary included), -1 when outside, 0 when the line crosses
+// it.
+int split(const ConvexPolygon& p, const HalfPlane& h, ConvexPolygon& inside, ConvexPolygon& outside);
+// p = clip(p, h) and outside = clip(p, -h) (of the former p).
+void splitInPlace(ConvexPolygon& p, const HalfPlane& h, ConvexPolygon& outside);
 // The half-planes of a counter-clockwise polygon's edges that intersect() and subtract() use: edges
-// shorter than 1e-12 of the polygon's size are left out (their direction is rounding noise).
+// shorter than 1e-12 of the polygon's size (its longest edge) are left out (their direction is
+// rounding noise).
 int edgeHalfPlanes(const ConvexPolygon& p, std::array<HalfPlane, kPolygonMaxVertices>& out);
 // `clipper` counter-clockwise.
 ConvexPolygon intersect(const ConvexPolygon& p, const ConvexPolygon& clipper);
