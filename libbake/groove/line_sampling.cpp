@@ -131,7 +131,8 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   SectionDirection e = inSection(section, toViewer);
   e.w = std::max(e.w, kMinViewW);
   thread_local std::vector<FacetSpan> visible, lit;
-  visibleSpans(section, e, visible);
+  thread_local std::vector<double> seenAt;  // each point's acrossCoordinate along e
+  visibleSpans(section, e, visible, seenAt);
   visibleSpans(section, inSection(section, lighting.toLight), lit);
   const std::vector<SectionPoint>& pts = section.points;
   RadianceMemo radiance(scene.materials, toViewer, lighting);
@@ -139,7 +140,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
     const FacetSpan& v = visible[i];
     if (v.empty()) continue;
     // Base-line position seen through the facet point at t (projection along E').
-    const double p0 = acrossCoordinate(section, pts[i], e) / e.w, p1 = acrossCoordinate(section, pts[i + 1], e) / e.w;
+    const double p0 = seenAt[i] / e.w, p1 = seenAt[i + 1] / e.w;
     // The footprint's share between two points of the facet: on a perturbed section the line of the
     // surface through each point turns away from T by its rate, so each end has its own density
     // (the shares of consecutive facets still add up: they meet at the same point). The section's two

@@ -129,16 +129,18 @@ void subdivideFacets(CrossSection& section, int pieces) {
   section.material.swap(material);
 }
 
-void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out) {
-  const double db = d.b, dw = d.w;
+void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out,
+                  std::vector<double>& across) {
+  const double dw = d.w;
   const std::size_t facets = section.facetCount();
   out.assign(facets, FacetSpan{});
-  const std::vector<SectionPoint>& pts = section.points;
-  if (db >= 0) {
+  across.resize(section.points.size());
+  for (std::size_t i = 0; i < section.points.size(); ++i) across[i] = acrossCoordinate(section, section.points[i], d);
+  if (d.b >= 0) {
     // Occluders come from the right: running minimum of k, walking leftwards.
     double lowest = dw < 0 ? -kInfinity : kInfinity;
     for (std::size_t i = facets; i-- > 0;) {
-      const double k0 = acrossCoordinate(section, pts[i], d), k1 = acrossCoordinate(section, pts[i + 1], d);
+      const double k0 = across[i], k1 = across[i + 1];
       if (k1 > k0 && k0 < lowest) out[i] = {0, std::min(1.0, (lowest - k0) / (k1 - k0))};
       lowest = std::min(lowest, std::min(k0, k1));
     }
@@ -146,11 +148,16 @@ void visibleSpans(const CrossSection& section, const SectionDirection& d, std::v
     // Occluders come from the left: running maximum of k, walking rightwards.
     double highest = dw < 0 ? kInfinity : -kInfinity;
     for (std::size_t i = 0; i < facets; ++i) {
-      const double k0 = acrossCoordinate(section, pts[i], d), k1 = acrossCoordinate(section, pts[i + 1], d);
+      const double k0 = across[i], k1 = across[i + 1];
       if (k1 > k0 && k1 > highest) out[i] = {std::max(0.0, (highest - k0) / (k1 - k0)), 1};
       highest = std::max(highest, std::max(k0, k1));
     }
   }
+}
+
+void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out) {
+  thread_local std::vector<double> across;
+  visibleSpans(section, d, out, across);
 }
 
 void facetNormal(const CrossSection& section, std::size_t facet, double& nb, double& nh) {

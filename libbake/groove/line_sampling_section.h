@@ -102,6 +102,9 @@ double acrossCoordinate(const CrossSection& section, const SectionPoint& p, cons
 
 // The part of each facet seen from the direction d (masking for E, shadowing for L), the flat base
 // continuing to infinity on both sides. A direction below the horizon (d.w < 0) sees nothing.
+// `across` receives every point's acrossCoordinate along d, for callers that need them too.
+void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out,
+                  std::vector<double>& across);
 void visibleSpans(const CrossSection& section, const SectionDirection& d, std::vector<FacetSpan>& out);
 
 // Curved sections: splits every facet that changes height into `pieces` (the moved positions are
