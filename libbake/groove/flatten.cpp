@@ -181,8 +181,9 @@ Vec2 Primitive::pointAt(double t) const {
 
 Vec2 Primitive::tangentAt(double t) const {
   if (kind == Kind::Segment) {
-    const double len = norm(b - a);
-    return len > 0 ? (1 / len) * (b - a) : Vec2{};
+    const Vec2 d = b - a;
+    const double len = std::sqrt(d.u * d.u + d.v * d.v);  // a validated scene's extent: no overflow
+    return len > 0 ? (1 / len) * d : Vec2{};
   }
   const double angle = startAngle + sweep * t, s = sweep < 0 ? -1.0 : 1.0;
   return {-s * std::sin(angle), s * std::cos(angle)};

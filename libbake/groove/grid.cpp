@@ -187,6 +187,16 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
         stamp[r] = gather;
         out.push_back(r);
       }
+    // Distinct already; in index order by a scan of the stamps when they are dense enough that the
+    // scan is cheaper than a sort (a footprint over many grooves).
+    if (out.size() * 16 >= stamp.size()) {
+      out.clear();
+      for (std::uint32_t r = 0; r < stamp.size(); ++r)
+        if (stamp[r] == gather) out.push_back(r);
+      return;
+    }
+    std::sort(out.begin(), out.end());
+    return;
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -8,8 +8,9 @@
 namespace bake::groove {
 namespace {
 
+// a is a sum of two unit tangents: no overflow to guard against.
 Vec2 unit(Vec2 a) {
-  const double n = std::hypot(a.u, a.v);
+  const double n = std::sqrt(a.u * a.u + a.v * a.v);
   return n > 0 ? Vec2{a.u / n, a.v / n} : Vec2{0, 0};
 }
 
