@@ -255,8 +255,10 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
 
   std::vector<Polygon> regions(count);
   std::vector<grid_detail::FloatBox> boxes(count);
+  std::vector<PrimitiveJoints> joints(count);
   parallelFor(count, threads, [&](std::size_t i) {
-    regions[i] = grid_detail::regionPolygon(scene, i, cap);
+    joints[i] = jointsOf(scene, i);
+    regions[i] = grid_detail::regionPolygon(scene, i, cap, joints[i]);
     boxes[i] = grid_detail::FloatBox::of(regions[i]);
   });
 
@@ -272,6 +274,7 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
   grid.cells[0] = lattice.cells[0];
   grid.cells[1] = lattice.cells[1];
   grid.wrapRepeat = lattice.wrap;
+  grid.joints = std::move(joints);
   BAKE_RETURN_IF_ERROR(
       buildCsr(grid.cellCount(), primitiveCellStart, primitiveCells, "primitive", threads, grid.cellStart, grid.primitiveRefs));
 

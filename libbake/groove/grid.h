@@ -54,6 +54,9 @@ struct GrooveGrid {
   std::vector<std::uint32_t> recordRefs;
   std::vector<SpecialRecord> records;
   bool wrapRepeat = false;
+  // Every primitive's joint lines, as the grid was built with them (found once here rather than at
+  // every pixel); empty for a grid read back from a package, where they are found when needed.
+  std::vector<PrimitiveJoints> joints;
 
   std::uint64_t cellCount() const { return std::uint64_t(cells[0]) * cells[1]; }
   // Primitives / records of the cells that meet the box [lower, upper] (wrapping with the domain when

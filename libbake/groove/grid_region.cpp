@@ -263,9 +263,12 @@ bool Lattice::storedCell(std::int64_t i, std::int64_t j, std::uint32_t& cell) co
 double reachCap(const GrooveScene& scene) { return std::max(scene.domain[0], scene.domain[1]) + scene.wmax; }
 
 Polygon regionPolygon(const GrooveScene& scene, std::size_t index, double cap) {
+  return regionPolygon(scene, index, cap, jointsOf(scene, index));
+}
+
+Polygon regionPolygon(const GrooveScene& scene, std::size_t index, double cap, const PrimitiveJoints& joints) {
   const Primitive& p = scene.primitives[index];
   const double w = scene.grooves[p.groove].wmax;
-  const PrimitiveJoints joints = jointsOf(scene, index);
   return p.kind == Primitive::Kind::Segment ? segmentRegion(p, joints, w, cap) : arcRegion(p, joints, w, cap);
 }
 

@@ -54,6 +54,8 @@ double reachCap(const GrooveScene& scene);
 
 // The convex polygon holding primitive `index`'s region (grid_region.cpp).
 Polygon regionPolygon(const GrooveScene& scene, std::size_t index, double cap);
+// The same with the primitive's joints already found.
+Polygon regionPolygon(const GrooveScene& scene, std::size_t index, double cap, const PrimitiveJoints& joints);
 
 // Appends the stored cells that `polygon` meets (ascending, each once) to `cells` (grid_region.cpp).
 void cellsOfPolygon(const Lattice& lattice, const Polygon& polygon, std::vector<std::uint32_t>& cells);

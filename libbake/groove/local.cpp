@@ -35,6 +35,10 @@ double perturbationOffsetRate(const Perturbation& perturbation, double arcLength
 }
 
 LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at) {
+  return localGroove(scene, primitive, at, jointsOf(scene, primitive));
+}
+
+LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at, const PrimitiveJoints& joints) {
   const Primitive& p = scene.primitives[primitive];
   const Groove& g = scene.grooves[p.groove];
   LocalGroove local;
@@ -66,7 +70,7 @@ LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 
   local.offset = perturbationOffset(g.perturbation, local.arcLength);
   local.scaleRate = perturbationScaleRate(g.perturbation, local.arcLength);
   local.offsetRate = perturbationOffsetRate(g.perturbation, local.arcLength);
-  local.joints = jointsOf(scene, primitive);
+  local.joints = joints;
   return local;
 }
 

@@ -147,8 +147,11 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
 
   grooves.clear();
-  for (std::uint32_t p : found)
-    grooves.push_back(localGroove(scene_, p, nearestCopy(scene_, scene_.primitives[p], footprint.centre)));
+  const bool jointsKnown = grid_.joints.size() == scene_.primitives.size();
+  for (std::uint32_t p : found) {
+    const Vec2 at = nearestCopy(scene_, scene_.primitives[p], footprint.centre);
+    grooves.push_back(jointsKnown ? localGroove(scene_, p, at, grid_.joints[p]) : localGroove(scene_, p, at));
+  }
   // §4.2: a special case is an intersection or an end inside the box. A record's box already holds
   // the bands around its point (the overlap of two regions, an end's cut and walls, a mitre), so it
   // is met against the footprint's box swept along view and light, not grown by wmax again.

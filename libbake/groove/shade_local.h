@@ -35,6 +35,8 @@ struct LocalGroove {
 // `at` is the footprint centre; for a wrapping scene, the caller passes the copy of the centre
 // nearest the primitive.
 LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at);
+// The same with the primitive's joints already found.
+LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 at, const PrimitiveJoints& joints);
 
 double perturbationScale(const Perturbation& perturbation, double arcLength);
 double perturbationOffset(const Perturbation& perturbation, double arcLength);
