@@ -125,6 +125,24 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
 
 }  // namespace
 
+namespace {
+
+// The light in the section. On a section whose tracks bend (accelB), a shadow ray leaves a seen point
+// at its own travel along T, not at the section's line: the light's lines are followed from the
+// travel where the ray from the deepest seen point crosses the base plane (travelBase), so the
+// shadow a rim casts there (the floor of a wandering box groove) is exact to second order.
+SectionDirection lightDirection(const CrossSection& section, const SectionDirection& e, const Vec3& toLight) {
+  SectionDirection l = inSection(section, toLight);
+  if (!(l.w > 0) || !std::any_of(section.points.begin(), section.points.end(), [](const SectionPoint& p) { return p.accelB != 0; }))
+    return l;
+  double deepest = 0;
+  for (const SectionPoint& p : section.points) deepest = std::min(deepest, p.h);
+  l.travelBase = deepest * (e.t / e.w - l.t / l.w);
+  return l;
+}
+
+}  // namespace
+
 SectionShading shadeSection(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
                             const Vec3& toViewer, const Lighting& lighting) {
   SectionShading out;
@@ -133,7 +151,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   thread_local std::vector<FacetSpan> visible, lit;
   thread_local std::vector<double> seenAt;  // each point's acrossCoordinate along e
   visibleSpans(section, e, visible, seenAt);
-  visibleSpans(section, inSection(section, lighting.toLight), lit);
+  visibleSpans(section, lightDirection(section, e, lighting.toLight), lit);
   const std::vector<SectionPoint>& pts = section.points;
   RadianceMemo radiance(scene.materials, toViewer, lighting);
   for (std::size_t i = 0; i < section.facetCount(); ++i) {

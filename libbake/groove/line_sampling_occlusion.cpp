@@ -83,18 +83,21 @@ SectionDirection inSection(const CrossSection& section, const Vec3& d) {
 }
 
 // The point of a perturbed section met by the line along d: at travel s along T it has moved to
-// (b + rateB s, h + rateH s), and the line reaches height h' after s = h' d.t / d.w, so
-// s = h d.t / (d.w - rateH d.t). A point's track steeper than the line (the denominator below half
-// of d.w) is capped there; below the horizon nothing moves (everything but lit walls is hidden).
+// (b + rateB s + accelB s^2 / 2, h + rateH s), and the line reaches height h' after s = h' d.t / d.w,
+// so s = h d.t / (d.w - rateH d.t) (the second-order term of h is left out). A point's track steeper
+// than the line (the denominator below half of d.w) is capped there; below the horizon nothing moves
+// (everything but lit walls is hidden). With a travelBase the tracks' slopes are taken there (rateB +
+// accelB travelBase): the points' motion relative to the lines' own base line.
 SectionPoint movedAlong(const SectionPoint& p, const SectionDirection& d) {
-  if (p.h == 0 || !(d.w > 0) || (p.rateB == 0 && p.rateH == 0)) return p;
+  if (p.h == 0 || !(d.w > 0) || (p.rateB == 0 && p.rateH == 0 && p.accelB == 0)) return p;
   const double travel = p.h * d.t / std::max(d.w - p.rateH * d.t, 0.5 * d.w);
-  return {p.b + p.rateB * travel, p.h + p.rateH * travel, p.rateB, p.rateH};
+  const double slope = p.rateB + p.accelB * (d.travelBase + 0.5 * travel);
+  return {p.b + slope * travel, p.h + p.rateH * travel, p.rateB, p.rateH, p.accelB};
 }
 
 double acrossCoordinate(const CrossSection& section, const SectionPoint& point, const SectionDirection& d) {
   // An unperturbed point of a straight section stays where it is (the common case, first).
-  if (point.rateB == 0 && point.rateH == 0 && !std::isfinite(section.centre)) return point.b * d.w - point.h * d.b;
+  if (point.rateB == 0 && point.rateH == 0 && point.accelB == 0 && !std::isfinite(section.centre)) return point.b * d.w - point.h * d.b;
   const SectionPoint p = movedAlong(point, d);
   double b = p.b;
   if (std::isfinite(section.centre) && p.h != 0) {
@@ -121,7 +124,8 @@ void subdivideFacets(CrossSection& section, int pieces) {
       const double t = double(k) / n;
       points.push_back(k == n ? b
                               : SectionPoint{a.b + t * (b.b - a.b), a.h + t * (b.h - a.h),
-                                             a.rateB + t * (b.rateB - a.rateB), a.rateH + t * (b.rateH - a.rateH)});
+                                             a.rateB + t * (b.rateB - a.rateB), a.rateH + t * (b.rateH - a.rateH),
+                                             a.accelB + t * (b.accelB - a.accelB)});
       material.push_back(section.material[i]);
     }
   }

@@ -249,11 +249,11 @@ bool grooveHeightAt(const LocalGroove& g, double x, double& h) {
 void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& grooves) {
   // Every point of a band gets its rates, the rims too: they do not move along a line (its travel is
   // 0 at h = 0), but a facet's tilt comes from both its ends.
-  for (SectionPoint& p : section.points) p.rateB = 0, p.rateH = 0;
+  for (SectionPoint& p : section.points) p.rateB = 0, p.rateH = 0, p.accelB = 0;
   // Unperturbed grooves (the common case) leave every rate 0: the search below, each point against
   // every groove, is quadratic in a footprint over many grooves.
   const bool anyRate = std::any_of(grooves.begin(), grooves.end(), [](const SectionGroove& g) {
-    return g.groove->scaleRate != 0 || g.groove->offsetRate != 0;
+    return g.groove->scaleRate != 0 || g.groove->offsetRate != 0 || g.groove->scaleAccel != 0 || g.groove->offsetAccel != 0;
   });
   if (!anyRate) return;
   for (SectionPoint& p : section.points) {
@@ -268,13 +268,14 @@ void setSectionRates(CrossSection& section, const std::vector<SectionGroove>& gr
     }
     if (!shaping) continue;
     const LocalGroove& g = *shaping->groove;
-    if (g.scaleRate == 0 && g.offsetRate == 0) continue;
+    if (g.scaleRate == 0 && g.offsetRate == 0 && g.scaleAccel == 0 && g.offsetAccel == 0) continue;
     // Travel along T is travel along the groove's path, reversed when the groove runs against T; the
     // offset x then runs against b as well, so db/dT = dx/ds either way and dh/dT = sign dh/ds.
     const double sign = shaping->reversed ? -1 : 1;
     const double q = (sign * (p.b - shaping->centre) - g.offset) / g.scale;
     p.rateB = g.offsetRate + g.scaleRate * q;
     p.rateH = sign * g.scaleRate * p.h / g.scale;
+    p.accelB = sign * (g.offsetAccel + g.scaleAccel * q);  // d/dT of dx/ds = sign d2x/ds2
   }
 }
 

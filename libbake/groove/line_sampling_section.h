@@ -43,9 +43,12 @@ FootprintLine footprintLine(const Footprint& footprint, Vec2 binormal, Footprint
 
 // rateB, rateH: how the point moves per unit of travel along T (the section's tangent, B = its left
 // normal) under the grooves' linearised perturbation; 0 on unperturbed grooves (setSectionRates).
+// accelB: the second derivative of b along T (the track's bend), for the second-order term of the
+// travel of a line (line_sampling_occlusion.cpp).
 struct SectionPoint {
   double b = 0, h = 0;
   double rateB = 0, rateH = 0;
+  double accelB = 0;
 };
 
 // A polyline over b (non-decreasing; vertical walls are two points at the same b) with one material
@@ -88,8 +91,13 @@ struct FacetSpan {
 };
 
 // A direction in the section's frame: along B, along the tangent T (B = left normal of T), up.
+// travelBase: on a section whose tracks bend (accelB), the travel along T from the section's line to
+// where the light ray from its deepest seen point crosses the base plane. The tracks' slopes are
+// taken there, so the shadow a rim casts on those points is exact to second order
+// (movedAlong, line_sampling_occlusion.cpp; lightDirection, line_sampling.cpp). 0 for the view.
 struct SectionDirection {
   double b = 0, t = 0, w = 1;
+  double travelBase = 0;
 };
 SectionDirection inSection(const CrossSection& section, const Vec3& d);
 

@@ -26,6 +26,12 @@ double perturbationRate(const Perturbation& perturbation, double arcLength) {
   return perturbation.amplitude * k * std::cos(k * arcLength + perturbation.phase);
 }
 
+// d/ds of the rate: -amplitude k^2 sin(k s + phase).
+double perturbationAccel(const Perturbation& perturbation, double arcLength) {
+  const double k = 2 * std::numbers::pi / perturbation.wavelength;
+  return -perturbation.amplitude * k * k * std::sin(k * arcLength + perturbation.phase);
+}
+
 double perturbationScaleRate(const Perturbation& perturbation, double arcLength) {
   return perturbation.kind == Perturbation::Kind::Scale ? perturbationRate(perturbation, arcLength) : 0;
 }
@@ -70,6 +76,8 @@ LocalGroove localGroove(const GrooveScene& scene, std::uint32_t primitive, Vec2 
   local.offset = perturbationOffset(g.perturbation, local.arcLength);
   local.scaleRate = perturbationScaleRate(g.perturbation, local.arcLength);
   local.offsetRate = perturbationOffsetRate(g.perturbation, local.arcLength);
+  if (g.perturbation.kind == Perturbation::Kind::Scale) local.scaleAccel = perturbationAccel(g.perturbation, local.arcLength);
+  if (g.perturbation.kind == Perturbation::Kind::Offset) local.offsetAccel = perturbationAccel(g.perturbation, local.arcLength);
   local.joints = joints;
   return local;
 }

@@ -25,6 +25,9 @@ struct LocalGroove {
   // Their derivatives along the path at the foot point: the linearised perturbation that moves the
   // section's points along the path (line_sampling_occlusion.cpp) and tilts its facets.
   double offsetRate = 0, scaleRate = 0;
+  // And their second derivatives: how the points' tracks bend along the path (a wandering offset
+  // curves the groove), over the travel of a line of sight or a shadow ray.
+  double offsetAccel = 0, scaleAccel = 0;
   double arcLength = 0;    // s at the foot point
   PrimitiveJoints joints;  // where the primitive's region stops
   // The profile point k in base-plane coordinates relative to the foot: b along binormal, h up.

@@ -29,6 +29,7 @@ struct LocalGroove {
   vec2 tangent, binormal;
   float offset, scale;            // perturbation at the foot point (the local cross-section)
   float offsetRate, scaleRate;    // their derivatives along the path there
+  float offsetAccel, scaleAccel;  // and their second derivatives (the bend of the points' tracks)
   vec2 startPoint, startNormal;   // joint lines, relative to F
   vec2 endPoint, endNormal;
   float width;                    // scale * profile wmax
@@ -230,6 +231,12 @@ float perturbationRateAt(GrooveInfo g, float arcLength) {
   return g.perturbation.x * k * cos(k * arcLength + g.perturbation.z);
 }
 
+// Its second derivative: -a k^2 sin(k s + phase).
+float perturbationAccelAt(GrooveInfo g, float arcLength) {
+  float k = 2.0 * kPi / g.perturbation.y;
+  return -g.perturbation.x * k * k * sin(k * arcLength + g.perturbation.z);
+}
+
 // shade_local.h localGroove, relative to F.
 LocalGroove localGroove(uint index) {
   GroovePrimitive p = primitives[index];
@@ -267,6 +274,8 @@ LocalGroove localGroove(uint index) {
   local.offset = g.kind.y == kPerturbationOffset ? perturbationAt(g, arcLength) : 0.0;
   local.scaleRate = g.kind.y == kPerturbationScale ? perturbationRateAt(g, arcLength) : 0.0;
   local.offsetRate = g.kind.y == kPerturbationOffset ? perturbationRateAt(g, arcLength) : 0.0;
+  local.scaleAccel = g.kind.y == kPerturbationScale ? perturbationAccelAt(g, arcLength) : 0.0;
+  local.offsetAccel = g.kind.y == kPerturbationOffset ? perturbationAccelAt(g, arcLength) : 0.0;
   local.startPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.xy);
   local.endPoint = relativeToCentre(p.header.xy, shift, p.jointPoints.zw);
   local.startNormal = p.jointNormals.xy;

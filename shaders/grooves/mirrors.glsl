@@ -40,7 +40,7 @@ float wRb, wRt, wRw, wDir;
 vec3 wBack, wWeight;
 float wKAt0, wKAt1, wP0, wP1;
 
-float walkKey(int i) { return wDir * acrossCoordinate(i, wRb, wRt, wRw); }
+float walkKey(int i) { return wDir * acrossCoordinate(i, wRb, wRt, wRw, 0.0); }
 
 float positionOf(float k) {
   float s = clamp((k - wKAt0) / (wKAt1 - wKAt0), 0.0, 1.0);
@@ -86,7 +86,7 @@ vec3 catchOnFarBase(FootprintLine density, float x, float y) {
   if (wDir * lb < 0.0) {
     float extreme = wDir > 0.0 ? -kInfinity : kInfinity;
     for (int i = 0; i < gSectionPoints; ++i) {
-      float k = acrossCoordinate(i, lb, lt, lw);
+      float k = acrossCoordinate(i, lb, lt, lw, 0.0);
       extreme = wDir > 0.0 ? max(extreme, k) : min(extreme, k);
     }
     limit = min(y, wDir * (extreme / lw) * wRw);
@@ -141,7 +141,7 @@ vec3 mirrorBounces(FootprintLine density, vec3 toViewer) {
   // The first beams: visible portions of mirror facets, pushed in reverse so facets pop in order.
   for (int i = facetCount() - 1; i >= 0; --i) {
     if (!(gVisibleT1[i] > gVisibleT0[i]) || !hasMirror(gFacetMaterial[i])) continue;
-    float q0 = acrossCoordinate(i, eb, et, ew) / ew, q1 = acrossCoordinate(i + 1, eb, et, ew) / ew;
+    float q0 = acrossCoordinate(i, eb, et, ew, 0.0) / ew, q1 = acrossCoordinate(i + 1, eb, et, ew, 0.0) / ew;
     Beam beam;
     beam.facet = i;
     beam.t0 = gVisibleT0[i];

@@ -9,7 +9,10 @@
 // measured through its projection on the base line along E.
 // Perturbed sections: a point is first moved along the path to where the line along D meets it (the
 // line travels h D_t / D_w along T at height h, so the point travels h D_t / (D_w - rateH D_t), capped
-// where its track is steeper than the line); nothing moves below the horizon.
+// where its track is steeper than the line), across by (rateB + accelB (base + travel / 2)) travel:
+// its track's slope taken at `base` (0 for the view; for the light on a bending section, the travel
+// where the light ray from the deepest seen point crosses the base plane, so the shadow a rim casts
+// there is exact to second order); nothing moves below the horizon.
 #ifndef BAKE_GROOVES_OCCLUSION_GLSL
 #define BAKE_GROOVES_OCCLUSION_GLSL
 
@@ -21,19 +24,19 @@ const float kMinViewW = 1e-12;  // E_w > 0 by the rendering model; guarded anywa
 float gVisibleT0[MAX_SECTION_POINTS], gVisibleT1[MAX_SECTION_POINTS];
 float gLitT0[MAX_SECTION_POINTS], gLitT1[MAX_SECTION_POINTS];
 
-float acrossCoordinate(int i, float db, float dt, float dw) {
+float acrossCoordinate(int i, float db, float dt, float dw, float base) {
   float b = gSectionB[i], h = gSectionH[i];
-  float rateB = gSectionRateB[i], rateH = gSectionRateH[i];
-  if (h != 0.0 && dw > 0.0 && (rateB != 0.0 || rateH != 0.0)) {
+  float rateB = gSectionRateB[i], rateH = gSectionRateH[i], accelB = gSectionAccelB[i];
+  if (h != 0.0 && dw > 0.0 && (rateB != 0.0 || rateH != 0.0 || accelB != 0.0)) {
     float travel = h * dt / max(dw - rateH * dt, 0.5 * dw);
-    b += rateB * travel;
+    b += (rateB + accelB * (base + 0.5 * travel)) * travel;
     h += rateH * travel;
   }
   return b * dw - h * db;
 }
 
 // The visible part [t0, t1] of each facet from (db, dt, dw); `lit` selects the light's arrays.
-void visibleSpans(float db, float dt, float dw, bool lit) {
+void visibleSpans(float db, float dt, float dw, float base, bool lit) {
   int facets = facetCount();
   for (int i = 0; i < facets; ++i) {
     if (lit) { gLitT0[i] = 0.0; gLitT1[i] = 0.0; } else { gVisibleT0[i] = 0.0; gVisibleT1[i] = 0.0; }
@@ -41,7 +44,7 @@ void visibleSpans(float db, float dt, float dw, bool lit) {
   if (db >= 0.0) {
     float lowest = dw < 0.0 ? -kInfinity : kInfinity;
     for (int i = facets - 1; i >= 0; --i) {
-      float k0 = acrossCoordinate(i, db, dt, dw), k1 = acrossCoordinate(i + 1, db, dt, dw);
+      float k0 = acrossCoordinate(i, db, dt, dw, base), k1 = acrossCoordinate(i + 1, db, dt, dw, base);
       if (k1 > k0 && k0 < lowest) {
         float t1 = min(1.0, (lowest - k0) / (k1 - k0));
         if (lit) gLitT1[i] = t1; else gVisibleT1[i] = t1;
@@ -51,7 +54,7 @@ void visibleSpans(float db, float dt, float dw, bool lit) {
   } else {
     float highest = dw < 0.0 ? kInfinity : -kInfinity;
     for (int i = 0; i < facets; ++i) {
-      float k0 = acrossCoordinate(i, db, dt, dw), k1 = acrossCoordinate(i + 1, db, dt, dw);
+      float k0 = acrossCoordinate(i, db, dt, dw, base), k1 = acrossCoordinate(i + 1, db, dt, dw, base);
       if (k1 > k0 && k1 > highest) {
         float t0 = max(0.0, (highest - k0) / (k1 - k0));
         if (lit) { gLitT0[i] = t0; gLitT1[i] = 1.0; } else { gVisibleT0[i] = t0; gVisibleT1[i] = 1.0; }
@@ -68,14 +71,22 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
   vec2 B = gSectionBinormal, T = sectionTangent(B);
   float eb = dot(toViewer.xy, B), et = dot(toViewer.xy, T), ew = max(toViewer.z, kMinViewW);
   float lb = dot(gLightDir.xy, B), lt = dot(gLightDir.xy, T), lw = gLightDir.z;
-  visibleSpans(eb, et, ew, false);
-  visibleSpans(lb, lt, lw, true);
+  visibleSpans(eb, et, ew, 0.0, false);
+  // line_sampling.cpp lightDirection: on a bending section the light's tracks are followed from the
+  // travel where the light ray from the deepest seen point crosses the base plane.
+  float lightBase = 0.0;
+  if (gSectionBends && lw > 0.0) {
+    float deepest = 0.0;
+    for (int i = 0; i < gSectionPoints; ++i) deepest = min(deepest, gSectionH[i]);
+    lightBase = deepest * (et / ew - lt / lw);
+  }
+  visibleSpans(lb, lt, lw, lightBase, true);
   vec3 direct = vec3(0.0);
   int facets = facetCount();
   for (int i = 0; i < facets; ++i) {
     if (!(gVisibleT1[i] > gVisibleT0[i])) continue;
     // Base-line position seen through the facet point at t (projection along E').
-    float p0 = acrossCoordinate(i, eb, et, ew) / ew, p1 = acrossCoordinate(i + 1, eb, et, ew) / ew;
+    float p0 = acrossCoordinate(i, eb, et, ew, 0.0) / ew, p1 = acrossCoordinate(i + 1, eb, et, ew, 0.0) / ew;
     float t0 = max(gVisibleT0[i], gLitT0[i]), t1 = min(gVisibleT1[i], gLitT1[i]);
     if (!(t1 > t0)) continue;
     // Each end with the density across its own (turned) line, the section's two ends with the plain

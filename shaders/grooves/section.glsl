@@ -92,6 +92,8 @@ float footprintCdfAcross(FootprintLine line, float x, float rate) {
 vec2 gSectionBinormal;
 float gSectionB[MAX_SECTION_POINTS], gSectionH[MAX_SECTION_POINTS];
 float gSectionRateB[MAX_SECTION_POINTS], gSectionRateH[MAX_SECTION_POINTS];
+float gSectionAccelB[MAX_SECTION_POINTS];  // d2b/dT2: the bend of the point's track
+bool gSectionBends;                        // some point's gSectionAccelB is not 0
 int gFacetMaterial[MAX_SECTION_POINTS];  // facet i joins points i and i + 1
 int gSectionPoints;
 bool gSectionOverflow;
@@ -241,6 +243,7 @@ void appendPoint(float b, float h, int material) {
   gSectionH[gSectionPoints] = h;
   gSectionRateB[gSectionPoints] = 0.0;
   gSectionRateH[gSectionPoints] = 0.0;
+  gSectionAccelB[gSectionPoints] = 0.0;
   ++gSectionPoints;
 }
 
@@ -322,8 +325,10 @@ bool grooveHeightAt(LocalGroove g, float x, out float h) {
 
 // The rates of every point of a band (rims included: they do not move, but tilt their facets): those
 // of the groove whose own height there is nearest the surface's, dx/ds = offset' + scale' q across
-// and side scale' h / scale up (side = -1 where the groove runs against T, reversed).
+// and side scale' h / scale up (side = -1 where the groove runs against T, reversed), and the bend
+// side (offset'' + scale'' q) across.
 void setSectionRates() {
+  gSectionBends = false;
   for (int i = 0; i < gSectionPoints; ++i) {
     int shaping = -1;
     float nearest = 0.0;
@@ -337,11 +342,13 @@ void setSectionRates() {
     }
     if (shaping < 0) continue;
     LocalGroove g = gGrooves[gPlacedLocal[shaping]];
-    if (g.scaleRate == 0.0 && g.offsetRate == 0.0) continue;
+    if (g.scaleRate == 0.0 && g.offsetRate == 0.0 && g.scaleAccel == 0.0 && g.offsetAccel == 0.0) continue;
     float side = gPlacedReversed[shaping] ? -1.0 : 1.0;
     float q = (side * (gSectionB[i] - gPlacedCentre[shaping]) - g.offset) / g.scale;
     gSectionRateB[i] = g.offsetRate + g.scaleRate * q;
     gSectionRateH[i] = side * g.scaleRate * gSectionH[i] / g.scale;
+    gSectionAccelB[i] = side * (g.offsetAccel + g.scaleAccel * q);
+    gSectionBends = gSectionBends || gSectionAccelB[i] != 0.0;
   }
 }
 
