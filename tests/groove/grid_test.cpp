@@ -429,6 +429,30 @@ TEST(GrooveGrid, SeveralBoxesGiveTheUnionOnceEachAscending) {
   EXPECT_EQ(all.size(), 600u);
 }
 
+// The grid keeps every primitive's joint lines (the shading reads them instead of finding them per
+// pixel): the very lines jointsOf gives, at open ends, mitres, G1 joints of curves and closed paths.
+TEST(GrooveGrid, KeepsEveryPrimitivesJointLines) {
+  json grooves = json::array();
+  grooves.push_back(groove({{"polyline", {{0.1, 0.9}, {0.4, 0.6}, {0.45, 0.9}, {0.5, 0.62}}}}));
+  grooves.push_back(groove({{"arc", {{"centre", {0.6, 0.4}}, {"radius", 0.2}, {"start", 0}, {"end", 360}}}}));
+  grooves.push_back(groove({{"cubic", {{0.1, 0.1}, {0.5, 0.5}, {0.2, 0.9}, {0.9, 0.2}}}}));
+  const GrooveScene scene = parseOk(sceneWith(grooves));
+  const GrooveGrid grid = buildGridOk(scene);
+  ASSERT_EQ(grid.joints.size(), scene.primitives.size());
+  auto same = [](const JointLine& a, const JointLine& b) {
+    return a.point.u == b.point.u && a.point.v == b.point.v && a.normal.u == b.normal.u &&
+           a.normal.v == b.normal.v && a.openEnd == b.openEnd;
+  };
+  int openEnds = 0;
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const PrimitiveJoints expected = jointsOf(scene, i);
+    EXPECT_TRUE(same(grid.joints[i].start, expected.start)) << "primitive " << i;
+    EXPECT_TRUE(same(grid.joints[i].end, expected.end)) << "primitive " << i;
+    openEnds += int(expected.start.openEnd) + int(expected.end.openEnd);
+  }
+  EXPECT_EQ(openEnds, 4);  // the polyline's and the cubic's ends; the circle is closed
+}
+
 TEST(GrooveGrid, StatsCountReferencesAndRecords) {
   const GrooveScene scene = parseOk(sceneWith({line(0.2, 0.5, 0.8, 0.5), line(0.4, 0.2, 0.4, 0.8)}));
   const GrooveGrid grid = buildGridOk(scene);

@@ -1,6 +1,7 @@
 // Line sampling on perturbed grooves (seed 000 §3, §5; libbake/groove/line_sampling*.cpp): the local
-// cross-section follows the perturbation at the footprint, and its first-order change along the path
-// tilts the facets (scale) and moves the walls and the shadows they cast (offset). Pixel values against
+// cross-section follows the perturbation at the footprint, and its change along the path tilts the
+// facets (scale) and moves (first order) and bends (second order) the walls and the shadows they cast
+// (offset). Pixel values against
 // closed forms derived by hand, on straight grooves along u (binormal +v, arc length s = u), and the
 // ray-traced reference at the same point.
 #include <cmath>
@@ -97,6 +98,37 @@ TEST(PerturbedSection, OffsetMovesTheWallAndItsShadow) {
   expectRgbNear(sample(s, f, kUp, light), {lit * floor[0], lit * floor[1], lit * floor[2]}, 1e-6);
   const double frozen = (2 * kW - kD * light.v / light.w) / (2 * kW);
   EXPECT_GT(lit - frozen, 0.02);
+}
+
+// The same box groove at a crest of its wandering offset: at s = 0.5 the offset is at its largest
+// (amplitude a = 0.01, wavelength 2/9: k s = 9 pi / 2), its rate is 0 and its second derivative
+// o'' = -a k^2. The far wall bends back along the path: where the shadow ray from a floor point
+// leaves the cavity, d L_t / L_w further along, it stands o'' (d L_t / L_w)^2 / 2 nearer. The ray is
+// straight and the wall's track concave, so it clears the wall when it clears the rim: lit share
+// (2w - d L_b / L_w + o'' (d L_t / L_w)^2 / 2) / 2w. A first-order section (rate 0) would miss the
+// bend; following the light's tracks from the section's own line would bend them the wrong way.
+TEST(PerturbedSection, OffsetCurvatureBendsTheShadow) {
+  const double amplitude = 0.01, wavelength = 2.0 / 9;
+  const GrooveScene s = perturbedScene(json::array({{-kW, 0}, {-kW, -kD}, {kW, -kD}, {kW, 0}}),
+                                       {{"kind", "offset"}, {"amplitude", amplitude}, {"wavelength", wavelength}});
+  const Vec3 light{0.4, 0.3, std::sqrt(1 - 0.25)};
+  const double k = 2 * kPi / wavelength, travel = kD * light.u / light.w;
+  const double bend = -amplitude * k * k * travel * travel / 2;
+  const double lit = (2 * kW - kD * light.v / light.w + bend) / (2 * kW);
+  const Footprint f{{0.5, 0.5 + amplitude}, {1e-4, 0}, {0, 2 * kW}};  // exactly the floor
+  const Rgb floor = lambert(kUp, light);
+  // The next term of the crest (a k^4 travel^4 / 24) moves the shadow's edge by 1.2e-7: 1e-6 of the
+  // pixel's value.
+  expectRgbNear(sample(s, f, kUp, light), {lit * floor[0], lit * floor[1], lit * floor[2]}, 2e-6);
+  // The bend is visible: 0.4 % of the floor.
+  EXPECT_GT(std::abs(bend) / (2 * kW), 0.004);
+  // The reference agrees on the shadow's edge: lit just before it, in shadow just past it.
+  const ReferenceSurface surface(s);
+  Lighting lighting;
+  lighting.toLight = light;
+  const double edge = 0.5 + amplitude + kW - kD * light.v / light.w + bend;  // v of the last lit floor point
+  EXPECT_GT(referenceRadiance(surface, s, {0.5, edge - 1e-5}, kUp, lighting)[0], 0.5 * floor[0]);
+  EXPECT_LT(referenceRadiance(surface, s, {0.5, edge + 1e-5}, kUp, lighting)[0], 0.5 * floor[0]);
 }
 
 // The share of a footprint on one side of a line turned away from T: the footprint projected on

@@ -242,5 +242,36 @@ TEST(GroovePolygon, InPlaceClipAndSubtractionRestMatchClipAndIntersect) {
   EXPECT_EQ(area(assigned), area(rest));
 }
 
+// split() gives both sides of a line in one pass: vertex for vertex the polygons clip() gives for the
+// half-plane and for its opposite (the surface build slices cells with it instead of clipping twice).
+TEST(GroovePolygon, SplitGivesBothClipsVertexForVertex) {
+  ConvexPolygon p;
+  for (int k = 0; k < 7; ++k) p.add({std::cos(0.9 * k), 0.8 * std::sin(0.9 * k)});
+  makeCounterClockwise(p);
+  auto expectSame = [](const ConvexPolygon& a, const ConvexPolygon& b) {
+    ASSERT_EQ(a.count, b.count);
+    for (int i = 0; i < a.count; ++i) {
+      EXPECT_EQ(a.vertex[i].u, b.vertex[i].u);
+      EXPECT_EQ(a.vertex[i].v, b.vertex[i].v);
+    }
+  };
+  // Across, across through a vertex ((1, 0) lies on v = 0), wholly inside, wholly outside.
+  const HalfPlane cases[] = {{{1, 0.2}, 0.1}, {{0, 1}, 0}, {{0, 1}, -2}, {{0, 1}, 2}};
+  const int sides[] = {0, 0, 1, -1};
+  for (int c = 0; c < 4; ++c) {
+    const HalfPlane h = cases[c];
+    const HalfPlane opposite{{-h.normal.u, -h.normal.v}, -h.offset};
+    ConvexPolygon inside, outside;
+    EXPECT_EQ(split(p, h, inside, outside), sides[c]) << "case " << c;
+    expectSame(inside, clip(p, h));
+    expectSame(outside, clip(p, opposite));
+    ConvexPolygon kept = p, away;
+    splitInPlace(kept, h, away);
+    expectSame(kept, inside);
+    expectSame(away, outside);
+    if (sides[c] == 0) EXPECT_NEAR(area(inside) + area(outside), area(p), 1e-14) << "case " << c;
+  }
+}
+
 }  // namespace
 }  // namespace bake::groove

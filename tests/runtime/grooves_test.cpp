@@ -377,6 +377,22 @@ TEST_F(GroovesOracle, PerturbedCircleAcrossARepeatingEdge) {
   expectWithinTwoLevels(f, "circle_wrap");
 }
 
+// A box groove whose offset wanders (curvature radius about 0.08, near its own width), lit across it:
+// the shadows its walls cast on the floor follow the bend of the path to second order on both sides
+// (gSectionAccelB and the light's travel base in the shader).
+TEST_F(GroovesOracle, WanderingBoxGrooveShadows) {
+  const std::string json = R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"box": {"points": [[-0.04, 0], [-0.04, -0.03], [0.04, -0.03], [0.04, 0]]}},
+    "materials": {)" + kGrey + R"(}, "base": "grey",
+    "grooves": [{"profile": "box", "perturbation": {"kind": "offset", "amplitude": 0.02, "wavelength": 0.25},
+                 "path": {"line": [[0.1, 0.5], [0.9, 0.5]]}}]})";
+  areaSampling_ = true;  // its open ends are in view too
+  const Baked baked = bake(json, "wandering_box");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, 0.3f, 0.9f}, {0.5f, 0.5f, 0.0f}, {-0.35f, 0.5f, 0.8f}, 0);
+  expectWithinTwoLevels(f, "wandering_box", true);
+}
+
 // Stiff inputs: a view about 75 degrees from the normal and a light about 85 degrees from it (long
 // shadows, the query box stretched along the light), over ridges and cuts side by side. (A light
 // below the horizon leaves the seed's method all black: the endless base hides everything.)
