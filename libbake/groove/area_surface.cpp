@@ -5,7 +5,8 @@
 // grooves one after the other on a list of convex cells, each with one plane: a cell meeting a cut
 // strip keeps the lower of the two planes, split along the line where they are equal (the seed's
 // intersection removal: the part of a facet inside a deeper groove is removed); the part of a cell
-// outside the groove's region is the cell minus the region (a few convex pieces). Ridges are overlaid
+// outside the groove's region is the cell minus the region (a few convex pieces), the part inside is
+// sliced into the groove's strips (one split per line between two strips). Ridges are overlaid
 // the same way with the higher plane, then the two layers are added. The flat ground between grooves
 // is whatever is left of the base plane's cell (the seed's ground facet). Materials follow the spec:
 // the primitive with the larger |h| (cut or ridge), the earlier one on a tie, else the base material.

@@ -1,6 +1,7 @@
 // Straightening a primitive at a footprint (seed 000 §4: flat facets under a pixel): the tangent line
 // at the foot point of the footprint centre, with the perturbation evaluated there (the local
-// cross-section, §3) and its derivatives along the path (its first-order change under the pixel).
+// cross-section, §3) and its first and second derivatives along the path (how it changes, and how
+// its points' tracks bend, under the pixel and along the lines of sight and shadow rays).
 #include <cmath>
 #include <numbers>
 

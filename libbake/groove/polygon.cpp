@@ -1,6 +1,7 @@
 // Convex polygon clipping for the area sampling of seed 000 §6 (see polygon.h): Sutherland-Hodgman
-// clipping by one half-plane at a time; convex minus convex by peeling off, edge after edge of the
-// hole, the part of the polygon outside that edge (the pieces are disjoint and convex).
+// clipping by one half-plane at a time (or split into both sides of its line in the same pass);
+// convex minus convex by peeling off, edge after edge of the hole, the part of the polygon outside
+// that edge (the pieces are disjoint and convex).
 #include "groove/polygon.h"
 
 #include <algorithm>

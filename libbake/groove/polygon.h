@@ -1,7 +1,8 @@
 // Convex polygons of fixed capacity for the area sampling of seed 000 §6 (footprint clipping,
 // intersection removal and occlusion are all clips and subtractions of convex polygons): clipping by a
-// half-plane (Sutherland-Hodgman on one edge), convex-convex intersection, and convex-minus-convex as a
-// few convex pieces (the part outside each edge of the subtracted polygon in turn). Fixed capacities
+// half-plane (Sutherland-Hodgman on one edge; both sides of the line at once by split()),
+// convex-convex intersection, and convex-minus-convex as a few convex pieces (the part outside each
+// edge of the subtracted polygon in turn). Fixed capacities
 // and no allocation, so the same code ports to a fragment shader; overflows degrade gracefully and are
 // counted (below).
 #pragma once
