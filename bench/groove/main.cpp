@@ -149,7 +149,8 @@ int main(int argc, char** argv) {
   app.add_option("--images", o.images, "write method and reference EXR images here");
   app.add_option("--only", o.only, "only the cases whose name contains this");
   app.add_option("--spp", o.spp, "reference samples per pixel (a square)");
-  app.add_option("--repeats", o.repeats, "method measurements per view (the fastest is kept; the reference's two renders are two)");
+  app.add_option("--repeats", o.repeats,
+                 "method measurements per view, interleaved with the reference's two renders (the fastest of each is kept)");
   app.add_option("--threads", o.threads, "threads for both renderers (default 1: CPU time of the shading alone)");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
   app.add_flag("--curved", o.curved, "the method with curved sections on arcs (CPU only, not in the shader yet)");
@@ -208,14 +209,33 @@ int main(int argc, char** argv) {
     const Seconds first = secondsOf(renderMethod);
     const int framesPerMeasurement = int(std::clamp(std::ceil(kMinMeasuredCpu / std::max(first.cpu, 1e-9)), 1.0, 1e4));
     std::vector<double> wallTimes, cpuTimes;
-    for (int r = 0; r < std::max(1, o.repeats); ++r) {
+    const auto measureMethod = [&] {
       const Seconds t = secondsOf([&] {
         for (int k = 0; k < framesPerMeasurement; ++k) renderMethod();
       });
       wallTimes.push_back(t.wall / framesPerMeasurement);
       cpuTimes.push_back(t.cpu / framesPerMeasurement);
-    }
+    };
+
+    ReferenceSettings reference;
+    reference.samplesPerPixel = o.spp;
+    reference.threads = o.threads;
+    bake::Image truth, second;
+    // The method's measurements are interleaved with the reference's two renders (M R M R M ...), so
+    // that both sample the same stretch of time on a machine whose speed drifts: each side keeps its
+    // fastest, and a slow spell cannot fall on one side alone.
+    const int repeats = std::max(1, o.repeats);
+    measureMethod();
+    reference.seed = 1;
+    const Seconds referenceTime = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
+    if (repeats > 1) measureMethod();
+    reference.seed = 2;
+    // The second render (another seed: the noise floor) is a second measurement of the same cost.
+    const Seconds secondTime = secondsOf([&] { second = renderReference(loaded.scene, view, lighting, reference); });
+    for (int r = 2; r < repeats; ++r) measureMethod();
     const double methodSeconds = fastest(wallTimes), methodCpu = fastest(cpuTimes);
+    const double referenceSeconds = fastest({referenceTime.wall, secondTime.wall});
+    const double referenceCpu = fastest({referenceTime.cpu, secondTime.cpu});
     const bake::Image seedMethod = renderSeed(loaded.scene, loaded.grid, view, lighting, o.threads, published);
 
     // How many pixels took the special-case path.
@@ -229,18 +249,6 @@ int main(int argc, char** argv) {
           special += stats.special ? 1 : 0;
         }
     }
-
-    ReferenceSettings reference;
-    reference.samplesPerPixel = o.spp;
-    reference.threads = o.threads;
-    bake::Image truth, second;
-    reference.seed = 1;
-    const Seconds referenceTime = secondsOf([&] { truth = renderReference(loaded.scene, view, lighting, reference); });
-    reference.seed = 2;
-    // The second render (another seed: the noise floor) is a second measurement of the same cost.
-    const Seconds secondTime = secondsOf([&] { second = renderReference(loaded.scene, view, lighting, reference); });
-    const double referenceSeconds = fastest({referenceTime.wall, secondTime.wall});
-    const double referenceCpu = fastest({referenceTime.cpu, secondTime.cpu});
 
     const ImageError error = imageError(method, truth);
     const ImageError floor = imageError(second, truth);
