@@ -50,12 +50,28 @@ struct HeightPlane {
 
 // One planar convex piece of the surface, in 3D: a facet piece (normal up) or a wall (horizontal normal).
 struct SurfacePiece {
-  std::array<Vec3, kPolygonMaxVertices> vertex{};
+  // Only the first `count` vertices are set and copied (pieces are made per footprint, mostly with far
+  // fewer vertices than the cap), as in ConvexPolygon.
+  union {
+    std::array<Vec3, kPolygonMaxVertices> vertex;
+  };
   int count = 0;
   Vec3 normal;             // unit, pointing out of the solid
   double planeOffset = 0;  // normal . p on the piece
   std::size_t material = 0;
   bool wall = false;
+
+  SurfacePiece() {}
+  SurfacePiece(const SurfacePiece& o) { *this = o; }
+  SurfacePiece& operator=(const SurfacePiece& o) {
+    count = o.count;
+    for (int i = 0; i < o.count; ++i) vertex[i] = o.vertex[i];
+    normal = o.normal;
+    planeOffset = o.planeOffset;
+    material = o.material;
+    wall = o.wall;
+    return *this;
+  }
 };
 
 // Caps (a shader would hold the same in fixed arrays): pieces of H and walls kept per footprint.

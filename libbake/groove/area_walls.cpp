@@ -210,12 +210,20 @@ SurfacePoint surfaceLimit(const std::vector<StraightGroove>& grooves, std::size_
 
 void buildWalls(const std::vector<StraightGroove>& grooves, std::size_t baseMaterial, const ConvexPolygon& region,
                 double lengthScale, bool stopAtCap, std::vector<SurfacePiece>& out, SurfaceBuildStats& stats) {
+  const Box2 regionBox = boundsOf(region);
   for (const StraightGroove& g : grooves) {
     if (stopAtCap && stats.overflows > 0) return;
     const double first = g.profile.front().u, last = g.profile.back().u;
-    // Open-end cuts: the joint line across the band.
+    // Open-end cuts: the joint line across the band. The cut is perpendicular to the path, so its
+    // wall lies within max(|first|, |last|) of the end point: an end that far from the region is
+    // skipped without clipping.
+    const double reach = std::max(std::abs(first), std::abs(last));
     for (int e = 0; e < 2; ++e) {
       if (!g.openEnd[e]) continue;
+      const Vec2 end = g.jointPoint[e];
+      if (end.u + reach < regionBox.lower.u || end.u - reach > regionBox.upper.u || end.v + reach < regionBox.lower.v ||
+          end.v - reach > regionBox.upper.v)
+        continue;
       const Vec2 n = g.joint[e].normal;
       WallLine line{g.jointPoint[e], {-n.v, n.u}, n, -1e300, 1e300};
       if (!clipRange(line, g.atLeast(first)) || !clipRange(line, g.atMost(last))) continue;
