@@ -190,7 +190,8 @@ void facetNormalTilted(const CrossSection& section, std::size_t facet, double& n
   nh = db;
   const double length = std::sqrt(nt * nt + nb * nb + nh * nh);
   if (length > 0) {
-    nt /= length, nb /= length, nh /= length;
+    const double inverse = 1 / length;
+    nt *= inverse, nb *= inverse, nh *= inverse;
   } else {
     nt = 0, nb = 0, nh = 1;
   }
