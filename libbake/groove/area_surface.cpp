@@ -63,17 +63,6 @@ bool hasLayer(const StraightGroove& g, bool cuts) {
   return false;
 }
 
-// 1: the polygon lies inside h (boundary included), -1: outside it, 0: h's line crosses it.
-int sideOf(const ConvexPolygon& p, const HalfPlane& h) {
-  bool allIn = true, allOut = true;
-  for (int i = 0; i < p.count; ++i) {
-    const double d = h.distance(p.vertex[i]);
-    allIn = allIn && d >= 0;
-    allOut = allOut && d <= 0;
-  }
-  return allIn ? 1 : allOut ? -1 : 0;
-}
-
 enum class Side { inside, outside, across };
 
 // Where polygon p lies with respect to a convex polygon given by its edges' half-planes.

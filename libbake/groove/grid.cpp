@@ -172,6 +172,8 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
   if (cells.size() < 2 || total < kStampedGather) {
     for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
     if (cells.size() < 2) return;  // one cell lists each reference once, in order
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
   } else {
     thread_local std::vector<std::uint32_t> stamp;  // the gather that last saw each reference
     thread_local std::uint32_t gather = 0;
@@ -193,13 +195,10 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
       out.clear();
       for (std::uint32_t r = 0; r < stamp.size(); ++r)
         if (stamp[r] == gather) out.push_back(r);
-      return;
+    } else {
+      std::sort(out.begin(), out.end());
     }
-    std::sort(out.begin(), out.end());
-    return;
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 }  // namespace

@@ -144,6 +144,11 @@ int sideOf(const ConvexPolygon& p, const HalfPlane& h, std::array<double, kPolyg
 
 }  // namespace
 
+int sideOf(const ConvexPolygon& p, const HalfPlane& h) {
+  std::array<double, kPolygonMaxVertices> d;
+  return sideOf(p, h, d);
+}
+
 ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h) {
   ConvexPolygon out;
   out.truncated = p.truncated;

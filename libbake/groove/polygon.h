@@ -73,6 +73,8 @@ Box2 boundsOf(const ConvexPolygon& p);
 
 ConvexPolygon clip(const ConvexPolygon& p, const HalfPlane& h);
 void clipInPlace(ConvexPolygon& p, const HalfPlane& h);  // p = clip(p, h), without copying when unchanged
+// 1: p lies inside h (boundary included), -1: outside it (boundary included), 0: h's line crosses it.
+int sideOf(const ConvexPolygon& p, const HalfPlane& h);
 // Both sides of h's line in one pass: `inside` = clip(p, h) and `outside` = clip(p, -h), vertex for
 // vertex. Returns 1 when p lies inside h (boundary included), -1 when outside, 0 when the line crosses
 // it.
