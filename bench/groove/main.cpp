@@ -6,9 +6,9 @@
 // method's error against the reference (RMSE, relative MSE, 99th percentile), and the reference's own
 // noise floor: the RMSE between two reference renders with different seeds. The criterion of the
 // method is an RMSE within 3x that floor at 50x less cost per pixel. The method runs as the runtime
-// shader computes it (exact trapezoid footprint density, grooves straightened at the footprint;
-// --curved adds the CPU-only curved sections on arcs) and, for comparison, as the seed publishes it
-// (uniform footprint segment): its RMSE is the seed_rmse column. Writes groove.csv (one row per view) and, with
+// shader computes it (exact trapezoid footprint density, grooves straightened at the footprint except
+// for curved sections on tight arcs; --straight-arcs leaves those out) and, for comparison, as the
+// seed publishes it (uniform footprint segment, straight arcs): its RMSE is the seed_rmse column. Writes groove.csv (one row per view) and, with
 // --images, EXR images of the method and the reference; progress on stderr.
 #include <algorithm>
 #include <chrono>
@@ -49,7 +49,7 @@ struct Options {
   // a sizeable part of the method's CPU time and a negligible one of the reference's.
   int threads = 1;
   bool quick = false;  // first view of every case, 64 spp
-  bool curved = false;  // the method with curved sections on arcs
+  bool straightArcs = false;  // the method without curved sections on tight arcs
 };
 
 // One rendering to measure: a scene, a window of it, a pixel count across, a view, a light.
@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
                  "method measurements per view, interleaved with the reference's two renders (the fastest of each is kept)");
   app.add_option("--threads", o.threads, "threads for both renderers (default 1: CPU time of the shading alone)");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
-  app.add_flag("--curved", o.curved, "the method with curved sections on arcs (CPU only, not in the shader yet)");
+  app.add_flag("--straight-arcs", o.straightArcs, "the method without its curved sections on tight arcs (as the seed)");
   CLI11_PARSE(app, argc, argv);
   if (o.quick) o.spp = std::min(o.spp, 64);
 
@@ -198,7 +198,7 @@ int main(int argc, char** argv) {
     lighting.maxBounces = job.bounces;
 
     SeedSettings ours;
-    ours.curvedSections = o.curved;
+    ours.curvedSections = !o.straightArcs;
     SeedSettings published;
     published.density = FootprintDensity::SeedSegment;
     published.curvedSections = false;

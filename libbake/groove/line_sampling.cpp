@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bake_formats/grooves.h"
 #include "groove/line_sampling_section.h"
 
 namespace bake::groove {
@@ -27,6 +28,8 @@ namespace {
 constexpr double kParallelAngle = 1e-6;  // rad
 constexpr double kDriftFraction = 1e-3;  // of a groove width, across the footprint's reach
 constexpr double kMinViewW = 1e-12;      // E_w > 0 by the rendering model; guarded anyway
+constexpr double kMaxReach = format::grooves::kMaxReach;
+constexpr double kCurvedShift = 0.02;    // of the footprint's width: the shift a curved section corrects
 constexpr int kCurvedPieces = 4;         // facets of a curved section are split so (its moved
                                          // positions, quadratic in h, are interpolated within 1/64)
 
@@ -92,6 +95,25 @@ bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
   return sine <= std::max(std::sin(kParallelAngle), drift);
 }
 
+// How far a line along d travels over the base plane per unit of depth, |d_uv| / d_w, capped as the
+// query box caps it (bake_formats/grooves.h kMaxReach).
+double travelPerDepth(const Vec3& d) {
+  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);
+  return d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
+}
+
+// Curved sections only where the curvature shows: over the longest travel S of a view or shadow line
+// among the grooves ((hmax + dmax) times the travel per depth), the groove's tightest circle (radius
+// R - w, w its half-width) leaves its tangent by S^2 / (2 (R - w)). Below kCurvedShift of the
+// footprint's width across the groove, the straightened section is kept (it is cheaper).
+bool curvatureShows(const GrooveScene& scene, const Primitive& arc, const LocalGroove& g, const FootprintLine& line,
+                    const Vec3& toViewer, const Vec3& toLight) {
+  const double inner = std::abs(arc.radius) - grooveWidth(g);
+  if (!(inner > 0)) return true;
+  const double travel = (scene.hmax + scene.dmax) * std::max(travelPerDepth(toViewer), travelPerDepth(toLight));
+  return travel * travel / (2 * inner) > kCurvedShift * 2 * line.halfSupport();
+}
+
 Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const std::vector<std::size_t>& members,
                const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
                const SeedSettings& settings) {
@@ -113,7 +135,8 @@ Rgb shadeClass(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
   section.centre = std::numeric_limits<double>::infinity();
   const LocalGroove& first = grooves[members.front()];
   const Primitive& primitive = scene.primitives[first.primitive];
-  if (settings.curvedSections && primitive.kind == Primitive::Kind::Arc) {
+  if (settings.curvedSections && primitive.kind == Primitive::Kind::Arc &&
+      curvatureShows(scene, primitive, first, line, toViewer, lighting.toLight)) {
     // The arc's centre lies on the radial line through the foot, which is F + x B.
     const Vec2 d = offsetFromCentre(scene, first.foot, footprint.centre);
     section.centre = dot2({primitive.centre.u - first.foot.u + d.u, primitive.centre.v - first.foot.v + d.v}, binormal);

@@ -104,11 +104,12 @@ double acrossCoordinate(const CrossSection& section, const SectionPoint& point, 
     // The line along d through the base point F + x B meets height h after a tangential travel
     // s = h d.t / d.w; on a groove curved about the centre, the point of offset b there sits where its
     // circle (radius centre - b) has turned by asin(s / (centre - b)): further along B by
-    // (centre - b)(1 - cos). Past a quarter turn the line has left the circle's side: capped.
+    // (centre - b)(1 - cos) = (centre - b) sin^2 / (1 + cos) (no cancellation for small turns). Past a
+    // quarter turn the line has left the circle's side: capped.
     const double radius = section.centre - p.b;
     const double travel = p.h * d.t, span = d.w * radius;
     const double sine = travel == 0 ? 0.0 : (std::abs(travel) >= std::abs(span) ? 1.0 : travel / span);
-    b += radius * (1 - std::sqrt(std::max(0.0, 1 - sine * sine)));
+    b += radius * sine * sine / (1 + std::sqrt(std::max(0.0, 1 - sine * sine)));
   }
   return b * d.w - p.h * d.b;
 }

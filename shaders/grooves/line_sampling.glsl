@@ -3,7 +3,8 @@
 // each is straightened at F, the ones whose region reaches the footprint are kept (a primitive stops
 // at its joint lines; past a joint its neighbour in the chain, when found, takes over), grouped into
 // parallel classes (within 1e-6 rad, or drifting apart by less than 1e-3 of a groove width across
-// the footprint's reach), and each class is shaded on its combined cross-section (§5). Several classes:
+// the footprint's reach), and each class is shaded on its combined cross-section (§5), curved about the
+// centre of a tight arc (the CPU's curved sections). Several classes:
 // the flat base plus the sum of each class's difference from it (occlusion between classes neglected,
 // as on the CPU).
 //
@@ -72,6 +73,24 @@ bool parallelGrooves(LocalGroove a, LocalGroove b, float reach) {
   return sine <= max(kParallelSine, drift);
 }
 
+// Curved sections (line_sampling.cpp curvatureShows): where over the longest travel S of a view or
+// shadow line, (hmax + dmax) |D_uv| / D_w, the groove's tightest circle (radius R - w) leaves its
+// tangent by more than kCurvedShift of the footprint's width: S^2 / (2 (R - w)).
+const float kCurvedShift = 0.02;
+const int kCurvedPieces = 4;
+
+float travelPerDepth(vec3 d) {
+  float horizontal = length(d.xy);
+  return d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
+}
+
+bool curvatureShows(LocalGroove g, FootprintLine line, vec3 toViewer) {
+  float inner = g.arcRadius - g.width;
+  if (!(inner > 0.0)) return true;
+  float travel = (uBounds.y + uBounds.z) * max(travelPerDepth(toViewer), travelPerDepth(gLightDir));
+  return travel * travel / (2.0 * inner) > kCurvedShift * 2.0 * halfSupport(line);
+}
+
 vec3 shadeClass(int cls, int front, vec2 axis1, vec2 axis2, vec3 toViewer) {
   vec2 binormal = gGrooves[front].binormal;
   FootprintLine line = footprintLine(axis1, axis2, binormal);
@@ -86,6 +105,12 @@ vec3 shadeClass(int cls, int front, vec2 axis1, vec2 axis2, vec3 toViewer) {
   }
   buildSection();
   setSectionRates();
+  LocalGroove first = gGrooves[front];
+  if (first.arcRadius > 0.0 && curvatureShows(first, line, toViewer)) {
+    // The arc's centre lies on the radial line through the foot, which is F + x B.
+    gSectionCentre = dot(first.arcCentre - first.foot + offsetFromCentre(first.foot), binormal);
+    gSectionCurved = subdivideFacets(kCurvedPieces);
+  }
   return shadeSection(line, toViewer);
 }
 

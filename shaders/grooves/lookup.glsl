@@ -33,6 +33,8 @@ struct LocalGroove {
   vec2 startPoint, startNormal;   // joint lines, relative to F
   vec2 endPoint, endNormal;
   float width;                    // scale * profile wmax
+  vec2 arcCentre;                 // an arc's centre, relative to F (the same copy as foot)
+  float arcRadius;                // 0 for a segment
 };
 
 LocalGroove gGrooves[MAX_FOUND];
@@ -257,6 +259,8 @@ LocalGroove localGroove(uint index) {
     along = dot(-a, t);
     local.foot = a + along * t;
     local.tangent = t;
+    local.arcCentre = vec2(0.0);
+    local.arcRadius = 0.0;
   } else {
     vec2 centre = relativeToCentre(p.header.xy, shift, p.arc.xy);
     float sweep = p.measure.x;
@@ -267,6 +271,8 @@ LocalGroove localGroove(uint index) {
     local.foot = centre + p.arc.z * vec2(cos(theta), sin(theta));
     float turn = sweep >= 0.0 ? 1.0 : -1.0;
     local.tangent = vec2(-sin(theta), cos(theta)) * turn;
+    local.arcCentre = centre;
+    local.arcRadius = p.arc.z;
   }
   local.binormal = vec2(-local.tangent.y, local.tangent.x);
   float arcLength = p.measure.y + along;

@@ -12,7 +12,8 @@
 // where its track is steeper than the line), across by (rateB + accelB (base + travel / 2)) travel:
 // its track's slope taken at `base` (0 for the view; for the light on a bending section, the travel
 // where the light ray from the deepest seen point crosses the base plane, so the shadow a rim casts
-// there is exact to second order); nothing moves below the horizon.
+// there is exact to second order); nothing moves below the horizon. Curved sections (tight arcs): the
+// point is then moved along its circle about the section's centre, and a facet's normal turns with it.
 #ifndef BAKE_GROOVES_OCCLUSION_GLSL
 #define BAKE_GROOVES_OCCLUSION_GLSL
 
@@ -32,7 +33,35 @@ float acrossCoordinate(int i, float db, float dt, float dw, float base) {
     b += (rateB + accelB * (base + 0.5 * travel)) * travel;
     h += rateH * travel;
   }
+  if (gSectionCurved && h != 0.0) {
+    // On a groove curved about the centre, the line along D meets height h where the point's circle
+    // (radius centre - b) has turned by asin(s / radius), s = h D_t / D_w: further along B by
+    // radius (1 - cos) = radius sin^2 / (1 + cos); capped at a quarter turn.
+    float radius = gSectionCentre - b;
+    float travel = h * dt, span = dw * radius;
+    float sine = travel == 0.0 ? 0.0 : (abs(travel) >= abs(span) ? 1.0 : travel / span);
+    b += radius * sine * sine / (1.0 + sqrt(max(0.0, 1.0 - sine * sine)));
+  }
   return b * dw - h * db;
+}
+
+// The normal where the line along D meets facet i at height h: on a curved section the binormal has
+// turned there to cos(a) B + sin(a) T, sin(a) = s / (b - centre), s = h D_t / D_w (b the facet's middle).
+vec3 facetNormalSeen(int i, float dt, float dw, float h) {
+  if (!gSectionCurved || h == 0.0 || dw <= 0.0) return facetNormal3(i);
+  float db = gSectionB[i + 1] - gSectionB[i], dh = gSectionH[i + 1] - gSectionH[i];
+  float rateB = 0.5 * (gSectionRateB[i] + gSectionRateB[i + 1]);
+  float rateH = 0.5 * (gSectionRateH[i] + gSectionRateH[i + 1]);
+  vec3 n = vec3(dh * rateB - db * rateH, -dh, db);  // (T, B, up)
+  float len = length(n);
+  n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+  float offset = 0.5 * (gSectionB[i] + gSectionB[i + 1]) - gSectionCentre;
+  float travel = h * dt, span = dw * offset;
+  float sine = clamp(span == 0.0 ? 0.0 : travel / span, -1.0, 1.0);
+  float cosine = sqrt(1.0 - sine * sine);
+  vec2 B = gSectionBinormal, T = sectionTangent(B);
+  vec2 turnedB = cosine * B + sine * T, turnedT = cosine * T - sine * B;
+  return vec3(n.y * turnedB + n.x * turnedT, n.z);
 }
 
 // The visible part [t0, t1] of each facet from (db, dt, dw); `lit` selects the light's arrays.
@@ -95,7 +124,8 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
     float r1 = i + 1 == facets ? 0.0 : gSectionRateB[i + 1];
     float r = abs(footprintCdfAcross(density, p0 + t1 * (p1 - p0), r0 + t1 * (r1 - r0)) -
                   footprintCdfAcross(density, p0 + t0 * (p1 - p0), r0 + t0 * (r1 - r0)));
-    direct += r * directRadiance(gFacetMaterial[i], facetNormal3(i), toViewer);
+    float middle = gSectionH[i] + 0.5 * (t0 + t1) * (gSectionH[i + 1] - gSectionH[i]);
+    direct += r * directRadiance(gFacetMaterial[i], facetNormalSeen(i, et, ew, middle), toViewer);
   }
 #ifdef HAS_MIRRORS
   if (gMaxBounces > 0) direct += mirrorBounces(density, toViewer);

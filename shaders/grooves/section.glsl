@@ -97,6 +97,9 @@ bool gSectionBends;                        // some point's gSectionAccelB is not
 int gFacetMaterial[MAX_SECTION_POINTS];  // facet i joins points i and i + 1
 int gSectionPoints;
 bool gSectionOverflow;
+// Curved sections (line_sampling.glsl): the b of the arcs' common centre on the line F + b B.
+bool gSectionCurved;
+float gSectionCentre;
 
 int facetCount() { return gSectionPoints > 0 ? gSectionPoints - 1 : 0; }
 
@@ -156,6 +159,8 @@ void startSection(vec2 binormal, float lo, float hi) {
   gSectionBinormal = binormal;
   gSectionPoints = 0;
   gSectionOverflow = false;
+  gSectionCurved = false;
+  gSectionCentre = 0.0;
   gPlacedGrooves = 0;
   gBreakCount = 0;
   addBreak(lo);
@@ -350,6 +355,41 @@ void setSectionRates() {
     gSectionAccelB[i] = side * (g.offsetAccel + g.scaleAccel * q);
     gSectionBends = gSectionBends || gSectionAccelB[i] != 0.0;
   }
+}
+
+// Curved sections, as subdivideFacets on the CPU: every facet that changes height is split into
+// `pieces`, the new points interpolating position, rates and bend. In place, from the last point back;
+// false (the section unchanged) when the arrays cannot hold the result.
+bool subdivideFacets(int pieces) {
+  int facets = facetCount();
+  int total = gSectionPoints;
+  for (int i = 0; i < facets; ++i)
+    if (gSectionH[i] != gSectionH[i + 1]) total += pieces - 1;
+  if (total > MAX_SECTION_POINTS) return false;
+  int to = total - 1;
+  for (int i = facets - 1; i >= 0; --i) {
+    int n = gSectionH[i] != gSectionH[i + 1] ? pieces : 1;
+    float b0 = gSectionB[i], h0 = gSectionH[i], rb0 = gSectionRateB[i], rh0 = gSectionRateH[i], a0 = gSectionAccelB[i];
+    float b1 = gSectionB[i + 1], h1 = gSectionH[i + 1], rb1 = gSectionRateB[i + 1], rh1 = gSectionRateH[i + 1];
+    float a1 = gSectionAccelB[i + 1];
+    int material = gFacetMaterial[i];
+    // Point i + 1 moves to `to`; the inner points k = n - 1 .. 1 go before it.
+    gSectionB[to] = b1; gSectionH[to] = h1; gSectionRateB[to] = rb1; gSectionRateH[to] = rh1; gSectionAccelB[to] = a1;
+    for (int k = n - 1; k >= 1; --k) {
+      float t = float(k) / float(n);
+      --to;
+      gSectionB[to] = b0 + t * (b1 - b0);
+      gSectionH[to] = h0 + t * (h1 - h0);
+      gSectionRateB[to] = rb0 + t * (rb1 - rb0);
+      gSectionRateH[to] = rh0 + t * (rh1 - rh0);
+      gSectionAccelB[to] = a0 + t * (a1 - a0);
+      gFacetMaterial[to] = material;
+    }
+    gFacetMaterial[to - 1] = material;
+    --to;
+  }
+  gSectionPoints = total;
+  return true;
 }
 
 // Unit outward normal of facet i in the section plane (b, h).

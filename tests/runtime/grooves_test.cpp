@@ -135,6 +135,9 @@ struct OracleFigures {
   nlohmann::json statistics;      // the renderer's counts of the frame
   double specialRmse = 0;
   int specialMaxLevels = 0;
+  // Line-sampled pixels whose CPU value moves by more than 2/255 when arcs are left straight (the
+  // pixels that test the shader's curved sections).
+  std::size_t curvedShows = 0;
 };
 
 int quantised(double x) { return int(std::lround(255.0 * std::clamp(x, 0.0, 1.0))); }
@@ -177,6 +180,9 @@ class GroovesOracle : public test::GlTest {
     figures.statistics = renderer.statistics();
 
     const groove::SeedShader oracle(baked.scene, baked.grid);
+    groove::SeedSettings straightArcs;
+    straightArcs.curvedSections = false;
+    const groove::SeedShader straight(baked.scene, baked.grid, straightArcs);
     double squared = 0, sum = 0, specialSquared = 0;
     for (std::size_t p = 0; p < std::size_t(kSize) * kSize; ++p) {
       const float* a = &in0[p * 4];
@@ -208,6 +214,11 @@ class GroovesOracle : public test::GlTest {
         continue;
       }
       ++figures.pixels;
+      const groove::Rgb withoutCurves = straight.shade(footprint, toViewer, light3);
+      bool curvedShows = false;
+      for (int k = 0; k < 3; ++k)
+        curvedShows = curvedShows || std::abs(quantised(withoutCurves[std::size_t(k)]) - quantised(expected[std::size_t(k)])) > 2;
+      figures.curvedShows += curvedShows ? 1 : 0;
       for (int k = 0; k < 3; ++k) {
         const double got = radiance[p * 4 + std::size_t(k)];
         const double d = got - expected[std::size_t(k)];
@@ -375,6 +386,27 @@ TEST_F(GroovesOracle, PerturbedCircleAcrossARepeatingEdge) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.5f, -0.4f, 0.9f}, {0.5f, 0.5f, 0.0f}, {-0.3f, 0.4f, 0.8f}, 0);
   expectWithinTwoLevels(f, "circle_wrap");
+}
+
+// Two rings seen at about 45 degrees: one whose radius equals its half-width (the inner rim closes at
+// the centre) and one of 2.5 half-widths. Their curvature shows over the view's travel below the
+// surface, so both the CPU and the shader shade them on curved sections (subdivided facets, points
+// moved along their circles, turned normals); the count of pixels that straight arcs would change
+// says the view tests that path.
+TEST_F(GroovesOracle, TightRingsOnCurvedSections) {
+  const std::string json = R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"vee": {"points": [[-0.08, 0], [0, -0.05], [0.08, 0]]}},
+    "materials": {)" + kGrey + R"(}, "base": "grey",
+    "grooves": [{"profile": "vee", "path": {"arc": {"centre": [0.3, 0.5], "radius": 0.08, "start": 0, "end": 360}}},
+                {"profile": "vee", "path": {"arc": {"centre": [0.7, 0.5], "radius": 0.2, "start": 0, "end": 360}}}]})";
+  areaSampling_ = true;  // the small ring's band overlaps itself at its centre: a special case
+  const Baked baked = bake(json, "tight_rings");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.6f, 0.3f, 0.7f}, 0);
+  std::printf("[ grooves ] tight_rings: %zu pixels change by more than 2/255 with straight arcs\n", f.curvedShows);
+  RecordProperty("tight_rings_curved_pixels", int(f.curvedShows));
+  EXPECT_GT(f.curvedShows, std::size_t(50)) << "the view should show the rings' curvature";
+  expectWithinTwoLevels(f, "tight_rings", true);
 }
 
 // A box groove whose offset wanders (curvature radius about 0.08, near its own width), lit across it:
