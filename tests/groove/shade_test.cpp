@@ -276,5 +276,31 @@ TEST(SeedShader, ConcentricArcsAndAPerturbedGrooveAgreeWithTheReference) {
                          lightTowards({-0.2, -0.6, 0.6}));
 }
 
+// Curved sections are the default on arcs whose curvature shows over the travel of a view or shadow
+// line (line_sampling.cpp curvatureShows): a ring of three half-widths seen at 45 degrees is closer to
+// the reference with them than straightened, and an arc of a hundred half-widths is shaded exactly as
+// straightened (no subdivided facets where they would change nothing).
+TEST(SeedShader, CurvedSectionsWhereTheArcsCurvatureShows) {
+  const View view = windowView({0.4, 0.4}, {0.6, 0.6}, 12, 0.785, 0.3);
+  const Lighting light = lightTowards({0.5, -0.3, 0.7});
+  const GrooveScene ring =
+      sceneOf(R"({"profile": "v", "material": "paint", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.06, "start": 0, "end": 360}}})");
+  const double curvedError = expectMatchesReference(ring, view, light);
+  SeedSettings straight;
+  straight.curvedSections = false;
+  ReferenceSettings settings;
+  settings.samplesPerPixel = 64;
+  const double straightError =
+      imageError(renderSeed(ring, buildGridOk(ring), view, light, 0, straight), renderReference(ring, view, light, settings)).rmse;
+  EXPECT_LT(curvedError, 0.5 * straightError);
+
+  const GrooveScene wide =
+      sceneOf(R"({"profile": "v", "material": "paint", "path": {"arc": {"centre": [0.5, -1.5], "radius": 2.0, "start": 80, "end": 100}}})");
+  const GrooveGrid grid = buildGridOk(wide);
+  const Image byDefault = renderSeed(wide, grid, view, light, 0), straightened = renderSeed(wide, grid, view, light, 0, straight);
+  EXPECT_EQ(byDefault.pixels, straightened.pixels);
+  std::printf("[ grooves ] ring of 3 half-widths at 45 degrees: RMSE %.3g curved, %.3g straight\n", curvedError, straightError);
+}
+
 }  // namespace
 }  // namespace bake::groove
