@@ -19,7 +19,6 @@
 #include <cmath>
 #include <limits>
 
-#include "bake_formats/grooves.h"
 #include "groove/line_sampling_section.h"
 
 namespace bake::groove {
@@ -28,7 +27,6 @@ namespace {
 constexpr double kParallelAngle = 1e-6;  // rad
 constexpr double kDriftFraction = 1e-3;  // of a groove width, across the footprint's reach
 constexpr double kMinViewW = 1e-12;      // E_w > 0 by the rendering model; guarded anyway
-constexpr double kMaxReach = format::grooves::kMaxReach;
 constexpr double kCurvedShift = 0.02;    // of the footprint's width: the shift a curved section corrects
 constexpr int kCurvedPieces = 4;         // facets of a curved section are split so (its moved
                                          // positions, quadratic in h, are interpolated within 1/64)
@@ -93,13 +91,6 @@ bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
   const double sine = std::abs(cross2(a.tangent, b.tangent));
   const double drift = kDriftFraction * std::min(grooveWidth(a), grooveWidth(b)) / reach;
   return sine <= std::max(std::sin(kParallelAngle), drift);
-}
-
-// How far a line along d travels over the base plane per unit of depth, |d_uv| / d_w, capped as the
-// query box caps it (bake_formats/grooves.h kMaxReach).
-double travelPerDepth(const Vec3& d) {
-  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);
-  return d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
 }
 
 // Curved sections only where the curvature shows: over the longest travel S of a view or shadow line

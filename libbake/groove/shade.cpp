@@ -38,7 +38,7 @@ struct Box {
 void enlargeAlong(Box& box, const Box& core, const Vec3& d, double hmax, double dmax) {
   const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);  // d is a unit direction: no overflow
   if (horizontal == 0) return;
-  const double reach = d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
+  const double reach = travelPerDepth(d);
   const Vec2 unit{d.u / horizontal, d.v / horizontal};
   for (double along : {hmax * reach, -dmax * reach}) {
     box.include({core.lower.u + along * unit.u, core.lower.v + along * unit.v});
@@ -135,6 +135,11 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
 }
 
 }  // namespace
+
+double travelPerDepth(const Vec3& d) {
+  const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);
+  return d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
+}
 
 Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
                       ShadeStats* stats) const {

@@ -46,6 +46,10 @@ double perturbationOffset(const Perturbation& perturbation, double arcLength);
 double perturbationScaleRate(const Perturbation& perturbation, double arcLength);  // d scale / ds
 double perturbationOffsetRate(const Perturbation& perturbation, double arcLength);  // d offset / ds
 
+// How far a line along the unit direction d travels over the base plane per unit of height,
+// |d_uv| / d_w, capped at bake_formats/grooves.h kMaxReach (as the query box caps it).
+double travelPerDepth(const Vec3& d);
+
 // §5: line sampling for footprints without special cases (line_sampling.cpp).
 Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                const Vec3& toViewer, const Lighting& lighting);

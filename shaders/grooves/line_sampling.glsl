@@ -79,11 +79,6 @@ bool parallelGrooves(LocalGroove a, LocalGroove b, float reach) {
 const float kCurvedShift = 0.02;
 const int kCurvedPieces = 4;
 
-float travelPerDepth(vec3 d) {
-  float horizontal = length(d.xy);
-  return d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
-}
-
 bool curvatureShows(LocalGroove g, FootprintLine line, vec3 toViewer) {
   float inner = g.arcRadius - g.width;
   if (!(inner > 0.0)) return true;

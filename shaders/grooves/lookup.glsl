@@ -41,12 +41,19 @@ LocalGroove gGrooves[MAX_FOUND];
 int gGrooveCount;
 bool gFoundOverflow;  // more primitives under the box than MAX_FOUND: the furthest in index are dropped
 
+// |d_uv| / d_w, capped at kMaxReach: how far a line along d travels over the base plane per unit of
+// height (line_sampling.glsl curvatureShows uses it too).
+float travelPerDepth(vec3 d) {
+  float horizontal = length(d.xy);
+  return d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
+}
+
 // The query box, relative to F.
 void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 coreUpper, vec3 d, float ridge,
                    float cavity) {
   float horizontal = length(d.xy);
   if (horizontal == 0.0) return;
-  float reach = d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
+  float reach = travelPerDepth(d);
   vec2 unit = d.xy / horizontal;
   float alongs[2] = float[2](ridge * reach, -cavity * reach);
   for (int k = 0; k < 2; ++k) {
