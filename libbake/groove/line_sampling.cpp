@@ -11,6 +11,10 @@
 //     ordered projection (§5.2), and Eq. 1: pixel = sum_i r_i f_i, r_i the footprint share of the part
 //     of facet i that is both visible and lit, measured through its projection on the base line along
 //     E; plus the mirror bounces of §7 (interreflection.cpp).
+//     On a curved section (a tight arc, not in the seed) the footprint's points off the line through F
+//     see the section turned about the arc's centre: the edges of the visible, lit spans get the rate
+//     at which they move along B per unit along T (found by turning view and light slightly) and
+//     bend with the circles about the centre (shadeSection).
 //  4. Several classes (non-parallel grooves with no special-case record under the box, so their bands
 //     do not overlap under the footprint): each class is shaded on its own section, and the pixel is the
 //     flat base plus the sum of each class's difference from the flat base. This neglects occlusion
@@ -28,6 +32,10 @@ constexpr double kParallelAngle = 1e-6;  // rad
 constexpr double kDriftFraction = 1e-3;  // of a groove width, across the footprint's reach
 constexpr double kMinViewW = 1e-12;      // E_w > 0 by the rendering model; guarded anyway
 constexpr double kCurvedShift = 0.02;    // of the footprint's width: the shift a curved section corrects
+constexpr double kTurn = 1e-3;          // rad: the turn of a curved section that finds its edges' rates
+constexpr double kTurnShows = 0.2;       // see turningShows
+constexpr double kMinTurnRadius = 1e-6;  // of the footprint's half-support: nearer the centre, no rate
+constexpr double kMinBendRadius = 0.5;   // of the footprint's half-support: nearer the centre, no bend
 constexpr int kCurvedPieces = 4;         // facets of a curved section are split so (its moved
                                          // positions, quadratic in h, are interpolated within 1/64)
 
@@ -155,6 +163,27 @@ SectionDirection lightDirection(const CrossSection& section, const SectionDirect
   return l;
 }
 
+// The turning rates are found where they show: an edge moves about travel / rho along B per unit
+// along T (rho = the distance to the centre, travel = the longest travel of a view or shadow line
+// below the surface); over the footprint's half-extent along T that must reach kTurnShows of its
+// half-support across.
+bool turningShows(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
+                  const Vec3& toViewer, const Vec3& toLight) {
+  if (!std::isfinite(section.centre)) return false;
+  const double travel = (scene.hmax + scene.dmax) * std::max(travelPerDepth(toViewer), travelPerDepth(toLight));
+  const double alongT = 0.5 * (std::abs(density.a1t) + std::abs(density.a2t));
+  return travel * alongT > kTurnShows * std::abs(section.centre) * density.halfSupport();
+}
+
+// The direction as seen from a section turned by `angle` about the centre.
+SectionDirection turnedBy(const SectionDirection& d, double angle) {
+  SectionDirection out = d;
+  const double c = std::cos(angle), s = std::sin(angle);
+  out.b = d.b * c - d.t * s;
+  out.t = d.t * c + d.b * s;
+  return out;
+}
+
 }  // namespace
 
 SectionShading shadeSection(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
@@ -162,32 +191,75 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   SectionShading out;
   SectionDirection e = inSection(section, toViewer);
   e.w = std::max(e.w, kMinViewW);
-  thread_local std::vector<FacetSpan> visible, lit;
-  thread_local std::vector<double> seenAt;  // each point's acrossCoordinate along e
+  thread_local std::vector<FacetSpan> visible, lit, visibleTurned, litTurned;
+  thread_local std::vector<double> seenAt, seenTurned;  // each point's acrossCoordinate along e (turned e)
+  const SectionDirection l = lightDirection(section, e, lighting.toLight);
   visibleSpans(section, e, visible, seenAt);
-  visibleSpans(section, lightDirection(section, e, lighting.toLight), lit);
+  visibleSpans(section, l, lit);
+  // On a curved section, the footprint's points off the line F + x B see the section turned: one at
+  // travel a along T lies on the radial line turned by a / (centre - x), where e and l are turned the
+  // other way. Every edge of a visible, lit span (a facet end, or where a mask or a shadow cuts it)
+  // therefore moves along B as a grows, by a rate found by turning e and l by kTurn: the edge is the
+  // line x + rate a through the footprint, and its share is taken across that line (cdfAcross), as
+  // for a perturbed groove's tracks.
+  const bool turning = turningShows(scene, section, density, toViewer, lighting.toLight);
+  SectionDirection eTurned = e;
+  if (turning) {
+    eTurned = turnedBy(e, kTurn);
+    visibleSpans(section, eTurned, visibleTurned, seenTurned);
+    visibleSpans(section, turnedBy(l, kTurn), litTurned);
+  }
+  const double varianceT = (density.a1t * density.a1t + density.a2t * density.a2t) / 12;
   const std::vector<SectionPoint>& pts = section.points;
   RadianceMemo radiance(scene.materials, toViewer, lighting);
   for (std::size_t i = 0; i < section.facetCount(); ++i) {
     const FacetSpan& v = visible[i];
     if (v.empty()) continue;
-    // Base-line position seen through the facet point at t (projection along E').
+    // Base-line position seen through the facet point at t (projection along E'), and the same along
+    // the turned view.
     const double p0 = seenAt[i] / e.w, p1 = seenAt[i + 1] / e.w;
+    auto seen = [&](double t) { return p0 + t * (p1 - p0); };
+    auto seenWhenTurned = [&](double t) {
+      return (seenTurned[i] + t * (seenTurned[i + 1] - seenTurned[i])) / eTurned.w;
+    };
+    // The edge at t that becomes the edge at tTurned: how far it moves along B per unit along T.
+    auto turnRate = [&](double t, double tTurned) {
+      const double x = seen(t), radius = section.centre - x;
+      return std::abs(radius) > kMinTurnRadius * density.halfSupport() ? (seenWhenTurned(tTurned) - x) / (kTurn * radius)
+                                                                       : 0.0;
+    };
     // The footprint's share between two points of the facet: on a perturbed section the line of the
     // surface through each point turns away from T by its rate, so each end has its own density
     // (the shares of consecutive facets still add up: they meet at the same point). The section's two
     // ends take the plain density, so the shares add up to the whole footprint.
     const double r0 = i == 0 ? 0.0 : pts[i].rateB;
     const double r1 = i + 1 == section.facetCount() ? 0.0 : pts[i + 1].rateB;
-    auto shareBetween = [&](double ta, double tb) {
-      return std::abs(density.cdfAcross(p0 + tb * (p1 - p0), r0 + tb * (r1 - r0)) -
-                      density.cdfAcross(p0 + ta * (p1 - p0), r0 + ta * (r1 - r0)));
+    // To second order an edge also bends with the circles about the centre: the footprint's point at
+    // travel a along T lies a^2 / (2 rho) nearer the centre than its x says. Over the footprint that
+    // moves the edge by the variance of a (the parallelogram's: (A1.T^2 + A2.T^2) / 12) over 2 rho.
+    auto bent = [&](double x) {
+      const double radius = section.centre - x;
+      return turning && std::abs(radius) > kMinBendRadius * density.halfSupport() ? x + varianceT / (2 * radius) : x;
     };
-    const double visibleShare = shareBetween(v.t0, v.t1);
+    auto shareBetween = [&](double ta, double tb, double turnA, double turnB) {
+      return std::abs(density.cdfAcross(bent(seen(tb)), r0 + tb * (r1 - r0) + turnB) -
+                      density.cdfAcross(bent(seen(ta)), r0 + ta * (r1 - r0) + turnA));
+    };
+    const bool seenTurnedToo = turning && !visibleTurned[i].empty();
+    const double visibleShare = shareBetween(v.t0, v.t1, seenTurnedToo ? turnRate(v.t0, visibleTurned[i].t0) : 0.0,
+                                             seenTurnedToo ? turnRate(v.t1, visibleTurned[i].t1) : 0.0);
     out.visibleShare += visibleShare;
     const double t0 = std::max(v.t0, lit[i].t0), t1 = std::min(v.t1, lit[i].t1);
     if (!(t1 > t0)) continue;
-    const double r = t0 == v.t0 && t1 == v.t1 ? visibleShare : shareBetween(t0, t1);  // wholly lit: the same share
+    double r = visibleShare;  // wholly lit and not turning: the same share
+    if (turning) {
+      const double u0 = std::max(visibleTurned[i].t0, litTurned[i].t0);
+      const double u1 = std::min(visibleTurned[i].t1, litTurned[i].t1);
+      const bool litTurnedToo = seenTurnedToo && u1 > u0;
+      r = shareBetween(t0, t1, litTurnedToo ? turnRate(t0, u0) : 0.0, litTurnedToo ? turnRate(t1, u1) : 0.0);
+    } else if (t0 != v.t0 || t1 != v.t1) {
+      r = shareBetween(t0, t1, 0, 0);
+    }
     const double middle = pts[i].h + 0.5 * (t0 + t1) * (pts[i + 1].h - pts[i].h);
     const Vec3 normal = facetNormalSeen(section, i, e, middle);
     const Rgb f = radiance(section.material[i], normal);

@@ -10,7 +10,8 @@
 // would need an unbounded box; ridges further away are not found, so their shadows are missed).
 // Special cases (§4.2): a special-case record of the grid whose box meets the footprint's box swept
 // along view and light (not grown by wmax: a record's box holds its bands) sends the pixel to area
-// sampling. No groove: the flat base.
+// sampling. No groove: the flat base. A footprint near the centre of an arc (within twice its
+// half-extent) is line sampled as 3 x 3 sub-footprints (nearArcCentre; not in the seed).
 #include "groove/shade.h"
 
 #include <algorithm>
@@ -134,6 +135,28 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
   grid.primitivesInBoxes(edges, 4, out);
 }
 
+// Curved sections (SeedSettings::curvedSections) shade a footprint on one section, turned with the
+// circle to first order across the footprint (line_sampling.cpp). Near an arc's centre the footprint
+// spans a wide fan of the arc's directions and that fails (the turning rates grow as 1 / distance):
+// a footprint whose centre lies within twice its half-extent of an arc's centre is shaded as
+// kCentreSplit x kCentreSplit sub-footprints, each with its own foot points. Not in the seed.
+constexpr int kCentreSplit = 3;
+
+bool nearArcCentre(const GrooveScene& scene, const std::vector<std::uint32_t>& found, const Footprint& f) {
+  const double extent = 0.5 * (std::hypot(f.axis1.u, f.axis1.v) + std::hypot(f.axis2.u, f.axis2.v));
+  for (std::uint32_t p : found) {
+    const Primitive& arc = scene.primitives[p];
+    if (arc.kind != Primitive::Kind::Arc) continue;
+    Vec2 d{f.centre.u - arc.centre.u, f.centre.v - arc.centre.v};
+    if (scene.wrapRepeat) {
+      d.u -= scene.domain[0] * std::round(d.u / scene.domain[0]);
+      d.v -= scene.domain[1] * std::round(d.v / scene.domain[1]);
+    }
+    if (std::hypot(d.u, d.v) < 2 * extent) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 double travelPerDepth(const Vec3& d) {
@@ -176,7 +199,25 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   }
   if (stats) stats->special = special;
   if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);
-  return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);
+  if (!settings_.curvedSections || !nearArcCentre(scene_, found, footprint))
+    return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);
+  constexpr int n = kCentreSplit;
+  const Vec2 a1{footprint.axis1.u / n, footprint.axis1.v / n}, a2{footprint.axis2.u / n, footprint.axis2.v / n};
+  Rgb sum{0, 0, 0};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double s1 = i + 0.5 - 0.5 * n, s2 = j + 0.5 - 0.5 * n;
+      const Footprint sub{{footprint.centre.u + s1 * a1.u + s2 * a2.u, footprint.centre.v + s1 * a1.v + s2 * a2.v},
+                          a1, a2};
+      grooves.clear();
+      for (std::uint32_t p : found) {
+        const Vec2 at = nearestCopy(scene_, scene_.primitives[p], sub.centre);
+        grooves.push_back(jointsKnown ? localGroove(scene_, p, at, grid_.joints[p]) : localGroove(scene_, p, at));
+      }
+      const Rgb v = lineSampleWith(scene_, grooves, sub, toViewer, lighting, settings_);
+      for (int c = 0; c < 3; ++c) sum[c] += v[c] / (n * n);
+    }
+  return sum;
 }
 
 Image renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,

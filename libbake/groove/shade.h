@@ -20,8 +20,10 @@ struct SeedSettings {
   // Not in the seed: for arcs, each cross-section point is moved along its circle to where the view
   // (light, mirrored) line through the footprint's centre line meets it, instead of straightening the
   // groove at the footprint (exact for arcs; the seed's flat-facet assumption fails for views along
-  // tightly curved grooves). Only where the curvature shows (line_sampling.cpp curvatureShows); the
-  // shader does the same.
+  // tightly curved grooves). Only where the curvature shows (line_sampling.cpp curvatureShows); there
+  // the spans' edges turn and bend with the circle across the footprint (line_sampling.cpp
+  // shadeSection), and a footprint near an arc's centre is split in sub-footprints (shade.cpp
+  // nearArcCentre). The shader does the same.
   bool curvedSections = true;
 };
 

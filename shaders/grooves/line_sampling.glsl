@@ -4,7 +4,8 @@
 // at its joint lines; past a joint its neighbour in the chain, when found, takes over), grouped into
 // parallel classes (within 1e-6 rad, or drifting apart by less than 1e-3 of a groove width across
 // the footprint's reach), and each class is shaded on its combined cross-section (§5), curved about the
-// centre of a tight arc (the CPU's curved sections). Several classes:
+// centre of a tight arc (the CPU's curved sections; near the arc's centre the footprint is split, as on
+// the CPU). Several classes:
 // the flat base plus the sum of each class's difference from it (occlusion between classes neglected,
 // as on the CPU).
 //
@@ -131,6 +132,37 @@ vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
   return max(sum, vec3(0.0));
 }
 
+// shade.cpp nearArcCentre: a footprint whose centre lies within twice its half-extent of an arc's
+// centre spans too wide a fan of the arc's directions for one section; it is shaded as kCentreSplit x
+// kCentreSplit sub-footprints, each with its own foot points.
+const int kCentreSplit = 3;
+
+bool nearArcCentre(vec2 axis1, vec2 axis2) {
+  float extent = 0.5 * (length(axis1) + length(axis2));
+  for (int i = 0; i < gGrooveCount; ++i)
+    if (gGrooves[i].arcRadius > 0.0 && length(offsetFromCentre(gGrooves[i].arcCentre)) < 2.0 * extent) return true;
+  return false;
+}
+
+// The grooves found, straightened at the footprint centred at `centre`.
+void straightenFound(vec2 centre) {
+  setFootprintCentre(centre);
+  for (int i = 0; i < gGrooveCount; ++i) gGrooves[i] = localGroove(gFound[i]);
+}
+
+vec3 lineSampleSplit(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
+  const int n = kCentreSplit;
+  vec2 a1 = axis1 / float(n), a2 = axis2 / float(n);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      straightenFound(centre + (float(i) + 0.5 - 0.5 * float(n)) * a1 + (float(j) + 0.5 - 0.5 * float(n)) * a2);
+      sum += lineSample(a1, a2, toViewer, flatBase) / float(n * n);
+    }
+  straightenFound(centre);  // back to the whole footprint, for the special cases
+  return sum;
+}
+
 #ifdef HAS_AREA_SAMPLING
 #include "area_sampling.glsl"
 
@@ -156,18 +188,22 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   gatherPrimitives(lower, upper);
   if (gFoundCount == 0) return flatBase;
   gGrooveCount = gFoundCount;
-  for (int i = 0; i < gFoundCount; ++i) gGrooves[i] = localGroove(gFound[i]);
+  straightenFound(centre);
   // Line sampled before the area branch, not after: Mesa's llvmpipe stops every loop of a SIMD group
   // once the group has run 65,535 loop iterations in all (drivers of real GPUs have no such cap), and
   // area sampling can use them up; a loop run after it would then do nothing for the whole group.
   vec3 radiance = vec3(0.0);
   bool sampled = false;
-  vec3 lineSampled = lineSample(axis1, axis2, toViewer, flatBase);
 #ifdef HAS_SPECIAL_CASES
   vec2 recordLower, recordUpper;
   queryBox(axis1, axis2, toViewer, gLightDir, 0.0, recordLower, recordUpper);
   gSpecialCase = specialCaseUnder(recordLower, recordUpper);
 #endif
+  // A special case's line sample only stands in for a failed area sample: it is not split (the
+  // split's loops would leave the area sample fewer under such a cap).
+  vec3 lineSampled = !gSpecialCase && nearArcCentre(axis1, axis2)
+                         ? lineSampleSplit(centre, axis1, axis2, toViewer, flatBase)
+                         : lineSample(axis1, axis2, toViewer, flatBase);
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;

@@ -13,7 +13,9 @@
 // its track's slope taken at `base` (0 for the view; for the light on a bending section, the travel
 // where the light ray from the deepest seen point crosses the base plane, so the shadow a rim casts
 // there is exact to second order); nothing moves below the horizon. Curved sections (tight arcs): the
-// point is then moved along its circle about the section's centre, and a facet's normal turns with it.
+// point is then moved along its circle about the section's centre, and a facet's normal turns with it;
+// where it shows, the spans' edges get the rates at which they move with the footprint's travel along
+// T (the section turning about its centre), as on the CPU.
 #ifndef BAKE_GROOVES_OCCLUSION_GLSL
 #define BAKE_GROOVES_OCCLUSION_GLSL
 
@@ -64,43 +66,73 @@ vec3 facetNormalSeen(int i, float dt, float dw, float h) {
   return vec3(n.y * turnedB + n.x * turnedT, n.z);
 }
 
-// The visible part [t0, t1] of each facet from (db, dt, dw); `lit` selects the light's arrays.
-void visibleSpans(float db, float dt, float dw, float base, bool lit) {
+// Where visibleSpans writes: the view's spans, the light's, and the same along the turned view and
+// light of a turning section.
+const int kSpansSeen = 0, kSpansLit = 1, kSpansSeenTurned = 2, kSpansLitTurned = 3;
+float gVisibleTurnedT0[MAX_SECTION_POINTS], gVisibleTurnedT1[MAX_SECTION_POINTS];
+float gLitTurnedT0[MAX_SECTION_POINTS], gLitTurnedT1[MAX_SECTION_POINTS];
+
+void setSpan(int target, int i, float t0, float t1) {
+  if (target == kSpansSeen) { gVisibleT0[i] = t0; gVisibleT1[i] = t1; }
+  else if (target == kSpansLit) { gLitT0[i] = t0; gLitT1[i] = t1; }
+  else if (target == kSpansSeenTurned) { gVisibleTurnedT0[i] = t0; gVisibleTurnedT1[i] = t1; }
+  else { gLitTurnedT0[i] = t0; gLitTurnedT1[i] = t1; }
+}
+
+// The visible part [t0, t1] of each facet from (db, dt, dw), into the arrays of `target`.
+void visibleSpans(float db, float dt, float dw, float base, int target) {
   int facets = facetCount();
-  for (int i = 0; i < facets; ++i) {
-    if (lit) { gLitT0[i] = 0.0; gLitT1[i] = 0.0; } else { gVisibleT0[i] = 0.0; gVisibleT1[i] = 0.0; }
-  }
+  for (int i = 0; i < facets; ++i) setSpan(target, i, 0.0, 0.0);
   if (db >= 0.0) {
     float lowest = dw < 0.0 ? -kInfinity : kInfinity;
     for (int i = facets - 1; i >= 0; --i) {
       float k0 = acrossCoordinate(i, db, dt, dw, base), k1 = acrossCoordinate(i + 1, db, dt, dw, base);
-      if (k1 > k0 && k0 < lowest) {
-        float t1 = min(1.0, (lowest - k0) / (k1 - k0));
-        if (lit) gLitT1[i] = t1; else gVisibleT1[i] = t1;
-      }
+      if (k1 > k0 && k0 < lowest) setSpan(target, i, 0.0, min(1.0, (lowest - k0) / (k1 - k0)));
       lowest = min(lowest, min(k0, k1));
     }
   } else {
     float highest = dw < 0.0 ? kInfinity : -kInfinity;
     for (int i = 0; i < facets; ++i) {
       float k0 = acrossCoordinate(i, db, dt, dw, base), k1 = acrossCoordinate(i + 1, db, dt, dw, base);
-      if (k1 > k0 && k1 > highest) {
-        float t0 = max(0.0, (highest - k0) / (k1 - k0));
-        if (lit) { gLitT0[i] = t0; gLitT1[i] = 1.0; } else { gVisibleT0[i] = t0; gVisibleT1[i] = 1.0; }
-      }
+      if (k1 > k0 && k1 > highest) setSpan(target, i, max(0.0, (highest - k0) / (k1 - k0)), 1.0);
       highest = max(highest, max(k0, k1));
     }
   }
 }
 
+// line_sampling.cpp turningShows: a curved section's edges move about travel / rho along B per unit
+// along T; their rates are found where that reaches kTurnShows of the footprint's half-support over
+// its half-extent along T.
+const float kTurn = 1e-3;
+const float kTurnShows = 0.2;
+const float kMinTurnRadius = 1e-6;
+
+const float kMinBendRadius = 0.5;
+
+// An edge at x moved by the footprint's mean square travel along T over 2 rho: the circles about the
+// centre bend towards it.
+float bentEdge(float x, float varianceT, FootprintLine density) {
+  float radius = gSectionCentre - x;
+  return abs(radius) > kMinBendRadius * halfSupport(density) ? x + varianceT / (2.0 * radius) : x;
+}
+
+bool turningShows(FootprintLine density, vec3 toViewer) {
+  if (!gSectionCurved) return false;
+  float travel = (uBounds.y + uBounds.z) * max(travelPerDepth(toViewer), travelPerDepth(gLightDir));
+  float alongT = 0.5 * (abs(density.alongT.x) + abs(density.alongT.y));
+  return travel * alongT > kTurnShows * abs(gSectionCentre) * halfSupport(density);
+}
+
 #include "mirrors.glsl"
 
-// Eq. 1 over the section plus the mirror bounces of §7.
+// Eq. 1 over the section plus the mirror bounces of §7. On a turning section each edge of a visible,
+// lit span moves along B with the footprint's travel along T (line_sampling.cpp shadeSection): its
+// rate is found by turning the view and the light by kTurn, and its share taken across its line.
 vec3 shadeSection(FootprintLine density, vec3 toViewer) {
   vec2 B = gSectionBinormal, T = sectionTangent(B);
   float eb = dot(toViewer.xy, B), et = dot(toViewer.xy, T), ew = max(toViewer.z, kMinViewW);
   float lb = dot(gLightDir.xy, B), lt = dot(gLightDir.xy, T), lw = gLightDir.z;
-  visibleSpans(eb, et, ew, 0.0, false);
+  visibleSpans(eb, et, ew, 0.0, kSpansSeen);
   // line_sampling.cpp lightDirection: on a bending section the light's tracks are followed from the
   // travel where the light ray from the deepest seen point crosses the base plane.
   float lightBase = 0.0;
@@ -109,7 +141,15 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
     for (int i = 0; i < gSectionPoints; ++i) deepest = min(deepest, gSectionH[i]);
     lightBase = deepest * (et / ew - lt / lw);
   }
-  visibleSpans(lb, lt, lw, lightBase, true);
+  visibleSpans(lb, lt, lw, lightBase, kSpansLit);
+  bool turning = turningShows(density, toViewer);
+  float turnCos = cos(kTurn), turnSin = sin(kTurn);
+  float ebTurned = eb * turnCos - et * turnSin, etTurned = et * turnCos + eb * turnSin;
+  if (turning) {
+    visibleSpans(ebTurned, etTurned, ew, 0.0, kSpansSeenTurned);
+    visibleSpans(lb * turnCos - lt * turnSin, lt * turnCos + lb * turnSin, lw, lightBase, kSpansLitTurned);
+  }
+  float varianceT = (density.alongT.x * density.alongT.x + density.alongT.y * density.alongT.y) / 12.0;
   vec3 direct = vec3(0.0);
   int facets = facetCount();
   for (int i = 0; i < facets; ++i) {
@@ -122,8 +162,25 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
     // one, as on the CPU.
     float r0 = i == 0 ? 0.0 : gSectionRateB[i];
     float r1 = i + 1 == facets ? 0.0 : gSectionRateB[i + 1];
-    float r = abs(footprintCdfAcross(density, p0 + t1 * (p1 - p0), r0 + t1 * (r1 - r0)) -
-                  footprintCdfAcross(density, p0 + t0 * (p1 - p0), r0 + t0 * (r1 - r0)));
+    float x0 = p0 + t0 * (p1 - p0), x1 = p0 + t1 * (p1 - p0);
+    float turn0 = 0.0, turn1 = 0.0;
+    if (turning && gVisibleTurnedT1[i] > gVisibleTurnedT0[i]) {
+      float u0 = max(gVisibleTurnedT0[i], gLitTurnedT0[i]), u1 = min(gVisibleTurnedT1[i], gLitTurnedT1[i]);
+      if (u1 > u0) {
+        float q0 = acrossCoordinate(i, ebTurned, etTurned, ew, 0.0) / ew;
+        float q1 = acrossCoordinate(i + 1, ebTurned, etTurned, ew, 0.0) / ew;
+        float radius0 = gSectionCentre - x0, radius1 = gSectionCentre - x1;
+        float nearest = kMinTurnRadius * halfSupport(density);
+        turn0 = abs(radius0) > nearest ? (q0 + u0 * (q1 - q0) - x0) / (kTurn * radius0) : 0.0;
+        turn1 = abs(radius1) > nearest ? (q0 + u1 * (q1 - q0) - x1) / (kTurn * radius1) : 0.0;
+      }
+    }
+    if (turning) {  // and bent with the circles about the centre (line_sampling.cpp shadeSection)
+      x0 = bentEdge(x0, varianceT, density);
+      x1 = bentEdge(x1, varianceT, density);
+    }
+    float r = abs(footprintCdfAcross(density, x1, r0 + t1 * (r1 - r0) + turn1) -
+                  footprintCdfAcross(density, x0, r0 + t0 * (r1 - r0) + turn0));
     float middle = gSectionH[i] + 0.5 * (t0 + t1) * (gSectionH[i + 1] - gSectionH[i]);
     direct += r * directRadiance(gFacetMaterial[i], facetNormalSeen(i, et, ew, middle), toViewer);
   }
