@@ -115,8 +115,10 @@ double acrossCoordinate(const CrossSection& section, const SectionPoint& point, 
 }
 
 void subdivideFacets(CrossSection& section, int pieces) {
-  std::vector<SectionPoint> points;
-  std::vector<std::size_t> material;
+  thread_local std::vector<SectionPoint> points;  // swapped with the section's: no allocation once grown
+  thread_local std::vector<std::size_t> material;
+  points.clear();
+  material.clear();
   points.push_back(section.points.front());
   for (std::size_t i = 0; i < section.facetCount(); ++i) {
     const SectionPoint a = section.points[i], b = section.points[i + 1];

@@ -10,8 +10,8 @@
 // would need an unbounded box; ridges further away are not found, so their shadows are missed).
 // Special cases (§4.2): a special-case record of the grid whose box meets the footprint's box swept
 // along view and light (not grown by wmax: a record's box holds its bands) sends the pixel to area
-// sampling. No groove: the flat base. A footprint near the centre of an arc (within twice its
-// half-extent) is line sampled as 3 x 3 sub-footprints (nearArcCentre; not in the seed).
+// sampling. No groove: the flat base. A footprint near the centre of an arc (within 1.5 of its
+// half-extents) is line sampled as 3 x 3 sub-footprints (nearArcCentre; not in the seed).
 #include "groove/shade.h"
 
 #include <algorithm>
@@ -138,9 +138,10 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
 // Curved sections (SeedSettings::curvedSections) shade a footprint on one section, turned with the
 // circle to first order across the footprint (line_sampling.cpp). Near an arc's centre the footprint
 // spans a wide fan of the arc's directions and that fails (the turning rates grow as 1 / distance):
-// a footprint whose centre lies within twice its half-extent of an arc's centre is shaded as
+// a footprint whose centre lies within 1.5 half-extents of an arc's centre is shaded as
 // kCentreSplit x kCentreSplit sub-footprints, each with its own foot points. Not in the seed.
 constexpr int kCentreSplit = 3;
+constexpr double kNearCentre = 1.5;  // footprint half-extents
 
 bool nearArcCentre(const GrooveScene& scene, const std::vector<std::uint32_t>& found, const Footprint& f) {
   const double extent = 0.5 * (std::hypot(f.axis1.u, f.axis1.v) + std::hypot(f.axis2.u, f.axis2.v));
@@ -152,7 +153,7 @@ bool nearArcCentre(const GrooveScene& scene, const std::vector<std::uint32_t>& f
       d.u -= scene.domain[0] * std::round(d.u / scene.domain[0]);
       d.v -= scene.domain[1] * std::round(d.v / scene.domain[1]);
     }
-    if (std::hypot(d.u, d.v) < 2 * extent) return true;
+    if (std::hypot(d.u, d.v) < kNearCentre * extent) return true;
   }
   return false;
 }

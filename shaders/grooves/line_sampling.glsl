@@ -132,15 +132,16 @@ vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
   return max(sum, vec3(0.0));
 }
 
-// shade.cpp nearArcCentre: a footprint whose centre lies within twice its half-extent of an arc's
+// shade.cpp nearArcCentre: a footprint whose centre lies within kNearCentre half-extents of an arc's
 // centre spans too wide a fan of the arc's directions for one section; it is shaded as kCentreSplit x
 // kCentreSplit sub-footprints, each with its own foot points.
 const int kCentreSplit = 3;
+const float kNearCentre = 1.5;
 
 bool nearArcCentre(vec2 axis1, vec2 axis2) {
   float extent = 0.5 * (length(axis1) + length(axis2));
   for (int i = 0; i < gGrooveCount; ++i)
-    if (gGrooves[i].arcRadius > 0.0 && length(offsetFromCentre(gGrooves[i].arcCentre)) < 2.0 * extent) return true;
+    if (gGrooves[i].arcRadius > 0.0 && length(offsetFromCentre(gGrooves[i].arcCentre)) < kNearCentre * extent) return true;
   return false;
 }
 
