@@ -10,8 +10,8 @@
 // would need an unbounded box; ridges further away are not found, so their shadows are missed).
 // Special cases (§4.2): a special-case record of the grid whose box meets the footprint's box swept
 // along view and light (not grown by wmax: a record's box holds its bands) sends the pixel to area
-// sampling. No groove: the flat base. A footprint near the centre of an arc (within 1.5 of its
-// half-extents) is line sampled as 3 x 3 sub-footprints (nearArcCentre; not in the seed).
+// sampling. No groove: the flat base. A footprint near the centre of an arc (within 1.5 times its
+// half-extent) is line sampled as 3 x 3 sub-footprints (nearArcCentre; not in the seed).
 #include "groove/shade.h"
 
 #include <algorithm>
