@@ -12,6 +12,7 @@
 #include <bake_formats/grooves.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -139,6 +140,7 @@ struct OracleFigures {
   // Line-sampled pixels whose CPU value moves by more than 2/255 when arcs are left straight (the
   // pixels that test the shader's curved sections).
   std::size_t curvedShows = 0;
+  std::size_t nearArcCentre = 0;  // line-sampled pixels near a watched arc centre (arcCentres_)
 };
 
 int quantised(double x) { return int(std::lround(255.0 * std::clamp(x, 0.0, 1.0))); }
@@ -148,6 +150,9 @@ class GroovesOracle : public test::GlTest {
   // Area sampling compiled in (a minute or two per variant on llvmpipe): only the views that show
   // special cases turn it on; the others check that none is in view.
   bool areaSampling_ = false;
+  // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
+  // one are counted (libbake/groove/shade.cpp nearArcCentre splits those footprints in 3 x 3).
+  std::vector<std::array<float, 2>> arcCentres_;
 
   // Renders the baked scene from `eye` (looking at `target`) lit from `light`, shades every covered
   // pixel on the CPU from the shader's own inputs, and returns the comparison.
@@ -220,6 +225,12 @@ class GroovesOracle : public test::GlTest {
         continue;
       }
       ++figures.pixels;
+      const double extent = 0.5 * (std::hypot(a[2], a[3]) + std::hypot(b[0], b[1]));
+      for (const auto& c : arcCentres_)
+        if (std::hypot(a[0] - c[0], a[1] - c[1]) < 1.5 * extent) {
+          ++figures.nearArcCentre;
+          break;
+        }
       const groove::Rgb withoutCurves = straight.shade(footprint, toViewer, light3);
       bool curvedShows = false;
       for (int k = 0; k < 3; ++k)
@@ -415,6 +426,27 @@ TEST_F(GroovesOracle, TightRingsOnCurvedSections) {
   RecordProperty("tight_rings_curved_pixels", int(f.curvedShows));
   EXPECT_GT(f.curvedShows, std::size_t(50)) << "the view should show the rings' curvature";
   expectWithinTwoLevels(f, "tight_rings", true);
+}
+
+// A ring whose radius equals its half-width (no special case: its band only touches itself at the
+// centre), seen at about 45 degrees: the footprints around the centre are split in 3 x 3 (shade.cpp
+// nearArcCentre) and the others' span edges turn and bend with the circle, in the shader as on the CPU.
+TEST_F(GroovesOracle, RingCentreOnSubFootprints) {
+  const std::string json = R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"vee": {"points": [[-0.1, 0], [0, -0.06], [0.1, 0]]}},
+    "materials": {)" + kGrey + R"(}, "base": "grey",
+    "grooves": [{"profile": "vee", "path": {"arc": {"centre": [0.5, 0.5], "radius": 0.1, "start": 0, "end": 360}}}]})";
+  const Baked baked = bake(json, "ring_centre");
+  ASSERT_FALSE(baked.file.empty());
+  arcCentres_ = {{0.5f, 0.5f}};
+  const OracleFigures f = compare(baked, {0.5f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.6f, 0.3f, 0.7f}, 0);
+  std::printf("[ grooves ] ring_centre: %zu pixels near the centre (split), %zu change by more than 2/255 with "
+              "straight arcs\n",
+              f.nearArcCentre, f.curvedShows);
+  RecordProperty("ring_centre_split_pixels", int(f.nearArcCentre));
+  EXPECT_GT(f.nearArcCentre, std::size_t(2)) << "the view should hold footprints around the ring's centre";
+  EXPECT_GT(f.curvedShows, std::size_t(50)) << "the view should show the ring's curvature";
+  expectWithinTwoLevels(f, "ring_centre");
 }
 
 // A box groove whose offset wanders (curvature radius about 0.08, near its own width), lit across it:
