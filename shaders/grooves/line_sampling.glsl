@@ -126,10 +126,13 @@ vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
     gClassOf[i] = cls;
   }
   if (classes == 0) return flatBase;
-  if (classes == 1) return shadeClass(0, fronts[0], axis1, axis2, toViewer);
-  vec3 sum = flatBase;
-  for (int c = 0; c < classes; ++c) sum += shadeClass(c, fronts[c], axis1, axis2, toViewer) - flatBase;
-  return max(sum, vec3(0.0));
+  // One call of shadeClass, so that the compiler inlines it once.
+  vec3 sum = flatBase, value = flatBase;
+  for (int c = 0; c < classes; ++c) {
+    value = shadeClass(c, fronts[c], axis1, axis2, toViewer);
+    sum += value - flatBase;
+  }
+  return classes == 1 ? value : max(sum, vec3(0.0));
 }
 
 // shade.cpp nearArcCentre: a footprint whose centre lies within kNearCentre half-extents of an arc's
@@ -151,16 +154,18 @@ void straightenFound(vec2 centre) {
   for (int i = 0; i < gGrooveCount; ++i) gGrooves[i] = localGroove(gFound[i]);
 }
 
-vec3 lineSampleSplit(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
-  const int n = kCentreSplit;
+// The footprint line sampled whole, or split in kCentreSplit x kCentreSplit parts near an arc's centre
+// (one call of lineSample, so that the compiler inlines it once).
+vec3 lineSampleParts(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase, bool split) {
+  int n = split ? kCentreSplit : 1;
   vec2 a1 = axis1 / float(n), a2 = axis2 / float(n);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      straightenFound(centre + (float(i) + 0.5 - 0.5 * float(n)) * a1 + (float(j) + 0.5 - 0.5 * float(n)) * a2);
-      sum += lineSample(a1, a2, toViewer, flatBase) / float(n * n);
-    }
-  straightenFound(centre);  // back to the whole footprint, for the special cases
+  for (int k = 0; k < n * n; ++k) {
+    int i = k / n, j = k - i * n;
+    if (split) straightenFound(centre + (float(i) + 0.5 - 0.5 * float(n)) * a1 + (float(j) + 0.5 - 0.5 * float(n)) * a2);
+    sum += lineSample(a1, a2, toViewer, flatBase) / float(n * n);
+  }
+  if (split) straightenFound(centre);  // back to the whole footprint, for the special cases
   return sum;
 }
 
@@ -202,9 +207,7 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
 #endif
   // A special case's line sample only stands in for a failed area sample: it is not split (the
   // split's loops would leave the area sample fewer under such a cap).
-  vec3 lineSampled = !gSpecialCase && nearArcCentre(axis1, axis2)
-                         ? lineSampleSplit(centre, axis1, axis2, toViewer, flatBase)
-                         : lineSample(axis1, axis2, toViewer, flatBase);
+  vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, !gSpecialCase && nearArcCentre(axis1, axis2));
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;

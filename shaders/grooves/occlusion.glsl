@@ -132,7 +132,6 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
   vec2 B = gSectionBinormal, T = sectionTangent(B);
   float eb = dot(toViewer.xy, B), et = dot(toViewer.xy, T), ew = max(toViewer.z, kMinViewW);
   float lb = dot(gLightDir.xy, B), lt = dot(gLightDir.xy, T), lw = gLightDir.z;
-  visibleSpans(eb, et, ew, 0.0, kSpansSeen);
   // line_sampling.cpp lightDirection: on a bending section the light's tracks are followed from the
   // travel where the light ray from the deepest seen point crosses the base plane.
   float lightBase = 0.0;
@@ -141,13 +140,20 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
     for (int i = 0; i < gSectionPoints; ++i) deepest = min(deepest, gSectionH[i]);
     lightBase = deepest * (et / ew - lt / lw);
   }
-  visibleSpans(lb, lt, lw, lightBase, kSpansLit);
   bool turning = turningShows(density, toViewer);
   float turnCos = cos(kTurn), turnSin = sin(kTurn);
   float ebTurned = eb * turnCos - et * turnSin, etTurned = et * turnCos + eb * turnSin;
-  if (turning) {
-    visibleSpans(ebTurned, etTurned, ew, 0.0, kSpansSeenTurned);
-    visibleSpans(lb * turnCos - lt * turnSin, lt * turnCos + lb * turnSin, lw, lightBase, kSpansLitTurned);
+  // The view's and the light's spans, then the turned ones: one call of visibleSpans, so that the
+  // compiler inlines it once.
+  for (int target = kSpansSeen; target <= (turning ? kSpansLitTurned : kSpansLit); ++target) {
+    bool light = target == kSpansLit || target == kSpansLitTurned, turned = target >= kSpansSeenTurned;
+    float db = light ? lb : eb, dt = light ? lt : et;
+    if (turned) {
+      float b = db * turnCos - dt * turnSin;
+      dt = dt * turnCos + db * turnSin;
+      db = b;
+    }
+    visibleSpans(db, dt, light ? lw : ew, light ? lightBase : 0.0, target);
   }
   float varianceT = (density.alongT.x * density.alongT.x + density.alongT.y * density.alongT.y) / 12.0;
   vec3 direct = vec3(0.0);
