@@ -225,8 +225,8 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
     // The edge at t that becomes the edge at tTurned: how far it moves along B per unit along T.
     auto turnRate = [&](double t, double tTurned) {
       const double x = seen(t), radius = section.centre - x;
-      return std::abs(radius) > kMinTurnRadius * density.halfSupport() ? (seenWhenTurned(tTurned) - x) / (kTurn * radius)
-                                                                       : 0.0;
+      if (!(std::abs(radius) > kMinTurnRadius * density.halfSupport())) return 0.0;
+      return (seenWhenTurned(tTurned) - x) / (kTurn * radius);
     };
     // The footprint's share between two points of the facet: on a perturbed section the line of the
     // surface through each point turns away from T by its rate, so each end has its own density

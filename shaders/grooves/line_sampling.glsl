@@ -143,8 +143,10 @@ const float kNearCentre = 1.5;
 
 bool nearArcCentre(vec2 axis1, vec2 axis2) {
   float extent = 0.5 * (length(axis1) + length(axis2));
-  for (int i = 0; i < gGrooveCount; ++i)
-    if (gGrooves[i].arcRadius > 0.0 && length(offsetFromCentre(gGrooves[i].arcCentre)) < kNearCentre * extent) return true;
+  for (int i = 0; i < gGrooveCount; ++i) {
+    bool arc = gGrooves[i].arcRadius > 0.0;
+    if (arc && length(offsetFromCentre(gGrooves[i].arcCentre)) < kNearCentre * extent) return true;
+  }
   return false;
 }
 
@@ -162,7 +164,8 @@ vec3 lineSampleParts(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 fl
   vec3 sum = vec3(0.0);
   for (int k = 0; k < n * n; ++k) {
     int i = k / n, j = k - i * n;
-    if (split) straightenFound(centre + (float(i) + 0.5 - 0.5 * float(n)) * a1 + (float(j) + 0.5 - 0.5 * float(n)) * a2);
+    vec2 part = vec2(float(i), float(j)) + 0.5 - 0.5 * float(n);
+    if (split) straightenFound(centre + part.x * a1 + part.y * a2);
     sum += lineSample(a1, a2, toViewer, flatBase) / float(n * n);
   }
   if (split) straightenFound(centre);  // back to the whole footprint, for the special cases
@@ -206,8 +209,9 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   gSpecialCase = specialCaseUnder(recordLower, recordUpper);
 #endif
   // A special case's line sample only stands in for a failed area sample: it is not split (the
-  // split's loops would leave the area sample fewer under such a cap).
-  vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, !gSpecialCase && nearArcCentre(axis1, axis2));
+  // split's loops would leave the area sample fewer iterations under such a cap).
+  bool split = !gSpecialCase && nearArcCentre(axis1, axis2);
+  vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, split);
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;
