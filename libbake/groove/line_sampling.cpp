@@ -101,6 +101,12 @@ bool parallel(const LocalGroove& a, const LocalGroove& b, double reach) {
   return sine <= std::max(std::sin(kParallelAngle), drift);
 }
 
+// The longest travel over the base plane of a view or shadow line below the surface: (hmax + dmax)
+// times the larger travel per depth.
+double longestTravel(const GrooveScene& scene, const Vec3& toViewer, const Vec3& toLight) {
+  return (scene.hmax + scene.dmax) * std::max(travelPerDepth(toViewer), travelPerDepth(toLight));
+}
+
 // Curved sections only where the curvature shows: over the longest travel S of a view or shadow line
 // among the grooves ((hmax + dmax) times the travel per depth), the groove's tightest circle (radius
 // R - w, w its half-width) leaves its tangent by S^2 / (2 (R - w)). Below kCurvedShift of the
@@ -109,7 +115,7 @@ bool curvatureShows(const GrooveScene& scene, const Primitive& arc, const LocalG
                     const Vec3& toViewer, const Vec3& toLight) {
   const double inner = std::abs(arc.radius) - grooveWidth(g);
   if (!(inner > 0)) return true;
-  const double travel = (scene.hmax + scene.dmax) * std::max(travelPerDepth(toViewer), travelPerDepth(toLight));
+  const double travel = longestTravel(scene, toViewer, toLight);
   return travel * travel / (2 * inner) > kCurvedShift * 2 * line.halfSupport();
 }
 
@@ -170,7 +176,7 @@ SectionDirection lightDirection(const CrossSection& section, const SectionDirect
 bool turningShows(const GrooveScene& scene, const CrossSection& section, const FootprintLine& density,
                   const Vec3& toViewer, const Vec3& toLight) {
   if (!std::isfinite(section.centre)) return false;
-  const double travel = (scene.hmax + scene.dmax) * std::max(travelPerDepth(toViewer), travelPerDepth(toLight));
+  const double travel = longestTravel(scene, toViewer, toLight);
   const double alongT = 0.5 * (std::abs(density.a1t) + std::abs(density.a2t));
   return travel * alongT > kTurnShows * std::abs(section.centre) * density.halfSupport();
 }

@@ -175,12 +175,16 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   if (stats) *stats = {false, std::uint32_t(found.size())};
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
 
-  grooves.clear();
+  // The primitives found, straightened at the footprint centred at `centre`.
   const bool jointsKnown = grid_.joints.size() == scene_.primitives.size();
-  for (std::uint32_t p : found) {
-    const Vec2 at = nearestCopy(scene_, scene_.primitives[p], footprint.centre);
-    grooves.push_back(jointsKnown ? localGroove(scene_, p, at, grid_.joints[p]) : localGroove(scene_, p, at));
-  }
+  auto straightenAt = [&](Vec2 centre) {
+    grooves.clear();
+    for (std::uint32_t p : found) {
+      const Vec2 at = nearestCopy(scene_, scene_.primitives[p], centre);
+      grooves.push_back(jointsKnown ? localGroove(scene_, p, at, grid_.joints[p]) : localGroove(scene_, p, at));
+    }
+  };
+  straightenAt(footprint.centre);
   // §4.2: a special case is an intersection or an end inside the box. A record's box already holds
   // the bands around its point (the overlap of two regions, an end's cut and walls, a mitre), so it
   // is met against the footprint's box swept along view and light, not grown by wmax again.
@@ -210,11 +214,7 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
       const double s1 = i + 0.5 - 0.5 * n, s2 = j + 0.5 - 0.5 * n;
       const Footprint sub{{footprint.centre.u + s1 * a1.u + s2 * a2.u, footprint.centre.v + s1 * a1.v + s2 * a2.v},
                           a1, a2};
-      grooves.clear();
-      for (std::uint32_t p : found) {
-        const Vec2 at = nearestCopy(scene_, scene_.primitives[p], sub.centre);
-        grooves.push_back(jointsKnown ? localGroove(scene_, p, at, grid_.joints[p]) : localGroove(scene_, p, at));
-      }
+      straightenAt(sub.centre);
       const Rgb v = lineSampleWith(scene_, grooves, sub, toViewer, lighting, settings_);
       for (int c = 0; c < 3; ++c) sum[c] += v[c] / (n * n);
     }

@@ -83,7 +83,7 @@ const int kCurvedPieces = 4;
 bool curvatureShows(LocalGroove g, FootprintLine line, vec3 toViewer) {
   float inner = g.arcRadius - g.width;
   if (!(inner > 0.0)) return true;
-  float travel = (uBounds.y + uBounds.z) * max(travelPerDepth(toViewer), travelPerDepth(gLightDir));
+  float travel = longestTravel(toViewer, gLightDir);
   return travel * travel / (2.0 * inner) > kCurvedShift * 2.0 * halfSupport(line);
 }
 

@@ -48,6 +48,12 @@ float travelPerDepth(vec3 d) {
   return d.z > horizontal / kMaxReach ? horizontal / d.z : kMaxReach;
 }
 
+// The longest travel over the base plane of a view or shadow line below the surface (line_sampling.cpp
+// longestTravel); uBounds.y, .z: hmax, dmax.
+float longestTravel(vec3 toViewer, vec3 toLight) {
+  return (uBounds.y + uBounds.z) * max(travelPerDepth(toViewer), travelPerDepth(toLight));
+}
+
 // The query box, relative to F.
 void queryBoxAlong(inout vec2 lower, inout vec2 upper, vec2 coreLower, vec2 coreUpper, vec3 d, float ridge,
                    float cavity) {

@@ -118,7 +118,7 @@ float bentEdge(float x, float varianceT, FootprintLine density) {
 
 bool turningShows(FootprintLine density, vec3 toViewer) {
   if (!gSectionCurved) return false;
-  float travel = (uBounds.y + uBounds.z) * max(travelPerDepth(toViewer), travelPerDepth(gLightDir));
+  float travel = longestTravel(toViewer, gLightDir);
   float alongT = 0.5 * (abs(density.alongT.x) + abs(density.alongT.y));
   return travel * alongT > kTurnShows * abs(gSectionCentre) * halfSupport(density);
 }
