@@ -7,9 +7,9 @@
 // every view line and light ray), or without clipping when one lies wholly on one side of the other's
 // plane. Only direct light, as on the CPU. Pieces cover the working region: the footprint swept along
 // the view over the grooves' depth and height, then along the light over their whole range.
-// Caps are below the CPU's (160 pieces and 160 cells here, 512 there; 16 fragments per
-// piece, 48 there; 16 vertices per polygon, 24 there): when they are reached the footprint is split
-// in 2 x 2, 4 x 4, then 8 x 8 equal parts (the CPU splits only the parts that overflow; both are
+// Caps are below the CPU's (160 pieces and 160 cells here, 512 there; 16 fragments per piece, 48
+// there; 16 vertices per polygon, 24 there): when they are reached the part that overflows is split
+// in 2 x 2 halves, at most three times, as on the CPU (whose caps are reached less often; both are
 // exact), and past that what does not fit is left out. A footprint of zero area (no screen-space
 // derivatives) is line sampled: a rasterised pixel always has one.
 #ifndef BAKE_GROOVES_AREA_SAMPLING_GLSL
@@ -319,6 +319,37 @@ float areaExtent() {
   return width;
 }
 
+// The footprint split only where its pieces overflow, as the CPU's recursion: a depth-first walk of
+// the quadtree of parts (cell (x, y) of 2^level x 2^level), children in the order (0,0) (1,0) (0,1)
+// (1,1), with no stack: after a part is done, climb out of every level where it was the last child,
+// then step to the next sibling. One loop, so llvmpipe's cap counts only the parts sampled, and a
+// part that fits is never sampled again.
+void sampleSplitParts(vec2 axis1, vec2 axis2, out vec3 radiance) {
+  radiance = vec3(0.0);
+  int level = 0;
+  ivec2 cell = ivec2(0);
+  bool more = true;
+  while (more) {
+    float parts = float(1 << level);
+    vec2 a1 = axis1 / parts, a2 = axis2 / parts;
+    vec2 centre = (float(cell.x) + 0.5 - 0.5 * parts) * a1 + (float(cell.y) + 0.5 - 0.5 * parts) * a2;
+    bool last = level == kAreaMaxSplitLevel;
+    vec3 partRadiance;
+    bool complete = sampleParallelogram(centre, a1, a2, last, partRadiance);
+    if (!complete && !last) {
+      ++level;  // split this part: its first child comes next
+      cell *= 2;
+    } else {
+      radiance += partRadiance / (parts * parts);
+      int lastChildLevels = min(findLSB(~(cell.x & cell.y)), level);  // trailing levels at child (1,1)
+      level -= lastChildLevels;
+      cell >>= lastChildLevels;
+      more = level > 0;
+      if (more) cell = (cell.x & 1) == 0 ? ivec2(cell.x + 1, cell.y) : ivec2(cell.x - 1, cell.y + 1);
+    }
+  }
+}
+
 // The footprint F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) relative to F, by area (§6); false when no
 // arena slot was free (the caller line samples).
 bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, out vec3 radiance) {
@@ -345,23 +376,7 @@ bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, out vec3 radiance) {
     gAreaLight = gLightDir;
     gAreaDepthTolerance = 1e-5 * gAreaLengthScale;
     gAreaLightAllOccluders = gLightDir.z < 0.05;
-    bool done = false;
-    for (int level = 0; level <= kAreaMaxSplitLevel && !done; ++level) {
-      int parts = 1 << level;
-      bool last = level == kAreaMaxSplitLevel;
-      vec2 a1 = axis1 / float(parts), a2 = axis2 / float(parts);
-      vec3 sum = vec3(0.0);
-      bool complete = true;
-      for (int part = 0; part < parts * parts && (complete || last); ++part) {
-        vec2 centre = (float(part % parts) + 0.5 - 0.5 * float(parts)) * a1 +
-                      (float(part / parts) + 0.5 - 0.5 * float(parts)) * a2;
-        vec3 partRadiance;
-        complete = sampleParallelogram(centre, a1, a2, last, partRadiance) && complete;
-        sum += partRadiance;
-      }
-      done = complete || last;
-      if (done) radiance = sum / float(parts * parts);
-    }
+    sampleSplitParts(axis1, axis2, radiance);
     releaseSlot();
   }
   return helper || slot;
