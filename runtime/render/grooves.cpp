@@ -5,7 +5,8 @@
 // instance: the mesh (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/
 // its package needs:
 // mirrors compiled in only when a material mirrors, the special-case lookup only when the grid has
-// records, arrays sized to the package's longest profile and (up to 24) its primitive count.
+// records, arrays sized to the package's longest profile and (up to 24) its primitive count. With
+// area sampling, pixels that a driver's loop cap cut short are shaded again in retry passes.
 #include "render/grooves.h"
 
 #include <GL/glcorearb.h>
@@ -34,7 +35,13 @@ constexpr GLuint kAreaScratchBinding = 10;
 constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // After the slot flags, the shader's areaCounts: special-case fragments sampled by area, line sampled
 // for want of a slot, line sampled because a driver's loop cap cut the area sample short.
+// The fourth: cut short in the first pass and shaded again in a retry pass (counted there too).
 constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kAreaCounts = 4;
+// The retry buffer of shaders/grooves/area_retry.glsl: kRetryClasses counts, then one mark per pixel
+// of the target. Pixels cut short by a driver's loop cap are shaded again, one class of
+// (x mod 4, y mod 4) per pass.
+constexpr GLuint kAreaRetryBinding = 11;
+constexpr std::size_t kRetryClasses = 16;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -109,6 +116,25 @@ GroovesRenderer::~GroovesRenderer() {
     glDeleteBuffers(2, buffers);
   }
   if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
+  if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
+}
+
+// The retry buffer sized for a width x height target, zeroed: no pixel marked.
+void GroovesRenderer::clearAreaRetry(int width, int height) {
+  const std::size_t pixels = std::size_t(std::max(width, 1)) * std::size_t(std::max(height, 1));
+  if (pixels != retryPixels_) {
+    if (areaRetry_ != 0) {
+      glDeleteBuffers(1, &areaRetry_);
+      bytes_ -= (kRetryClasses + retryPixels_) * sizeof(std::uint32_t);
+    }
+    const std::size_t bytes = (kRetryClasses + pixels) * sizeof(std::uint32_t);
+    glCreateBuffers(1, &areaRetry_);
+    glNamedBufferStorage(areaRetry_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    bytes_ += bytes;
+    retryPixels_ = pixels;
+  }
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(areaRetry_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 // The arena, zeroed (every slot free), made once for all packages with special cases.
@@ -128,6 +154,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
   // Keyed by (package, material): an assembled scene package holds one groove grid per material.
   std::map<std::pair<std::size_t, int>, std::size_t> uploadOfPackage;
   std::map<std::pair<std::size_t, int>, std::vector<std::string>> definesOfPackage;
+  std::map<std::pair<std::size_t, int>, bool> decodedRecordsEmpty;
   GLint storageAlignment = 256;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storageAlignment);
   const std::size_t alignment = std::max<std::size_t>(fmt::kBufferAlignment, std::size_t(std::max(1, storageAlignment)));
@@ -162,6 +189,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       bytes_ += bytes.size() + sizeof header;
       uploadOfPackage[key] = uploads_.size();
       definesOfPackage[key] = packageDefines(decoded, options_.areaSampling);
+      decodedRecordsEmpty[key] = decoded.records.empty();
       if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
       uploads_.push_back(upload);
     }
@@ -178,39 +206,75 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     BAKE_ASSIGN_OR_RETURN(item.mesh, GpuPrimitive::upload(primitive, locations));
     item.world = instance.world;
     item.upload = uploadOfPackage[key];
+    item.areaSampling = !decodedRecordsEmpty[key] && options_.areaSampling;
     items_.push_back(std::move(item));
   }
   return {};
 }
 
+// One draw of an item: its uniforms and buffers, then the mesh. `retryClass` 0 is the first pass,
+// k > 0 the retry pass of class k - 1 (area_retry.glsl); `number` is the item's draw number.
+void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, int retryClass) const {
+  const unsigned program = item.program;
+  glUseProgram(program);
+  setMatrix4(program, "uModel", item.world);
+  setMatrix4(program, "uViewProj", multiply(frame.projection, frame.view));
+  const Mat3 normal = normalMatrix(item.world);
+  glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, normal.data());
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, frame.light.direction.data());
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uLightColour"), 1, frame.light.colour.data());
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
+  glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
+  if (item.areaSampling) {
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retryClass);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uRetryDraw"), number);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uRetryStride"), std::max(frame.width, 1));
+  }
+  const Upload& upload = uploads_[item.upload];
+  for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(k), upload.storage, GLintptr(upload.offset[k]),
+                      GLsizeiptr(upload.size[k]));
+  glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
+  if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
+  if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, areaRetry_);
+  item.mesh.draw();
+}
+
+// The pixels the first pass marked, shaded again one class at a time. Depth is tested (LEQUAL: the
+// same fragments as the first pass) but not written.
+void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  std::uint32_t marked[kRetryClasses] = {};
+  glGetNamedBufferSubData(areaRetry_, 0, sizeof marked, marked);
+  GLint depthFunc = GL_LESS;
+  GLboolean depthMask = GL_TRUE;
+  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  for (std::size_t c = 0; c < kRetryClasses; ++c) {
+    if (marked[c] == 0) continue;
+    ++retryPasses_;
+    for (std::size_t i = 0; i < items_.size(); ++i)
+      if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, int(c) + 1);
+  }
+  glDepthFunc(GLenum(depthFunc));
+  glDepthMask(depthMask);
+}
+
 void GroovesRenderer::draw(const FrameContext& frame) {
-  const Mat4 viewProjection = multiply(frame.projection, frame.view);
-  if (areaScratch_ != 0) {  // the counts are the frame's own
+  retryPasses_ = 0;
+  if (areaScratch_ != 0) {  // the counts and marks are the frame's own
     const std::uint32_t zero = 0;
     glClearNamedBufferSubData(areaScratch_, GL_R32UI, GLintptr(kAreaCountsOffset), kAreaCounts * sizeof(std::uint32_t),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    clearAreaRetry(frame.width, frame.height);
   }
-  for (const Item& item : items_) {
-    const unsigned program = item.program;
-    glUseProgram(program);
-    setMatrix4(program, "uModel", item.world);
-    setMatrix4(program, "uViewProj", viewProjection);
-    const Mat3 normal = normalMatrix(item.world);
-    glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, normal.data());
-    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, frame.light.direction.data());
-    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightColour"), 1, frame.light.colour.data());
-    glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
-    glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
-    const Upload& upload = uploads_[item.upload];
-    for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
-      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(k), upload.storage, GLintptr(upload.offset[k]),
-                        GLsizeiptr(upload.size[k]));
-    glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
-    if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
-    item.mesh.draw();
-  }
+  for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, 0);
+  if (areaRetry_ != 0) drawRetryPasses(frame);
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
+  if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
 }
 
@@ -221,7 +285,9 @@ nlohmann::json GroovesRenderer::statistics() const {
   glGetNamedBufferSubData(areaScratch_, GLintptr(kAreaCountsOffset), sizeof counts, counts);
   return {{"grooveAreaFragments", counts[0] + counts[1] + counts[2]},
           {"grooveAreaLineSampledNoSlot", counts[1]},
-          {"grooveAreaLineSampledLoopCap", counts[2]}};
+          {"grooveAreaLineSampledLoopCap", counts[2]},
+          {"grooveAreaRetried", counts[3]},
+          {"grooveAreaRetryPasses", retryPasses_}};
 }
 
 std::vector<std::string> GroovesRenderer::warnings() const {

@@ -50,6 +50,10 @@ class GroovesRenderer : public TechniqueRenderer {
  private:
   void makeAreaScratch();
   unsigned areaScratch_ = 0;  // the area sampling arena (special cases), shared by every package
+  void clearAreaRetry(int width, int height);
+  unsigned areaRetry_ = 0;    // retry counts and per-pixel marks (shaders/grooves/area_retry.glsl)
+  std::size_t retryPixels_ = 0;
+  std::uint32_t retryPasses_ = 0;  // of the last frame
   // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
   struct Upload {
     unsigned storage = 0, header = 0;
@@ -60,7 +64,10 @@ class GroovesRenderer : public TechniqueRenderer {
     unsigned program = 0;
     Mat4 world;
     std::size_t upload = 0;
+    bool areaSampling = false;  // its variant samples special cases by area (and retries)
   };
+  void drawItem(const Item& item, const FrameContext& frame, int number, int retryClass) const;
+  void drawRetryPasses(const FrameContext& frame);
   GroovesOptions options_;
   std::vector<Upload> uploads_;
   std::vector<Item> items_;

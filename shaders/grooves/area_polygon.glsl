@@ -31,8 +31,9 @@
 layout(std430, binding = 10) coherent buffer AreaScratch {
   uint areaBusy[AREA_SLOTS];
   // Fragments of the frame over special cases: sampled by area, line sampled for want of a free slot,
-  // line sampled because a driver's loop cap cut the area sample short (the renderer zeroes them
-  // before each frame and reports them).
+  // line sampled because a driver's loop cap cut the area sample short, and cut short in the first
+  // pass and shaded again in a retry pass (area_retry.glsl; counted again there). The renderer zeroes
+  // them before each frame and reports them.
   uint areaCounts[4];
   float areaArena[];
 };

@@ -10,7 +10,8 @@
 // (the package has records), HAS_AREA_SAMPLING (special cases sampled by area), AREA_SLOTS n,
 // MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1, A2, E, L to colour attachments
 // 1-3 and to alpha the special-case flag, 2, or 3 and 4 where area sampling fell back to line
-// sampling, for testing against the CPU method).
+// sampling, for testing against the CPU method). Area sampling cut short by a driver's loop cap is
+// redone in retry passes (area_retry.glsl).
 #include "line_sampling.glsl"
 
 in vec3 vWorldPosition;
@@ -21,6 +22,11 @@ uniform vec3 uLightDir;      // towards the light, world space
 uniform vec3 uLightColour = vec3(1.0);
 uniform vec3 uCameraPos;     // world space
 uniform int uMaxBounces = 2;
+
+#ifdef HAS_AREA_SAMPLING
+// Hidden fragments are not shaded, so the retry marks are those of the fragments kept.
+layout(early_fragment_tests) in;
+#endif
 
 layout(location = 0) out vec4 fragColor;
 #ifdef SHADING_INPUTS
@@ -58,8 +64,15 @@ void main() {
   gLightRadiance = uLightColour;
   gMaxBounces = uMaxBounces;
 
+#ifdef HAS_AREA_SAMPLING
+  // After the derivatives, which need the whole quad: a retry pass shades only its own pixels.
+  if (isRetryPass() && !retriedHere()) discard;
+#endif
   vec3 radiance = vec3(0.0);
   if (toViewer.z > 0.0) radiance = shadeFootprint(centre, axis1, axis2, toViewer);  // the back side: black
+#ifdef HAS_AREA_SAMPLING
+  if (!isRetryPass()) markForRetry(gAreaDeferred);
+#endif
   fragColor = vec4(radiance, 1.0);
 #ifdef SHADING_INPUTS
   fragColor.a = gSpecialCase ? 2.0 : 1.0;  // the §4.2 dispatch, to compare with the CPU's

@@ -174,8 +174,10 @@ vec3 lineSampleParts(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 fl
 
 #ifdef HAS_AREA_SAMPLING
 #include "area_sampling.glsl"
+#include "area_retry.glsl"
 
-bool gAreaCut;
+bool gAreaCut = false;
+bool gAreaDeferred = false;  // cut short in the first pass: shaded again alone in a retry pass
 
 // True when loops no longer run (a driver's cap on the loop iterations of an invocation was reached):
 // a loop of two iterations, its bound unknown to the compiler, runs fewer.
@@ -223,7 +225,9 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
     // sample stands in, and gAreaCut says so.
     gAreaCut = sampled && loopsCutShort();
     sampled = sampled && !gAreaCut;
-    atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaCut ? 2 : 0)], 1u);  // no effect in helper invocations
+    gAreaDeferred = gAreaCut && !isRetryPass();
+    // No effect in helper invocations. A deferred fragment is counted again by its retry pass.
+    atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
   }
 #endif
   return sampled ? radiance : lineSampled;
