@@ -37,11 +37,12 @@ constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // for want of a slot, line sampled because a driver's loop cap cut the area sample short.
 // The fourth: cut short in the first pass and shaded again in a retry pass (counted there too).
 constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kAreaCounts = 4;
-// The retry buffer of shaders/grooves/area_retry.glsl: kRetryClasses counts, then one mark per pixel
-// of the target. Pixels cut short by a driver's loop cap are shaded again, one class of
-// (x mod 4, y mod 4) per pass.
-constexpr GLuint kAreaRetryBinding = 11;
-constexpr std::size_t kRetryClasses = 16;
+// The retry buffers of shaders/grooves/area_retry.glsl: 2 x kRetryClasses counts (to shade again
+// whole, by quarters), then one mark per pixel of the target; and a vec4 per pixel for the quarters'
+// sums. Pixels cut short by a driver's loop cap are shaded again, one class of (x mod 4, y mod 4) per
+// pass, and those cut short again by quarters of their footprint, one per pass.
+constexpr GLuint kAreaRetryBinding = 11, kAreaRetrySumsBinding = 12;
+constexpr std::size_t kRetryClasses = 16, kRetryCounts = 2 * kRetryClasses;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -117,24 +118,7 @@ GroovesRenderer::~GroovesRenderer() {
   }
   if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
   if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
-}
-
-// The retry buffer sized for a width x height target, zeroed: no pixel marked.
-void GroovesRenderer::clearAreaRetry(int width, int height) {
-  const std::size_t pixels = std::size_t(std::max(width, 1)) * std::size_t(std::max(height, 1));
-  if (pixels != retryPixels_) {
-    if (areaRetry_ != 0) {
-      glDeleteBuffers(1, &areaRetry_);
-      bytes_ -= (kRetryClasses + retryPixels_) * sizeof(std::uint32_t);
-    }
-    const std::size_t bytes = (kRetryClasses + pixels) * sizeof(std::uint32_t);
-    glCreateBuffers(1, &areaRetry_);
-    glNamedBufferStorage(areaRetry_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    bytes_ += bytes;
-    retryPixels_ = pixels;
-  }
-  const std::uint32_t zero = 0;
-  glClearNamedBufferData(areaRetry_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (areaRetrySums_ != 0) glDeleteBuffers(1, &areaRetrySums_);
 }
 
 // The arena, zeroed (every slot free), made once for all packages with special cases.
@@ -146,6 +130,35 @@ void GroovesRenderer::makeAreaScratch() {
   glNamedBufferStorage(areaScratch_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const std::uint32_t zero = 0;
   glClearNamedBufferData(areaScratch_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  bytes_ += bytes;
+}
+
+// The retry buffer sized for a width x height target, zeroed: no pixel marked. The sums buffer is
+// made when a frame first needs it (retrySums), and follows the size.
+void GroovesRenderer::clearAreaRetry(int width, int height) {
+  const std::size_t pixels = std::size_t(std::max(width, 1)) * std::size_t(std::max(height, 1));
+  if (pixels != retryPixels_) {
+    const GLuint old[] = {areaRetry_, areaRetrySums_};
+    glDeleteBuffers(2, old);
+    bytes_ -= retryBytes_;
+    const std::size_t bytes = (kRetryCounts + pixels) * sizeof(std::uint32_t);
+    glCreateBuffers(1, &areaRetry_);
+    glNamedBufferStorage(areaRetry_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    areaRetrySums_ = 0;
+    retryBytes_ = bytes;
+    bytes_ += bytes;
+    retryPixels_ = pixels;
+  }
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(areaRetry_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void GroovesRenderer::makeAreaRetrySums() {
+  if (areaRetrySums_ != 0) return;
+  const std::size_t bytes = retryPixels_ * 4 * sizeof(float);  // each pass writes before it reads
+  glCreateBuffers(1, &areaRetrySums_);
+  glNamedBufferStorage(areaRetrySums_, GLsizeiptr(bytes), nullptr, 0);
+  retryBytes_ += bytes;
   bytes_ += bytes;
 }
 
@@ -213,8 +226,10 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
 }
 
 // One draw of an item: its uniforms and buffers, then the mesh. `retryClass` 0 is the first pass,
-// k > 0 the retry pass of class k - 1 (area_retry.glsl); `number` is the item's draw number.
-void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, int retryClass) const {
+// k > 0 a retry pass of class k - 1 (area_retry.glsl), of the whole footprint (`quarter` -1) or of one
+// quarter; `number` is the item's draw number.
+void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, int retryClass,
+                               int quarter) const {
   const unsigned program = item.program;
   glUseProgram(program);
   setMatrix4(program, "uModel", item.world);
@@ -227,8 +242,10 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
   if (item.areaSampling) {
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retryClass);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaQuarter"), quarter);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryDraw"), number);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryStride"), std::max(frame.width, 1));
+    glProgramUniform1i(program, glGetUniformLocation(program, "uForceRetries"), options_.forceRetries);
   }
   const Upload& upload = uploads_[item.upload];
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
@@ -237,26 +254,40 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, areaRetry_);
+  if (areaRetrySums_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetrySumsBinding, areaRetrySums_);
   item.mesh.draw();
 }
 
-// The pixels the first pass marked, shaded again one class at a time. Depth is tested (LEQUAL: the
-// same fragments as the first pass) but not written.
+// Every item that samples by area, drawn again for the retry pass (class, quarter); each pass sees
+// the marks and sums of the one before.
+void GroovesRenderer::drawRetryPass(const FrameContext& frame, int retryClass, int quarter) {
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  ++retryPasses_;
+  for (std::size_t i = 0; i < items_.size(); ++i)
+    if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retryClass, quarter);
+}
+
+// The pixels the first pass marked, shaded again one class at a time, then those marked again by
+// quarters. Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
 void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  std::uint32_t marked[kRetryClasses] = {};
-  glGetNamedBufferSubData(areaRetry_, 0, sizeof marked, marked);
+  std::uint32_t marked[kRetryCounts] = {};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(areaRetry_, 0, kRetryClasses * sizeof(std::uint32_t), marked);
+  if (std::all_of(marked, marked + kRetryClasses, [](std::uint32_t n) { return n == 0; })) return;
   GLint depthFunc = GL_LESS;
   GLboolean depthMask = GL_TRUE;
   glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
+  for (std::size_t c = 0; c < kRetryClasses; ++c)
+    if (marked[c] > 0) drawRetryPass(frame, int(c) + 1, -1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(areaRetry_, 0, sizeof marked, marked);
   for (std::size_t c = 0; c < kRetryClasses; ++c) {
-    if (marked[c] == 0) continue;
-    ++retryPasses_;
-    for (std::size_t i = 0; i < items_.size(); ++i)
-      if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, int(c) + 1);
+    if (marked[kRetryClasses + c] == 0) continue;
+    makeAreaRetrySums();
+    for (int quarter = 0; quarter < 4; ++quarter) drawRetryPass(frame, int(c) + 1, quarter);
   }
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);
@@ -270,11 +301,12 @@ void GroovesRenderer::draw(const FrameContext& frame) {
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     clearAreaRetry(frame.width, frame.height);
   }
-  for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, 0);
+  for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, 0, -1);
   if (areaRetry_ != 0) drawRetryPasses(frame);
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, 0);
+  if (areaRetrySums_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetrySumsBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
 }
 

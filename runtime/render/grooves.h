@@ -25,6 +25,10 @@ struct GroovesOptions {
   // Special cases sampled by area (seed §6), as the CPU method does; off: line sampled like the rest
   // (a shader variant that compiles in seconds instead of minutes on llvmpipe).
   bool areaSampling = true;
+  // Tests: area samples taken as cut short by a loop cap whatever the driver, so that the retry
+  // passes run: 1 in the first pass (shaded again whole), 2 also in the whole-footprint retry passes
+  // (shaded again by quarters).
+  int forceRetries = 0;
 };
 
 // Loader checks of BAKE_grooves for `bakeplay validate`: every package whose material carries it
@@ -51,8 +55,10 @@ class GroovesRenderer : public TechniqueRenderer {
   void makeAreaScratch();
   unsigned areaScratch_ = 0;  // the area sampling arena (special cases), shared by every package
   void clearAreaRetry(int width, int height);
-  unsigned areaRetry_ = 0;    // retry counts and per-pixel marks (shaders/grooves/area_retry.glsl)
-  std::size_t retryPixels_ = 0;
+  void makeAreaRetrySums();
+  unsigned areaRetry_ = 0;      // retry counts and per-pixel marks (shaders/grooves/area_retry.glsl)
+  unsigned areaRetrySums_ = 0;  // per-pixel sums of the quarters
+  std::size_t retryPixels_ = 0, retryBytes_ = 0;
   std::uint32_t retryPasses_ = 0;  // of the last frame
   // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
   struct Upload {
@@ -66,7 +72,8 @@ class GroovesRenderer : public TechniqueRenderer {
     std::size_t upload = 0;
     bool areaSampling = false;  // its variant samples special cases by area (and retries)
   };
-  void drawItem(const Item& item, const FrameContext& frame, int number, int retryClass) const;
+  void drawItem(const Item& item, const FrameContext& frame, int number, int retryClass, int quarter) const;
+  void drawRetryPass(const FrameContext& frame, int retryClass, int quarter);
   void drawRetryPasses(const FrameContext& frame);
   GroovesOptions options_;
   std::vector<Upload> uploads_;

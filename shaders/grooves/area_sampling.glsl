@@ -323,11 +323,13 @@ float areaExtent() {
 // the quadtree of parts (cell (x, y) of 2^level x 2^level), children in the order (0,0) (1,0) (0,1)
 // (1,1), with no stack: after a part is done, climb out of every level where it was the last child,
 // then step to the next sibling. One loop, so llvmpipe's cap counts only the parts sampled, and a
-// part that fits is never sampled again.
-void sampleSplitParts(vec2 axis1, vec2 axis2, out vec3 radiance) {
+// part that fits is never sampled again. `quarter` 0 to 3 walks only that quarter's subtree (a retry
+// pass, area_retry.glsl; its share of the footprint's value), -1 the whole tree.
+void sampleSplitParts(vec2 axis1, vec2 axis2, int quarter, out vec3 radiance) {
   radiance = vec3(0.0);
-  int level = 0;
-  ivec2 cell = ivec2(0);
+  int root = quarter < 0 ? 0 : 1;
+  int level = root;
+  ivec2 cell = quarter < 0 ? ivec2(0) : ivec2(quarter & 1, quarter >> 1);
   bool more = true;
   while (more) {
     float parts = float(1 << level);
@@ -341,18 +343,19 @@ void sampleSplitParts(vec2 axis1, vec2 axis2, out vec3 radiance) {
       cell *= 2;
     } else {
       radiance += partRadiance / (parts * parts);
-      int lastChildLevels = min(findLSB(~(cell.x & cell.y)), level);  // trailing levels at child (1,1)
+      int lastChildLevels = min(findLSB(~(cell.x & cell.y)), level - root);  // trailing levels at child (1,1)
       level -= lastChildLevels;
       cell >>= lastChildLevels;
-      more = level > 0;
+      more = level > root;
       if (more) cell = (cell.x & 1) == 0 ? ivec2(cell.x + 1, cell.y) : ivec2(cell.x - 1, cell.y + 1);
     }
   }
 }
 
-// The footprint F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) relative to F, by area (§6); false when no
-// arena slot was free (the caller line samples).
-bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, out vec3 radiance) {
+// The footprint F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) relative to F, by area (§6), or the share
+// of one of its quarters (0 to 3; -1: all of it); false when no arena slot was free (the caller line
+// samples).
+bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, int quarter, out vec3 radiance) {
   radiance = vec3(0.0);
   // A helper invocation has no side effects (its arena writes and atomics are dropped) and its value
   // is never seen: nothing to do. One exit, no break (see shadeFootprint).
@@ -376,7 +379,7 @@ bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, out vec3 radiance) {
     gAreaLight = gLightDir;
     gAreaDepthTolerance = 1e-5 * gAreaLengthScale;
     gAreaLightAllOccluders = gLightDir.z < 0.05;
-    sampleSplitParts(axis1, axis2, radiance);
+    sampleSplitParts(axis1, axis2, quarter, radiance);
     releaseSlot();
   }
   return helper || slot;

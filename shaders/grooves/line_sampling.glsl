@@ -177,7 +177,7 @@ vec3 lineSampleParts(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 fl
 #include "area_retry.glsl"
 
 bool gAreaCut = false;
-bool gAreaDeferred = false;  // cut short in the first pass: shaded again alone in a retry pass
+bool gAreaDeferred = false;  // cut short: shaded again in a retry pass (area_retry.glsl)
 
 // True when loops no longer run (a driver's cap on the loop iterations of an invocation was reached):
 // a loop of two iterations, its bound unknown to the compiler, runs fewer.
@@ -219,15 +219,25 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   gAreaCut = false;
   // A footprint without area (no screen-space derivatives) is line sampled: a rasterised pixel has one.
   if (gSpecialCase && length(axis1) + length(axis2) > 0.0) {
-    sampled = areaSample(axis1, axis2, toViewer, radiance);
+    int quarter = isQuarterPass() ? uAreaQuarter : -1;
+    sampled = areaSample(axis1, axis2, toViewer, quarter, radiance);
     gAreaNoSlot = !sampled;  // every arena slot tried was taken: line sampled instead
     // Cut short by such a cap, the area sample misses the pieces it had not reached: the line
     // sample stands in, and gAreaCut says so.
-    gAreaCut = sampled && loopsCutShort();
+    gAreaCut = sampled && (loopsCutShort() || retryForced());
+    bool counted = true;
+    if (quarter >= 0) {  // a share of the footprint: the value once the four are summed
+      vec4 sum;
+      counted = addQuarter(radiance, !sampled || gAreaCut, sum);
+      radiance = sum.rgb;
+      gAreaCut = sum.w > 0.0;  // a quarter without a slot is counted as cut short too
+      gAreaNoSlot = false;
+      sampled = true;
+    }
     sampled = sampled && !gAreaCut;
-    gAreaDeferred = gAreaCut && !isRetryPass();
+    gAreaDeferred = gAreaCut && quarter < 0;  // shaded again: alone, then by quarters
     // No effect in helper invocations. A deferred fragment is counted again by its retry pass.
-    atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
+    if (counted) atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
   }
 #endif
   return sampled ? radiance : lineSampled;
