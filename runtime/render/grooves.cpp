@@ -37,12 +37,15 @@ constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // for want of a slot, line sampled because a driver's loop cap cut the area sample short.
 // The fourth: cut short in the first pass and shaded again in a retry pass (counted there too).
 constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kAreaCounts = 4;
-// The retry buffers of shaders/grooves/area_retry.glsl: 2 x kRetryClasses counts (to shade again
-// whole, by quarters), then one mark per pixel of the target; and a vec4 per pixel for the quarters'
-// sums. Pixels cut short by a driver's loop cap are shaded again, one class of (x mod 4, y mod 4) per
-// pass, and those cut short again by quarters of their footprint, one per pass.
-constexpr GLuint kAreaRetryBinding = 11, kAreaRetrySumsBinding = 12;
-constexpr std::size_t kRetryClasses = 16, kRetryCounts = 2 * kRetryClasses;
+// The retry buffer of shaders/grooves/area_retry.glsl (std430): kRetryList vec4 sums, two list
+// lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short by
+// a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
+// again by quarters of their footprint, four draws each.
+constexpr GLuint kAreaRetryBinding = 11;
+constexpr std::size_t kRetryList = 4096;
+constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
+constexpr std::size_t kRetryListOffset = kRetryCountsOffset + 2 * sizeof(std::uint32_t);
+constexpr std::size_t kRetryMaskOffset = kRetryListOffset + 2 * kRetryList * sizeof(std::uint32_t);
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -94,6 +97,7 @@ std::vector<std::string> packageDefines(const groove::GroovePackage& p, bool are
   if (!p.records.empty() && areaSampling) {
     defines.push_back("HAS_AREA_SAMPLING");
     defines.push_back("AREA_SLOTS " + std::to_string(kAreaSlots));
+    defines.push_back("AREA_RETRY_LIST " + std::to_string(kRetryList));
   }
   std::uint32_t longest = 3;
   for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
@@ -118,7 +122,6 @@ GroovesRenderer::~GroovesRenderer() {
   }
   if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
   if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
-  if (areaRetrySums_ != 0) glDeleteBuffers(1, &areaRetrySums_);
 }
 
 // The arena, zeroed (every slot free), made once for all packages with special cases.
@@ -133,33 +136,21 @@ void GroovesRenderer::makeAreaScratch() {
   bytes_ += bytes;
 }
 
-// The retry buffer sized for a width x height target, zeroed: no pixel marked. The sums buffer is
-// made when a frame first needs it (retrySums), and follows the size.
+// The retry buffer sized for a width x height target, its lists emptied and its marks zeroed.
 void GroovesRenderer::clearAreaRetry(int width, int height) {
   const std::size_t pixels = std::size_t(std::max(width, 1)) * std::size_t(std::max(height, 1));
-  if (pixels != retryPixels_) {
-    const GLuint old[] = {areaRetry_, areaRetrySums_};
-    glDeleteBuffers(2, old);
+  const std::size_t bytes = kRetryMaskOffset + pixels * sizeof(std::uint32_t);
+  if (bytes != retryBytes_) {
+    if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
     bytes_ -= retryBytes_;
-    const std::size_t bytes = (kRetryCounts + pixels) * sizeof(std::uint32_t);
     glCreateBuffers(1, &areaRetry_);
     glNamedBufferStorage(areaRetry_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    areaRetrySums_ = 0;
     retryBytes_ = bytes;
     bytes_ += bytes;
-    retryPixels_ = pixels;
   }
   const std::uint32_t zero = 0;
-  glClearNamedBufferData(areaRetry_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-}
-
-void GroovesRenderer::makeAreaRetrySums() {
-  if (areaRetrySums_ != 0) return;
-  const std::size_t bytes = retryPixels_ * 4 * sizeof(float);  // each pass writes before it reads
-  glCreateBuffers(1, &areaRetrySums_);
-  glNamedBufferStorage(areaRetrySums_, GLsizeiptr(bytes), nullptr, 0);
-  retryBytes_ += bytes;
-  bytes_ += bytes;
+  glClearNamedBufferSubData(areaRetry_, GL_R32UI, GLintptr(kRetryCountsOffset), GLsizeiptr(bytes - kRetryCountsOffset),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
 Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_t>& instances,
@@ -225,11 +216,10 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
   return {};
 }
 
-// One draw of an item: its uniforms and buffers, then the mesh. `retryClass` 0 is the first pass,
-// k > 0 a retry pass of class k - 1 (area_retry.glsl), of the whole footprint (`quarter` -1) or of one
-// quarter; `number` is the item's draw number.
-void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, int retryClass,
-                               int quarter) const {
+// One draw of an item: its uniforms and buffers, then the mesh. `retry`: the pass
+// (area_retry.glsl: 0 the first, 1 a retry of whole footprints, 2 by quarters); `number` is the
+// item's draw number in the frame.
+void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, const RetryPass& retry) const {
   const unsigned program = item.program;
   glUseProgram(program);
   setMatrix4(program, "uModel", item.world);
@@ -241,8 +231,9 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
   glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
   if (item.areaSampling) {
-    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retryClass);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaQuarter"), quarter);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retry.kind);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaQuarter"), retry.quarter);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uRetrySlot"), retry.slot);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryDraw"), number);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryStride"), std::max(frame.width, 1));
     glProgramUniform1i(program, glGetUniformLocation(program, "uForceRetries"), options_.forceRetries);
@@ -254,43 +245,56 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, areaRetry_);
-  if (areaRetrySums_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetrySumsBinding, areaRetrySums_);
   item.mesh.draw();
 }
 
-// Every item that samples by area, drawn again for the retry pass (class, quarter); each pass sees
-// the marks and sums of the one before.
-void GroovesRenderer::drawRetryPass(const FrameContext& frame, int retryClass, int quarter) {
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  ++retryPasses_;
-  for (std::size_t i = 0; i < items_.size(); ++i)
-    if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retryClass, quarter);
+// The pixels of list `list` (0: shade again whole, 1: by quarters) as (x, y).
+std::vector<std::array<int, 2>> GroovesRenderer::retryList(int list) const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(areaRetry_, GLintptr(kRetryCountsOffset + std::size_t(list) * sizeof count), sizeof count, &count);
+  count = std::min<std::uint32_t>(count, kRetryList);  // the shader lists no more
+  std::vector<std::uint32_t> packed(count);
+  if (count > 0)
+    glGetNamedBufferSubData(areaRetry_, GLintptr(kRetryListOffset + std::size_t(list) * kRetryList * sizeof(std::uint32_t)),
+                            GLsizeiptr(count * sizeof(std::uint32_t)), packed.data());
+  std::vector<std::array<int, 2>> pixels;
+  for (const std::uint32_t p : packed) pixels.push_back({int(p & 0xffffu), int(p >> 16)});
+  return pixels;
 }
 
-// The pixels the first pass marked, shaded again one class at a time, then those marked again by
-// quarters. Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
+// Every item that samples by area, drawn again for one retry pass, scissored to its pixel; each pass
+// sees the marks and sums of the ones before.
+void GroovesRenderer::drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry) {
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glScissor(pixel[0], pixel[1], 1, 1);
+  ++retryPasses_;
+  for (std::size_t i = 0; i < items_.size(); ++i)
+    if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retry);
+}
+
+// The pixels the first pass listed, shaded again one at a time, then those listed again by quarters.
+// Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
 void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
-  std::uint32_t marked[kRetryCounts] = {};
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(areaRetry_, 0, kRetryClasses * sizeof(std::uint32_t), marked);
-  if (std::all_of(marked, marked + kRetryClasses, [](std::uint32_t n) { return n == 0; })) return;
-  GLint depthFunc = GL_LESS;
+  const std::vector<std::array<int, 2>> whole = retryList(0);
+  if (whole.empty()) return;
+  GLint depthFunc = GL_LESS, scissorBox[4] = {};
   GLboolean depthMask = GL_TRUE;
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
   glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  for (std::size_t c = 0; c < kRetryClasses; ++c)
-    if (marked[c] > 0) drawRetryPass(frame, int(c) + 1, -1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(areaRetry_, 0, sizeof marked, marked);
-  for (std::size_t c = 0; c < kRetryClasses; ++c) {
-    if (marked[kRetryClasses + c] == 0) continue;
-    makeAreaRetrySums();
-    for (int quarter = 0; quarter < 4; ++quarter) drawRetryPass(frame, int(c) + 1, quarter);
-  }
+  glEnable(GL_SCISSOR_TEST);
+  for (const auto& pixel : whole) drawRetryPass(frame, pixel, {1, 0, 0});
+  const std::vector<std::array<int, 2>> byQuarters = retryList(1);
+  for (std::size_t slot = 0; slot < byQuarters.size(); ++slot)
+    for (int quarter = 0; quarter < 4; ++quarter) drawRetryPass(frame, byQuarters[slot], {2, quarter, int(slot)});
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);
+  glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
+  if (!scissor) glDisable(GL_SCISSOR_TEST);
 }
 
 void GroovesRenderer::draw(const FrameContext& frame) {
@@ -301,12 +305,11 @@ void GroovesRenderer::draw(const FrameContext& frame) {
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     clearAreaRetry(frame.width, frame.height);
   }
-  for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, 0, -1);
+  for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, {});
   if (areaRetry_ != 0) drawRetryPasses(frame);
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, 0);
-  if (areaRetrySums_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetrySumsBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
 }
 
@@ -331,7 +334,8 @@ std::vector<std::string> GroovesRenderer::warnings() const {
   return {"grooves: " + std::to_string(noSlot + loopCap) + " of " + s["grooveAreaFragments"].dump() +
           " special-case fragments of the last frame were line sampled instead of sampled by area (" +
           std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
-          " were cut short by the driver's cap on loop iterations, as llvmpipe has)"};
+          " were cut short by the driver's cap on loop iterations, as llvmpipe has, even when shaded alone and "
+          "by quarters in retry passes)"};
 }
 
 std::size_t GroovesRenderer::gpuBytes() const {

@@ -55,10 +55,8 @@ class GroovesRenderer : public TechniqueRenderer {
   void makeAreaScratch();
   unsigned areaScratch_ = 0;  // the area sampling arena (special cases), shared by every package
   void clearAreaRetry(int width, int height);
-  void makeAreaRetrySums();
-  unsigned areaRetry_ = 0;      // retry counts and per-pixel marks (shaders/grooves/area_retry.glsl)
-  unsigned areaRetrySums_ = 0;  // per-pixel sums of the quarters
-  std::size_t retryPixels_ = 0, retryBytes_ = 0;
+  unsigned areaRetry_ = 0;  // retry lists, sums and per-pixel marks (shaders/grooves/area_retry.glsl)
+  std::size_t retryBytes_ = 0;
   std::uint32_t retryPasses_ = 0;  // of the last frame
   // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
   struct Upload {
@@ -72,8 +70,13 @@ class GroovesRenderer : public TechniqueRenderer {
     std::size_t upload = 0;
     bool areaSampling = false;  // its variant samples special cases by area (and retries)
   };
-  void drawItem(const Item& item, const FrameContext& frame, int number, int retryClass, int quarter) const;
-  void drawRetryPass(const FrameContext& frame, int retryClass, int quarter);
+  // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaQuarter, uRetrySlot).
+  struct RetryPass {
+    int kind = 0, quarter = 0, slot = 0;
+  };
+  void drawItem(const Item& item, const FrameContext& frame, int number, const RetryPass& retry) const;
+  std::vector<std::array<int, 2>> retryList(int list) const;
+  void drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry);
   void drawRetryPasses(const FrameContext& frame);
   GroovesOptions options_;
   std::vector<Upload> uploads_;

@@ -3,38 +3,36 @@
 // loop once the group has run 65,535 iterations in all. The lanes of a group take different paths
 // through the area sampler, so the group pays for close to the sum of their loops (and for one
 // iteration of every loop in a branch that no lane takes), and the heaviest special cases overrun
-// it. So the first pass marks a pixel cut short (retryMask = the draw's number) and counts it under
-// its class, (x mod 4, y mod 4); the renderer then draws again once per class that has any, and only
-// that class's marked pixels are shaded: one lane in every 4 x 4 block, which pays for its own loops
-// only. A pixel cut short even alone is marked again and shaded by quarters of its footprint, one
-// pass each, the four shares summed in retrySums (area is additive: the CPU's split adds the same
-// shares). Drivers without such a cap mark nothing and draw no retry pass.
+// it. So the first pass lists a pixel cut short, and the renderer draws again once per listed pixel,
+// scissored to it: its group then has one lane, which pays for its own loops only. A pixel cut short
+// even alone is listed again and shaded by quarters of its footprint, one draw each, the four shares
+// summed in retrySums (area is additive: the CPU's split adds the same shares). retryMask says which
+// draw of the frame owns each pixel (the last to shade it), so that only that one shades it again.
+// Drivers without such a cap list nothing and draw no retry pass.
 #ifndef BAKE_GROOVES_AREA_RETRY_GLSL
 #define BAKE_GROOVES_AREA_RETRY_GLSL
 
-layout(std430, binding = 11) coherent buffer AreaRetry {
-  uint retryCounts[32];  // pixels marked in the frame per class: [0, 16) whole, [16, 32) by quarters
-  uint retryMask[];      // per pixel of the target, row-major: the draw that marked it, 0 for none
-};
-// Per pixel shaded by quarters: the sum of the shares so far, and (w) whether one was cut short.
-layout(std430, binding = 12) coherent buffer AreaRetrySums { vec4 retrySums[]; };
+#ifndef AREA_RETRY_LIST
+#define AREA_RETRY_LIST 4096
+#endif
 
-uniform int uAreaRetry = 0;     // 0: the first pass; k > 0: a retry pass of class k - 1
-uniform int uAreaQuarter = -1;  // in a retry pass: -1 the whole footprint, 0 to 3 that quarter
-uniform int uRetryDraw = 1;     // this draw's number in the frame (from 1)
-uniform int uRetryStride = 0;   // the target's width in pixels; 0: no retry buffer bound
-// Tests: 1 takes every area sample of the first pass as cut short, 2 also those of the retry passes
-// of whole footprints, so that either kind of retry runs on any driver.
+layout(std430, binding = 11) coherent buffer AreaRetry {
+  vec4 retrySums[AREA_RETRY_LIST];  // per pixel of the second list: the quarters' sum, w: one was cut
+  uint retryListCount[2];           // pixels listed: [0] to shade again whole, [1] by quarters
+  uint retryList[2 * AREA_RETRY_LIST];  // (y << 16) | x; list k from k * AREA_RETRY_LIST
+  uint retryMask[];  // per pixel of the target, row-major: the draw that owns it when listed, else 0
+};
+
+uniform int uAreaRetry = 0;    // 0: the first pass; 1: a retry of whole footprints; 2: by quarters
+uniform int uAreaQuarter = 0;  // in a retry by quarters: which quarter, 0 to 3
+uniform int uRetrySlot = 0;    // in a retry by quarters: the pixel's place in the second list
+uniform int uRetryDraw = 1;    // this draw's number in the frame (from 1)
+uniform int uRetryStride = 0;  // the target's width in pixels; 0: no retry buffer bound
+// Tests: 1 takes every area sample of the first pass as cut short, 2 also those of the retries of
+// whole footprints, so that either kind of retry runs on any driver.
 uniform int uForceRetries = 0;
 
-bool retryForced() { return uAreaQuarter < 0 && uForceRetries > min(uAreaRetry, 1); }
-
 const uint kByQuarters = 0x40000000u;  // added to a mark: shade again by quarters
-
-int retryClass() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  return (p.x & 3) + 4 * (p.y & 3);
-}
 
 int retryIndex() {
   ivec2 p = ivec2(gl_FragCoord.xy);
@@ -43,32 +41,42 @@ int retryIndex() {
 }
 
 bool isRetryPass() { return uAreaRetry > 0; }
-bool isQuarterPass() { return uAreaRetry > 0 && uAreaQuarter >= 0; }
+bool isQuarterPass() { return uAreaRetry == 2; }
+bool retryForced() { return uForceRetries > uAreaRetry && !isQuarterPass(); }
+uint retryMark() { return uint(uRetryDraw) | (isQuarterPass() ? kByQuarters : 0u); }
 
-// In a retry pass: whether this fragment is one of those to shade again.
+// In a retry pass: whether this fragment is the one to shade again.
 bool retriedHere() {
   int i = retryIndex();
-  uint mark = uint(uRetryDraw) | (isQuarterPass() ? kByQuarters : 0u);
-  return i >= 0 && retryClass() == uAreaRetry - 1 && retryMask[i] == mark;
+  return i >= 0 && retryMask[i] == retryMark();
 }
 
-// In the first pass every fragment shaded writes its mark (a later draw over the same pixel replaces
-// an earlier draw's): this draw's number when `cut`, else 0. In a whole-footprint retry pass a
-// fragment cut short again is marked to be shaded by quarters.
-void markForRetry(bool cut) {
+// Lists this fragment to be shaded again (from the first pass: whole; from a whole retry: by
+// quarters); false when it cannot be (a helper invocation, or the list is full).
+bool listForRetry() {
+  if (retryIndex() < 0 || gl_HelperInvocation || isQuarterPass()) return false;
+  int list = isRetryPass() ? 1 : 0;
+  uint slot = atomicAdd(retryListCount[list], 1u);
+  if (slot >= uint(AREA_RETRY_LIST)) return false;
+  retryList[list * AREA_RETRY_LIST + int(slot)] = (uint(gl_FragCoord.y) << 16) | uint(gl_FragCoord.x);
+  return true;
+}
+
+// After shading: in the first pass every fragment writes its mark (a later draw over the same pixel
+// replaces an earlier draw's), this draw's number when `listed`, else 0; in a whole retry, a
+// fragment listed again is marked for quarters.
+void markForRetry(bool listed) {
   int i = retryIndex();
   if (i < 0 || gl_HelperInvocation || isQuarterPass()) return;
-  if (!isRetryPass()) retryMask[i] = cut ? uint(uRetryDraw) : 0u;
-  else if (cut) retryMask[i] = uint(uRetryDraw) | kByQuarters;
-  if (cut) atomicAdd(retryCounts[retryClass() + (isRetryPass() ? 16 : 0)], 1u);
+  if (!isRetryPass()) retryMask[i] = listed ? uint(uRetryDraw) : 0u;
+  else if (listed) retryMask[i] = uint(uRetryDraw) | kByQuarters;
 }
 
-// In a quarter pass: adds this quarter's share (`failed`: it was not sampled to the end) to the
+// In a retry by quarters: adds this quarter's share (`failed`: it was not sampled to the end) to the
 // pixel's sum, which comes back in `sum`; true for the last quarter.
 bool addQuarter(vec3 share, bool failed, out vec4 sum) {
-  int i = retryIndex();
-  sum = (uAreaQuarter == 0 ? vec4(0.0) : retrySums[i]) + vec4(share, failed ? 1.0 : 0.0);
-  if (!gl_HelperInvocation) retrySums[i] = sum;
+  sum = (uAreaQuarter == 0 ? vec4(0.0) : retrySums[uRetrySlot]) + vec4(share, failed ? 1.0 : 0.0);
+  if (!gl_HelperInvocation) retrySums[uRetrySlot] = sum;
   return uAreaQuarter == 3;
 }
 

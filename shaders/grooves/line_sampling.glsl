@@ -235,8 +235,8 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
       sampled = true;
     }
     sampled = sampled && !gAreaCut;
-    gAreaDeferred = gAreaCut && quarter < 0;  // shaded again: alone, then by quarters
-    // No effect in helper invocations. A deferred fragment is counted again by its retry pass.
+    gAreaDeferred = gAreaCut && listForRetry();  // shaded again: alone, then by quarters
+    // No effect in helper invocations. A deferred fragment is counted again by its retry.
     if (counted) atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
   }
 #endif
