@@ -264,10 +264,8 @@ class GroovesOracle : public test::GlTest {
   }
 
   // `special`: special-case pixels are in view; the shader's area sampling is held to the same 2/255,
-  // and every one of them must have been sampled by area to the end, or all but `cutShare` of them
-  // where a view is known to exceed llvmpipe's loop cap at some.
-  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name, bool special = false,
-                             double cutShare = 0.0) {
+  // and every one of them must have been sampled by area to the end.
+  void expectWithinTwoLevels(const OracleFigures& f, const std::string& name, bool special = false) {
     RecordProperty(name + "_rmse", std::to_string(f.rmse));
     RecordProperty(name + "_max_levels", f.maxLevels);
     std::printf("[ grooves ] %s: %zu pixels (%zu special, %zu flagged differently), RMSE %.3g, max |diff| %.3g linear = "
@@ -284,9 +282,9 @@ class GroovesOracle : public test::GlTest {
                   "sampled, not counted)\n",
                   name.c_str(), f.specialRmse, f.specialMaxLevels, f.cut, f.cutMaxLevels, f.noSlot);
       EXPECT_GT(f.special, 0u) << "the view should show the special case";
-      // Sampled by area to the end, on llvmpipe too: the area sampler is written to stay inside its
-      // loop cap (about 40,000 of 65,535 iterations at most on the tiles' T-junctions).
-      EXPECT_LE(double(f.cut), cutShare * double(f.special)) << "special-case pixels cut short by the driver's loop cap";
+      // Sampled by area to the end, on llvmpipe too: what its loop cap cuts short in a group of pixels
+      // is shaded again alone, or by quarters (the retry passes).
+      EXPECT_EQ(f.cut, 0u) << "special-case pixels cut short by the driver's loop cap";
       EXPECT_EQ(f.noSlot, 0u) << "every area-sampled pixel should find a slot of the arena";
       // The renderer's counts (what `bakeplay render` reports) are the flags' counts.
       ASSERT_TRUE(f.statistics.is_object()) << "area sampling draws report their counts";
