@@ -334,8 +334,8 @@ std::vector<std::string> GroovesRenderer::warnings() const {
   return {"grooves: " + std::to_string(noSlot + loopCap) + " of " + s["grooveAreaFragments"].dump() +
           " special-case fragments of the last frame were line sampled instead of sampled by area (" +
           std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
-          " were cut short by the driver's cap on loop iterations, as llvmpipe has, even when shaded alone and "
-          "by quarters in retry passes)"};
+          " were cut short by the driver's cap on loop iterations, as llvmpipe has, and not finished by the "
+          "retry passes)"};
 }
 
 std::size_t GroovesRenderer::gpuBytes() const {
