@@ -158,7 +158,6 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
   // Keyed by (package, material): an assembled scene package holds one groove grid per material.
   std::map<std::pair<std::size_t, int>, std::size_t> uploadOfPackage;
   std::map<std::pair<std::size_t, int>, std::vector<std::string>> definesOfPackage;
-  std::map<std::pair<std::size_t, int>, bool> decodedRecordsEmpty;
   GLint storageAlignment = 256;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &storageAlignment);
   const std::size_t alignment = std::max<std::size_t>(fmt::kBufferAlignment, std::size_t(std::max(1, storageAlignment)));
@@ -193,7 +192,6 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       bytes_ += bytes.size() + sizeof header;
       uploadOfPackage[key] = uploads_.size();
       definesOfPackage[key] = packageDefines(decoded, options_.areaSampling);
-      decodedRecordsEmpty[key] = decoded.records.empty();
       if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
       uploads_.push_back(upload);
     }
@@ -210,7 +208,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     BAKE_ASSIGN_OR_RETURN(item.mesh, GpuPrimitive::upload(primitive, locations));
     item.world = instance.world;
     item.upload = uploadOfPackage[key];
-    item.areaSampling = !decodedRecordsEmpty[key] && options_.areaSampling;
+    item.areaSampling = std::count(variant.defines.begin(), variant.defines.end(), "HAS_AREA_SAMPLING") > 0;
     items_.push_back(std::move(item));
   }
   return {};

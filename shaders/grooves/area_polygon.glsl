@@ -23,7 +23,7 @@
 #define AREA_MAX_FRAGMENTS 16
 #endif
 #ifndef AREA_SLOTS
-#define AREA_SLOTS 512
+#error "AREA_SLOTS comes from the renderer (runtime/render/grooves.cpp kAreaSlots)"
 #endif
 #define AREA_POLY (1 + 2 * AREA_MAX_VERTICES)  // count, then the vertices
 #define AREA_EDGES (3 * AREA_MAX_VERTICES)     // the half-planes of a polygon's edges

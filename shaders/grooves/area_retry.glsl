@@ -13,7 +13,7 @@
 #define BAKE_GROOVES_AREA_RETRY_GLSL
 
 #ifndef AREA_RETRY_LIST
-#define AREA_RETRY_LIST 4096
+#error "AREA_RETRY_LIST comes from the renderer (runtime/render/grooves.cpp kRetryList)"
 #endif
 
 layout(std430, binding = 11) coherent buffer AreaRetry {

@@ -141,19 +141,18 @@ vec3 shadeSection(FootprintLine density, vec3 toViewer) {
     lightBase = deepest * (et / ew - lt / lw);
   }
   bool turning = turningShows(density, toViewer);
+  // A direction's (B, T) components turned by kTurn about the normal.
   float turnCos = cos(kTurn), turnSin = sin(kTurn);
-  float ebTurned = eb * turnCos - et * turnSin, etTurned = et * turnCos + eb * turnSin;
+  mat2 turn = mat2(turnCos, turnSin, -turnSin, turnCos);
+  vec2 seenTurned = turn * vec2(eb, et);
+  float ebTurned = seenTurned.x, etTurned = seenTurned.y;
   // The view's and the light's spans, then the turned ones: one call of visibleSpans, so that the
   // compiler inlines it once.
   for (int target = kSpansSeen; target <= (turning ? kSpansLitTurned : kSpansLit); ++target) {
     bool light = target == kSpansLit || target == kSpansLitTurned, turned = target >= kSpansSeenTurned;
-    float db = light ? lb : eb, dt = light ? lt : et;
-    if (turned) {
-      float b = db * turnCos - dt * turnSin;
-      dt = dt * turnCos + db * turnSin;
-      db = b;
-    }
-    visibleSpans(db, dt, light ? lw : ew, light ? lightBase : 0.0, target);
+    vec2 d = light ? vec2(lb, lt) : vec2(eb, et);
+    if (turned) d = turn * d;
+    visibleSpans(d.x, d.y, light ? lw : ew, light ? lightBase : 0.0, target);
   }
   float varianceT = (density.alongT.x * density.alongT.x + density.alongT.y * density.alongT.y) / 12.0;
   vec3 direct = vec3(0.0);
