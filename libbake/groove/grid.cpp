@@ -72,7 +72,6 @@ Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Latti
 // primitive then meets a handful of cells, and the whole coarse CSR stays in cache, where the fine
 // one (megabytes of mostly empty cells) would be read from memory for every primitive.
 constexpr std::uint32_t kCoarsening = 4;
-constexpr std::size_t kStampedGather = 256;  // references gathered, past which repeats are stamped out
 
 Lattice coarseLattice(const Lattice& fine) {
   Lattice coarse = fine;
@@ -151,9 +150,10 @@ Status buildCsr(std::uint64_t cellCount, const std::vector<std::uint32_t>& itemS
   return {};
 }
 
-// The references of the cells meeting any of the boxes, each once, ascending. Large gathers (a wide
-// footprint's boundary lists a groove in many cells) drop repeats with per-thread stamps before the
-// sort, so the sort sees each reference once.
+// The references of the cells meeting any of the boxes, each once, ascending. A reference listed by
+// several cells (a groove crossing them, or a cell listed by two boxes) is kept once by per-thread
+// stamps, so only the distinct references are sorted: a sort of every listed reference costs more
+// than the stamps even for a few dozen.
 void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start, const std::vector<std::uint32_t>& refs,
                 const GridBox* boxes, int boxCount, std::vector<std::uint32_t>& out) {
   out.clear();
@@ -166,38 +166,32 @@ void gatherRefs(const GrooveGrid& grid, const std::vector<std::uint32_t>& start,
     if (!(box.lower.u <= box.upper.u) || !(box.lower.v <= box.upper.v)) continue;
     grid_detail::cellsOfBox(lattice, box.lower, box.upper, cells);
   }
-  // A cell listed by two boxes repeats its references: both paths below drop repeats.
-  std::size_t total = 0;
-  for (const std::uint32_t cell : cells) total += start[cell + 1] - start[cell];
-  if (cells.size() < 2 || total < kStampedGather) {
-    for (const std::uint32_t cell : cells) out.insert(out.end(), refs.begin() + start[cell], refs.begin() + start[cell + 1]);
-    if (cells.size() < 2) return;  // one cell lists each reference once, in order
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+  if (cells.size() == 1) {  // one cell lists each reference once, in order
+    out.assign(refs.begin() + start[cells[0]], refs.begin() + start[cells[0] + 1]);
+    return;
+  }
+  thread_local std::vector<std::uint32_t> stamp;  // the gather that last saw each reference
+  thread_local std::uint32_t gather = 0;
+  if (++gather == 0) {  // wrapped: forget every stamp
+    std::fill(stamp.begin(), stamp.end(), 0);
+    gather = 1;
+  }
+  for (const std::uint32_t cell : cells)
+    for (std::uint32_t k = start[cell]; k < start[cell + 1]; ++k) {
+      const std::uint32_t r = refs[k];
+      if (r >= stamp.size()) stamp.resize(std::size_t(r) + 1, 0);
+      if (stamp[r] == gather) continue;
+      stamp[r] = gather;
+      out.push_back(r);
+    }
+  // Distinct already; in index order by a scan of the stamps when they are dense enough that the
+  // scan is cheaper than a sort (a footprint over many grooves).
+  if (out.size() * 16 >= stamp.size()) {
+    out.clear();
+    for (std::uint32_t r = 0; r < stamp.size(); ++r)
+      if (stamp[r] == gather) out.push_back(r);
   } else {
-    thread_local std::vector<std::uint32_t> stamp;  // the gather that last saw each reference
-    thread_local std::uint32_t gather = 0;
-    if (++gather == 0) {  // wrapped: forget every stamp
-      std::fill(stamp.begin(), stamp.end(), 0);
-      gather = 1;
-    }
-    for (const std::uint32_t cell : cells)
-      for (std::uint32_t k = start[cell]; k < start[cell + 1]; ++k) {
-        const std::uint32_t r = refs[k];
-        if (r >= stamp.size()) stamp.resize(std::size_t(r) + 1, 0);
-        if (stamp[r] == gather) continue;
-        stamp[r] = gather;
-        out.push_back(r);
-      }
-    // Distinct already; in index order by a scan of the stamps when they are dense enough that the
-    // scan is cheaper than a sort (a footprint over many grooves).
-    if (out.size() * 16 >= stamp.size()) {
-      out.clear();
-      for (std::uint32_t r = 0; r < stamp.size(); ++r)
-        if (stamp[r] == gather) out.push_back(r);
-    } else {
-      std::sort(out.begin(), out.end());
-    }
+    std::sort(out.begin(), out.end());
   }
 }
 

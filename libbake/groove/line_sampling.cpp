@@ -218,13 +218,27 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
   const double varianceT = (density.a1t * density.a1t + density.a2t * density.a2t) / 12;
   const std::vector<SectionPoint>& pts = section.points;
   RadianceMemo radiance(scene.materials, toViewer, lighting);
+  // The footprint's cdf at the last two (x, rate) asked for: consecutive facets share an end.
+  struct Known {
+    double x = std::numeric_limits<double>::quiet_NaN(), rate = 0, cdf = 0;
+  };
+  Known known[2];
+  auto cdfAt = [&](double x, double rate) {
+    for (const Known& k : known)
+      if (k.x == x && k.rate == rate) return k.cdf;
+    known[0] = known[1];
+    known[1] = {x, rate, density.cdfAcross(x, rate)};
+    return known[1].cdf;
+  };
   for (std::size_t i = 0; i < section.facetCount(); ++i) {
     const FacetSpan& v = visible[i];
     if (v.empty()) continue;
     // Base-line position seen through the facet point at t (projection along E'), and the same along
     // the turned view.
     const double p0 = seenAt[i] / e.w, p1 = seenAt[i + 1] / e.w;
-    auto seen = [&](double t) { return p0 + t * (p1 - p0); };
+    // Exactly p1 at the facet's end, where the next facet starts: its share's cdf there is then
+    // remembered (cdfAt), not computed again.
+    auto seen = [&](double t) { return t == 1 ? p1 : p0 + t * (p1 - p0); };
     auto seenWhenTurned = [&](double t) {
       return (seenTurned[i] + t * (seenTurned[i + 1] - seenTurned[i])) / eTurned.w;
     };
@@ -248,8 +262,8 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
       return turning && std::abs(radius) > kMinBendRadius * density.halfSupport() ? x + varianceT / (2 * radius) : x;
     };
     auto shareBetween = [&](double ta, double tb, double turnA, double turnB) {
-      return std::abs(density.cdfAcross(bent(seen(tb)), r0 + tb * (r1 - r0) + turnB) -
-                      density.cdfAcross(bent(seen(ta)), r0 + ta * (r1 - r0) + turnA));
+      const double a = cdfAt(bent(seen(ta)), r0 + ta * (r1 - r0) + turnA);
+      return std::abs(cdfAt(bent(seen(tb)), r0 + tb * (r1 - r0) + turnB) - a);
     };
     const bool seenTurnedToo = turning && !visibleTurned[i].empty();
     const double visibleShare = shareBetween(v.t0, v.t1, seenTurnedToo ? turnRate(v.t0, visibleTurned[i].t0) : 0.0,

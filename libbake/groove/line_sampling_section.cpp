@@ -85,35 +85,41 @@ void appendPoint(CrossSection& out, double b, double h, std::size_t material) {
 
 constexpr std::size_t kWall = static_cast<std::size_t>(-1);  // resolved after the sweep
 
+// The common cases of appendInterval without its general split list: no groove (the flat base), or
+// one, which only splits where it crosses h = 0. The same points and materials as the general case.
+void appendFlat(CrossSection& out, double x0, double x1, std::size_t base) {
+  appendPoint(out, x0, 0, kWall);
+  appendPoint(out, x1, 0, base);
+}
+
+void appendOnePiece(CrossSection& out, const Piece& piece, double x0, double x1, std::size_t base) {
+  double ts[3] = {0, 1, 1};
+  int count = 2;
+  const double d0 = piece.left, d1 = piece.right;
+  if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
+    const double t = d0 / (d0 - d1);
+    if (t > 0 && t < 1) ts[1] = t, count = 3;
+  }
+  // H = min(0, h) + max(0, h), as surfaceAt computes it (so -0 becomes +0 alike).
+  auto surface = [&](double t) {
+    const double h = piece.at(t);
+    return std::min(0.0, h) + std::max(0.0, h);
+  };
+  for (int k = 0; k + 1 < count; ++k) {
+    const double ta = ts[k], tb = ts[k + 1];
+    const double xa = k == 0 ? x0 : x0 + ta * (x1 - x0);
+    const double xb = k + 2 == count ? x1 : x0 + tb * (x1 - x0);
+    const std::size_t material = std::abs(piece.at(0.5 * (ta + tb))) > 0 ? piece.material : base;
+    appendPoint(out, xa, surface(ta), kWall);
+    appendPoint(out, xb, surface(tb), material);
+  }
+}
+
 // Appends H over [x0, x1] for the given pieces, split at their crossings.
 void appendInterval(CrossSection& out, const std::vector<Piece>& pieces, double x0, double x1, std::size_t base,
                     std::vector<double>& splits) {
-  // The common cases without the general split list: no groove (flat base), or one, which only
-  // splits where it crosses h = 0. The same points and materials as below.
-  if (pieces.empty()) {
-    appendPoint(out, x0, 0, kWall);
-    appendPoint(out, x1, 0, base);
-    return;
-  }
-  if (pieces.size() == 1) {
-    const Piece& piece = pieces.front();
-    double ts[3] = {0, 1, 1};
-    int count = 2;
-    const double d0 = piece.left, d1 = piece.right;
-    if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
-      const double t = d0 / (d0 - d1);
-      if (t > 0 && t < 1) ts[1] = t, count = 3;
-    }
-    for (int k = 0; k + 1 < count; ++k) {
-      const double ta = ts[k], tb = ts[k + 1];
-      const double xa = k == 0 ? x0 : x0 + ta * (x1 - x0);
-      const double xb = k + 2 == count ? x1 : x0 + tb * (x1 - x0);
-      const std::size_t material = std::abs(piece.at(0.5 * (ta + tb))) > 0 ? piece.material : base;
-      appendPoint(out, xa, surfaceAt(pieces, ta), kWall);
-      appendPoint(out, xb, surfaceAt(pieces, tb), material);
-    }
-    return;
-  }
+  if (pieces.empty()) return appendFlat(out, x0, x1, base);
+  if (pieces.size() == 1) return appendOnePiece(out, pieces.front(), x0, x1, base);
   splits.clear();
   splits.push_back(0);
   splits.push_back(1);
@@ -147,6 +153,73 @@ void resolveWalls(CrossSection& out, std::size_t base) {
     if (side == kWall && i + 1 < facets) side = out.material[i + 1];
     if (side == kWall && i > 0) side = out.material[i - 1];
     out.material[i] = side == kWall ? base : side;
+  }
+}
+
+// Each band ends where or before the next one starts, and runs with b (the common case: parallel
+// grooves apart from each other). Then at most one groove lies over any interval.
+bool disjointBands(const std::vector<PlacedProfile>& profiles, const std::vector<SectionPoint>& placed) {
+  for (std::size_t k = 0; k < profiles.size(); ++k) {
+    const SectionPoint* pts = &placed[profiles[k].first];
+    for (std::size_t i = 0; i + 1 < profiles[k].count; ++i)
+      if (pts[i + 1].b < pts[i].b) return false;
+    if (k + 1 < profiles.size() && pts[profiles[k].count - 1].b > placed[profiles[k + 1].first].b) return false;
+  }
+  return true;
+}
+
+// The sweep of sweepOverlapping for disjoint bands: the one groove over the interval (if any) is the
+// first band not ended yet, if it has started; no active set, no piece list. The same intervals and
+// pieces, so the same points, bit for bit.
+void sweepDisjoint(const std::vector<PlacedProfile>& profiles, const std::vector<SectionPoint>& placed,
+                   const std::vector<double>& breaks, std::size_t base, CrossSection& out) {
+  std::size_t current = 0, j = 0;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double x0 = breaks[k], x1 = breaks[k + 1];
+    while (current < profiles.size() && placed[profiles[current].first + profiles[current].count - 1].b <= x0) {
+      ++current;
+      j = 0;
+    }
+    if (current == profiles.size() || placed[profiles[current].first].b > x0) {
+      appendFlat(out, x0, x1, base);
+      continue;
+    }
+    const PlacedProfile& p = profiles[current];
+    const SectionPoint* pts = &placed[p.first];
+    while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
+    const LocalGroove& g = *p.groove->groove;
+    appendOnePiece(out, {heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive},
+                   x0, x1, base);
+  }
+}
+
+// The general sweep: grooves enter the active set at their first b and leave it after their last.
+void sweepOverlapping(const std::vector<PlacedProfile>& profiles, const std::vector<SectionPoint>& placed,
+                      const std::vector<double>& breaks, std::size_t base, CrossSection& out) {
+  thread_local std::vector<std::size_t> active;  // indices into profiles
+  thread_local std::vector<std::size_t> cursor;  // the segment of each profile under the interval
+  thread_local std::vector<Piece> pieces;
+  thread_local std::vector<double> splits;
+  active.clear();
+  cursor.assign(profiles.size(), 0);
+  std::size_t next = 0;
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double x0 = breaks[k], x1 = breaks[k + 1];
+    while (next < profiles.size() && placed[profiles[next].first].b <= x0) active.push_back(next++);
+    pieces.clear();
+    std::size_t keep = 0;
+    for (std::size_t a : active) {
+      const PlacedProfile& p = profiles[a];
+      const SectionPoint* pts = &placed[p.first];
+      if (pts[p.count - 1].b <= x0) continue;  // the band ended: drop it
+      active[keep++] = a;
+      std::size_t& j = cursor[a];
+      while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
+      const LocalGroove& g = *p.groove->groove;
+      pieces.push_back({heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive});
+    }
+    active.resize(keep);
+    appendInterval(out, pieces, x0, x1, base, splits);
   }
 }
 
@@ -191,33 +264,13 @@ void buildCrossSection(const GrooveScene& scene, const std::vector<SectionGroove
   breaks.insert(std::upper_bound(breaks.begin(), breaks.end(), hi), hi);
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
 
-  thread_local std::vector<std::size_t> active;  // indices into profiles
-  thread_local std::vector<std::size_t> cursor;  // the segment of each profile under the interval
-  thread_local std::vector<Piece> pieces;
-  thread_local std::vector<double> splits;
-  active.clear();
-  cursor.assign(profiles.size(), 0);
-  std::size_t next = 0;
   // The polyline starts and ends on the base (h = 0), so a profile starting or ending with a vertical
   // wall at the outermost break keeps that wall.
   appendPoint(out, breaks.front(), 0, kWall);
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const double x0 = breaks[k], x1 = breaks[k + 1];
-    while (next < profiles.size() && placed[profiles[next].first].b <= x0) active.push_back(next++);
-    pieces.clear();
-    std::size_t keep = 0;
-    for (std::size_t a : active) {
-      const PlacedProfile& p = profiles[a];
-      const SectionPoint* pts = &placed[p.first];
-      if (pts[p.count - 1].b <= x0) continue;  // the band ended: drop it
-      active[keep++] = a;
-      std::size_t& j = cursor[a];
-      while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
-      const LocalGroove& g = *p.groove->groove;
-      pieces.push_back({heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive});
-    }
-    active.resize(keep);
-    appendInterval(out, pieces, x0, x1, base, splits);
+  if (disjointBands(profiles, placed)) {
+    sweepDisjoint(profiles, placed, breaks, base, out);
+  } else {
+    sweepOverlapping(profiles, placed, breaks, base, out);
   }
   appendPoint(out, breaks.back(), 0, kWall);
   resolveWalls(out, base);

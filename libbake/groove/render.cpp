@@ -74,16 +74,63 @@ Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toV
   return out;
 }
 
-Rgb RadianceMemo::operator()(std::size_t material, const Vec3& normal) {
-  for (int i = 0; i < count_; ++i) {
-    const Entry& e = entries_[i];
-    if (e.material == material && e.normal.u == normal.u && e.normal.v == normal.v && e.normal.w == normal.w)
-      return e.radiance;
+namespace {
+
+bool sameVec(const Vec3& a, const Vec3& b) { return a.u == b.u && a.v == b.v && a.w == b.w; }
+
+void appendReflectance(const std::vector<Material>& materials, std::vector<double>& out) {
+  for (const Material& m : materials) {
+    out.insert(out.end(), std::begin(m.albedo), std::end(m.albedo));
+    out.insert(out.end(), std::begin(m.specular), std::end(m.specular));
+    out.push_back(m.shininess);
   }
-  Entry& slot = entries_[next_];
+}
+
+bool sameReflectance(const std::vector<Material>& materials, const std::vector<double>& known) {
+  if (known.size() != 7 * materials.size()) return false;
+  const double* k = known.data();
+  for (const Material& m : materials) {
+    for (int c = 0; c < 3; ++c)
+      if (k[c] != m.albedo[c] || k[3 + c] != m.specular[c]) return false;
+    if (k[6] != m.shininess) return false;
+    k += 7;
+  }
+  return true;
+}
+
+// The per-thread store, emptied unless it holds this view, light and materials' entries.
+RadianceMemo::Store& storeFor(const std::vector<Material>& materials, const Vec3& toViewer, const Lighting& lighting) {
+  thread_local RadianceMemo::Store store;
+  if (!sameVec(store.toViewer, toViewer) || !sameVec(store.toLight, lighting.toLight) ||
+      store.lightRadiance != lighting.radiance || !sameReflectance(materials, store.reflectance)) {
+    store.toViewer = toViewer;
+    store.toLight = lighting.toLight;
+    store.lightRadiance = lighting.radiance;
+    store.reflectance.clear();
+    appendReflectance(materials, store.reflectance);
+    store.count = store.next = 0;
+    ++store.generation;
+  }
+  return store;
+}
+
+}  // namespace
+
+RadianceMemo::RadianceMemo(const std::vector<Material>& materials, const Vec3& toViewer, const Lighting& lighting)
+    : materials_(materials), toViewer_(toViewer), lighting_(lighting),
+      store_(storeFor(materials, toViewer, lighting)), generation_(store_.generation) {}
+
+Rgb RadianceMemo::operator()(std::size_t material, const Vec3& normal) {
+  // A memo made in between under another view or light (a mirror bounce's) emptied the store.
+  if (store_.generation != generation_) generation_ = storeFor(materials_, toViewer_, lighting_).generation;
+  for (int i = 0; i < store_.count; ++i) {
+    const Entry& e = store_.entries[i];
+    if (e.material == material && sameVec(e.normal, normal)) return e.radiance;
+  }
+  Entry& slot = store_.entries[store_.next];
   slot = {material, normal, directRadiance(materials_[material], normal, toViewer_, lighting_)};
-  next_ = (next_ + 1) % kEntries;
-  count_ = std::max(count_, next_ == 0 ? kEntries : next_);
+  store_.next = (store_.next + 1) % kEntries;
+  store_.count = std::max(store_.count, store_.next == 0 ? kEntries : store_.next);
   return slot.radiance;
 }
 

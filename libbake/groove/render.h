@@ -59,28 +59,39 @@ void setRgb(Image& image, int x, int y, const Rgb& value);
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting);
 Vec3 reflect(const Vec3& toViewer, const Vec3& normal);  // mirrored direction, unit
 
-// directRadiance under one view and light, remembering the last few (material, normal) pairs: the
-// facets of a section and the pieces of a footprint's surface repeat a handful of normals (the flat
-// ground between grooves above all), and the lobe's pow is most of a radiance's cost. Same values as
-// directRadiance, bit for bit.
+// directRadiance under one view and light, remembering (material, normal) pairs: the facets of a
+// section and the pieces of a footprint's surface repeat a handful of normals (the flat ground between
+// grooves above all), from pixel to pixel too, and the lobe's pow is most of a radiance's cost. The
+// memo is per thread and outlives the object: a new one under the same view, light and materials
+// (compared by value, so a changed scene cannot hit a stale entry) keeps what the last one learnt.
+// Same values as directRadiance, bit for bit.
 class RadianceMemo {
  public:
-  RadianceMemo(const std::vector<Material>& materials, const Vec3& toViewer, const Lighting& lighting)
-      : materials_(materials), toViewer_(toViewer), lighting_(lighting) {}
+  RadianceMemo(const std::vector<Material>& materials, const Vec3& toViewer, const Lighting& lighting);
   Rgb operator()(std::size_t material, const Vec3& normal);
 
- private:
   struct Entry {
     std::size_t material = 0;
     Vec3 normal;
     Rgb radiance{0, 0, 0};
   };
-  static constexpr int kEntries = 4;
+  static constexpr int kEntries = 16;
+  // What the entries were computed under: the view, the light and every material's reflectance.
+  struct Store {
+    Vec3 toViewer, toLight;
+    Rgb lightRadiance{0, 0, 0};
+    std::vector<double> reflectance;
+    std::array<Entry, kEntries> entries;
+    int count = 0, next = 0;
+    std::uint64_t generation = 0;  // counts the times it was emptied
+  };
+
+ private:
   const std::vector<Material>& materials_;
   Vec3 toViewer_;
   Lighting lighting_;
-  std::array<Entry, kEntries> entries_;
-  int count_ = 0, next_ = 0;
+  Store& store_;
+  std::uint64_t generation_;  // the store's when this memo last made it its own
 };
 
 // Image error figures against a reference image (same size): RMSE over channels, relative MSE

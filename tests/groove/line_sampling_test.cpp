@@ -122,6 +122,38 @@ TEST(LineSampleSection, OverlappingCutsTakeTheDeeperAndSplitAtCrossings) {
   }
 }
 
+TEST(LineSampleSection, DisjointBandsWithPileUpAndSupportInsideABand) {
+  // Two scratches with pile-up (their profile crosses h = 0) whose bands do not overlap, the second
+  // mirrored; the footprint's support starts inside the first band. Every break is kept, each
+  // crossing of h = 0 gets its point, and the flat base joins the bands.
+  const json scratch = json::array({{-0.01, 0}, {-0.005, -0.01}, {0.005, 0.004}, {0.01, 0}});
+  json j = sceneWith(scratch);
+  j["materials"]["g"] = {{"albedo", {0.1, 0.2, 0.3}}};
+  j["grooves"][0]["material"] = "g";
+  j["grooves"].push_back({{"profile", "p"}, {"material", "g"}, {"path", {{"line", {{0, 0.53}, {1, 0.53}}}}}});
+  const GrooveScene s = parseOk(j);
+  const LocalGroove a = localGroove(s, 0, {0.5, 0.5}), b = localGroove(s, 1, {0.5, 0.5});
+  CrossSection section;
+  section.binormal = {0, 1};
+  buildCrossSection(s, {{&a, 0.0, false}, {&b, 0.03, true}}, -0.007, 0.05, section);
+  // Rising from -0.01 to 0.004 over [-0.005, 0.005]: h = 0 at -0.005 + 0.01 (10 / 14); mirrored, the
+  // second falls from 0.004 to -0.01 over [0.025, 0.035]: h = 0 at 0.025 + 0.01 (4 / 14).
+  const std::vector<std::pair<double, double>> expected = {
+      {-0.01, 0}, {-0.007, -0.006}, {-0.005, -0.01}, {-0.005 + 0.01 * 10 / 14.0, 0}, {0.005, 0.004}, {0.01, 0},
+      {0.02, 0},  {0.025, 0.004},   {0.025 + 0.01 * 4 / 14.0, 0}, {0.035, -0.01},  {0.04, 0},     {0.05, 0}};
+  ASSERT_EQ(section.points.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(section.points[i].b, expected[i].first, 1e-15) << i;
+    EXPECT_NEAR(section.points[i].h, expected[i].second, 1e-15) << i;
+  }
+  // The flat base between and after the bands takes the base material, the grooves' facets theirs.
+  const std::size_t g = s.grooves[0].material, base = s.baseMaterial;
+  ASSERT_NE(g, base);
+  const std::vector<std::size_t> materials = {g, g, g, g, g, base, g, g, g, g, base};
+  ASSERT_EQ(section.material.size(), materials.size());
+  for (std::size_t i = 0; i < materials.size(); ++i) EXPECT_EQ(section.material[i], materials[i]) << i;
+}
+
 TEST(LineSampleSection, RidgeAddsToCutAndWallsAreVertical) {
   // A channel (vertical walls) under a reversed groove: b mirrored, walls kept as two points.
   const json channel = json::array({{-0.01, 0}, {-0.01, -0.004}, {0.02, -0.004}, {0.02, 0}});

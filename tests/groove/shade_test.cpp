@@ -78,6 +78,42 @@ TEST(SeedShader, RadianceMemoGivesDirectRadianceExactly) {
       }
 }
 
+// The memo's entries outlive it (per thread): a later memo under the same view, light and materials
+// reuses them; one under another view or light, or over materials changed in place (same vector,
+// other values: a scene loaded into the same object), must not; nor must a memo whose store a memo
+// under another view took over in between (a mirror bounce's).
+TEST(SeedShader, RadianceMemoNeverServesAnotherViewLightOrMaterial) {
+  std::vector<Material> materials(1);
+  for (int c = 0; c < 3; ++c) materials[0].albedo[c] = 0.4, materials[0].specular[c] = 0.5;
+  materials[0].shininess = 12;
+  Lighting lighting;
+  lighting.toLight = {0.3, -0.2, 0.932737905};
+  const Vec3 view1{-0.4, 0.1, 0.910439453}, view2{0.2, 0.2, 0.959166305};
+  const Vec3 normal{0.6, 0, 0.8};
+  auto expectExact = [&](RadianceMemo& memo, const Vec3& view, const Lighting& light, const char* what) {
+    const Rgb expected = directRadiance(materials[0], normal, view, light);
+    const Rgb got = memo(0, normal);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(got[c], expected[c]) << what << " " << c;
+  };
+  {
+    RadianceMemo first(materials, view1, lighting);
+    expectExact(first, view1, lighting, "first");
+  }
+  RadianceMemo again(materials, view1, lighting);
+  expectExact(again, view1, lighting, "same view again");
+  RadianceMemo otherView(materials, view2, lighting);
+  expectExact(otherView, view2, lighting, "another view");
+  expectExact(again, view1, lighting, "the older memo after another took the store");
+  Lighting dimmer = lighting;
+  dimmer.radiance = {0.5, 0.5, 0.5};
+  RadianceMemo otherLight(materials, view1, dimmer);
+  expectExact(otherLight, view1, dimmer, "another light radiance");
+  materials[0].shininess = 40;
+  materials[0].albedo[1] = 0.9;
+  RadianceMemo changed(materials, view1, lighting);
+  expectExact(changed, view1, lighting, "materials changed in place");
+}
+
 TEST(SeedShader, NoGrooveNearIsTheFlatBase) {
   const GrooveScene s = sceneOf(line("v", "paint", {0.1, 0.5}, {0.9, 0.5}));
   const GrooveGrid grid = buildGridOk(s);
