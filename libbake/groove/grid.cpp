@@ -206,6 +206,11 @@ void GrooveGrid::primitivesInBoxes(const GridBox* boxes, int count, std::vector<
   gatherRefs(*this, cellStart, primitiveRefs, boxes, count, out);
 }
 
+CellSpan GrooveGrid::cellSpan(Vec2 lower, Vec2 upper) const {
+  const grid_detail::Lattice lattice = latticeOf(*this);
+  return {{lattice.cellOf(lower.u, 0), lattice.cellOf(lower.v, 1)}, {lattice.cellOf(upper.u, 0), lattice.cellOf(upper.v, 1)}};
+}
+
 void GrooveGrid::recordsInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const {
   const GridBox box{lower, upper};
   gatherRefs(*this, recordStart, recordRefs, &box, 1, out);

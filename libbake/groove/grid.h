@@ -44,6 +44,13 @@ struct GridBox {
   Vec2 lower, upper;
 };
 
+// The unwrapped cell indices of a box's corners: two boxes with the same span meet the same cells,
+// so a gather for one serves the other.
+struct CellSpan {
+  std::int64_t first[2] = {0, 0}, last[2] = {-1, -1};
+  bool operator==(const CellSpan&) const = default;
+};
+
 struct GrooveGrid {
   Vec2 origin;                       // lower corner of the domain
   Vec2 cellSize;                     // per axis (the domain is an integer number of cells)
@@ -65,6 +72,7 @@ struct GrooveGrid {
   void recordsInBox(Vec2 lower, Vec2 upper, std::vector<std::uint32_t>& out) const;
   // The primitives of the cells that meet any of the boxes, each once, ascending.
   void primitivesInBoxes(const GridBox* boxes, int count, std::vector<std::uint32_t>& out) const;
+  CellSpan cellSpan(Vec2 lower, Vec2 upper) const;
 };
 
 struct GridStats {

@@ -15,6 +15,7 @@
 #include "groove/shade.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -119,13 +120,37 @@ bool meetsRecord(const GrooveScene& scene, const Box& box, const SpecialRecord& 
 // Grooves lying wholly inside such a footprint are missed.
 constexpr double kBoundaryOnlyCells = 8;
 
-void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::uint32_t>& out) {
+// A thread's last gather, for the shader that made it: the boxes of neighbouring pixels mostly meet
+// the same cells (their spans are equal), and then list the same primitives (records).
+struct GatherMemo {
+  std::uint64_t shader = 0;  // 0: nothing remembered (serials start at 1)
+  CellSpan span;
+  std::vector<std::uint32_t> found;
+};
+
+enum class Gather { Primitives, Records };
+
+const std::vector<std::uint32_t>& gatherInBox(GatherMemo& memo, std::uint64_t shader, const GrooveGrid& grid,
+                                              const Box& box, Gather what) {
+  const bool valid = box.lower.u <= box.upper.u && box.lower.v <= box.upper.v;  // not NaN
+  const CellSpan span = valid ? grid.cellSpan(box.lower, box.upper) : CellSpan{};
+  if (valid && memo.shader == shader && memo.span == span) return memo.found;
+  if (what == Gather::Primitives)
+    grid.primitivesInBox(box.lower, box.upper, memo.found);
+  else
+    grid.recordsInBox(box.lower, box.upper, memo.found);
+  memo.shader = valid ? shader : 0;
+  memo.span = span;
+  return memo.found;
+}
+
+const std::vector<std::uint32_t>& gatherPrimitives(const GrooveGrid& grid, std::uint64_t shader, const Box& box) {
+  thread_local GatherMemo memo;
+  thread_local std::vector<std::uint32_t> out;
   const double cellsU = (box.upper.u - box.lower.u) / grid.cellSize.u;
   const double cellsV = (box.upper.v - box.lower.v) / grid.cellSize.v;
-  if (!(cellsU > kBoundaryOnlyCells && cellsV > kBoundaryOnlyCells)) {
-    grid.primitivesInBox(box.lower, box.upper, out);
-    return;
-  }
+  if (!(cellsU > kBoundaryOnlyCells && cellsV > kBoundaryOnlyCells))
+    return gatherInBox(memo, shader, grid, box, Gather::Primitives);
   const Vec2 corners[4] = {box.lower, {box.upper.u, box.lower.v}, box.upper, {box.lower.u, box.upper.v}};
   GridBox edges[4];
   for (int k = 0; k < 4; ++k) {
@@ -133,6 +158,7 @@ void gatherPrimitives(const GrooveGrid& grid, const Box& box, std::vector<std::u
     edges[k] = {{std::min(a.u, b.u), std::min(a.v, b.v)}, {std::max(a.u, b.u), std::max(a.v, b.v)}};
   }
   grid.primitivesInBoxes(edges, 4, out);
+  return out;
 }
 
 // Curved sections (SeedSettings::curvedSections) shade a footprint on one section, turned with the
@@ -165,13 +191,17 @@ double travelPerDepth(const Vec3& d) {
   return d.w > horizontal / kMaxReach ? horizontal / d.w : kMaxReach;
 }
 
+SeedShader::SeedShader(const GrooveScene& scene, const GrooveGrid& grid, const SeedSettings& settings)
+    : scene_(scene), grid_(grid), settings_(settings) {
+  static std::atomic<std::uint64_t> shaders{0};
+  serial_ = ++shaders;
+}
+
 Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
                       ShadeStats* stats) const {
   const Box box = queryBox(scene_, footprint, toViewer, lighting.toLight, scene_.wmax);
-  thread_local std::vector<std::uint32_t> found;
-  thread_local std::vector<std::uint32_t> records;
   thread_local std::vector<LocalGroove> grooves;
-  gatherPrimitives(grid_, box, found);
+  const std::vector<std::uint32_t>& found = gatherPrimitives(grid_, serial_, box);
   if (stats) *stats = {false, std::uint32_t(found.size())};
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
 
@@ -198,7 +228,8 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
     special = std::any_of(grid_.records.begin(), grid_.records.end(),
                           [&](const SpecialRecord& record) { return meetsRecord(scene_, recordBox, record); });
   } else {
-    grid_.recordsInBox(recordBox.lower, recordBox.upper, records);
+    thread_local GatherMemo memo;
+    const std::vector<std::uint32_t>& records = gatherInBox(memo, serial_, grid_, recordBox, Gather::Records);
     special = std::any_of(records.begin(), records.end(),
                           [&](std::uint32_t r) { return meetsRecord(scene_, recordBox, grid_.records[r]); });
   }

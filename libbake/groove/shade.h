@@ -5,6 +5,8 @@
 // (§6), and mirror inter-reflections by recursion (§7).
 #pragma once
 
+#include <cstdint>
+
 #include "groove/grid.h"
 #include "groove/render.h"
 #include "groove/scene.h"
@@ -34,8 +36,7 @@ struct ShadeStats {
 
 class SeedShader {
  public:
-  SeedShader(const GrooveScene& scene, const GrooveGrid& grid, const SeedSettings& settings = {})
-      : scene_(scene), grid_(grid), settings_(settings) {}
+  SeedShader(const GrooveScene& scene, const GrooveGrid& grid, const SeedSettings& settings = {});
   // The pixel value of one footprint seen from `toViewer`.
   Rgb shade(const Footprint& footprint, const Vec3& toViewer, const Lighting& lighting,
             ShadeStats* stats = nullptr) const;
@@ -44,6 +45,7 @@ class SeedShader {
   const GrooveScene& scene_;
   const GrooveGrid& grid_;
   SeedSettings settings_;
+  std::uint64_t serial_;  // unique per shader made: the key of the per-thread gather memos
 };
 
 Image renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
