@@ -144,6 +144,25 @@ bool inFrontOfPlaneOf(const Projected& me, const Projected& other, double margin
   return true;
 }
 
+// Where piece me lies against other's plane (the two tests above the other way round): on the side
+// other's normal points to (or on the plane) with every vertex, more than `margin` on the far side
+// with every vertex, or across. For other facing the viewer (the light), a line from a point of me
+// towards the viewer (the light) then never crosses other's plane, so other hides (shadows) none of
+// me; or always does, with other in front by more than the margin wherever they overlap, the one-point
+// test's verdict. Both spare the clip that finds a point of the overlap.
+enum class Against { front, behind, across };
+Against sideOfPlaneOf(const Projected& me, const Projected& other, double margin) {
+  const SurfacePiece& plane = *other.piece;
+  const SurfacePiece& b = *me.piece;
+  bool front = true, behind = true;
+  for (int k = 0; k < b.count && (front || behind); ++k) {
+    const double d = dot(plane.normal, b.vertex[k]) - plane.planeOffset;
+    front = front && !(d < 0);
+    behind = behind && d < -margin;
+  }
+  return front ? Against::front : (behind ? Against::behind : Against::across);
+}
+
 // The half-planes of a piece's screen image: they clip the footprint and every overlap with it.
 struct ScreenEdges {
   std::array<HalfPlane, kPolygonMaxVertices> edge;
@@ -162,7 +181,10 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
     const Projected& other = all[j];
     if (j == i || other.facingViewer <= 1e-12 || !other.screenBox.overlaps(bounds) || behindPlaneOf(me, other))
       continue;
-    if (inFrontOfPlaneOf(me, other, f.depthTolerance)) {
+    const Against side = inFrontOfPlaneOf(me, other, f.depthTolerance) ? Against::behind
+                                                                        : sideOfPlaneOf(me, other, f.depthTolerance);
+    if (side == Against::front) continue;
+    if (side == Against::behind) {
       visible.subtract(other.screen);  // drops nothing where they do not overlap
       bounds = visible.bounds();
       continue;
@@ -198,9 +220,12 @@ void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, c
     const Projected& other = all[j];
     if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
     if (me.facingLight > 0 && behindPlaneOf(me, other)) continue;
+    // Against the caster's plane, when the caster faces the light.
+    const Against side = other.facingLight > 1e-12 ? sideOfPlaneOf(me, other, f.depthTolerance) : Against::across;
+    if (side == Against::front) continue;
     const ConvexPolygon shadow = shadowOnScreen(f, me, other);
     if (!shadow.empty() && !boundsOf(shadow).overlaps(bounds)) continue;
-    if (me.facingLight > 0 && inFrontOfPlaneOf(me, other, f.depthTolerance)) {
+    if (side == Against::behind || (me.facingLight > 0 && inFrontOfPlaneOf(me, other, f.depthTolerance))) {
       part.subtract(shadow);  // drops nothing where they do not overlap
       bounds = part.bounds();
       continue;
