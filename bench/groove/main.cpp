@@ -157,7 +157,8 @@ int main(int argc, char** argv) {
   app.add_option("--only", o.only, "only the cases whose name contains this");
   app.add_option("--spp", o.spp, "reference samples per pixel (a square)");
   app.add_option("--repeats", o.repeats,
-                 "method measurements per view, interleaved with the reference's two renders (the fastest of each is kept)");
+                 "method measurements per view, interleaved with the reference's two renders (the fastest of each is "
+                 "kept; frames under 0.3 s of reference CPU get more of both)");
   app.add_option("--threads", o.threads, "threads for both renderers (default 1: CPU time of the shading alone)");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
   app.add_flag("--straight-arcs", o.straightArcs, "the method without its curved sections on tight arcs (as the seed)");
