@@ -156,6 +156,15 @@ void resolveWalls(CrossSection& out, std::size_t base) {
   }
 }
 
+// Profile p's piece over [x0, x1], its segment `j` moved on to the one under the interval (past
+// vertical segments too).
+Piece pieceOver(const PlacedProfile& p, const std::vector<SectionPoint>& placed, std::size_t& j, double x0, double x1) {
+  const SectionPoint* pts = &placed[p.first];
+  while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;
+  const LocalGroove& g = *p.groove->groove;
+  return {heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive};
+}
+
 // Each band ends where or before the next one starts, and runs with b (the common case: parallel
 // grooves apart from each other). Then at most one groove lies over any interval.
 bool disjointBands(const std::vector<PlacedProfile>& profiles, const std::vector<SectionPoint>& placed) {
@@ -184,12 +193,7 @@ void sweepDisjoint(const std::vector<PlacedProfile>& profiles, const std::vector
       appendFlat(out, x0, x1, base);
       continue;
     }
-    const PlacedProfile& p = profiles[current];
-    const SectionPoint* pts = &placed[p.first];
-    while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
-    const LocalGroove& g = *p.groove->groove;
-    appendOnePiece(out, {heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive},
-                   x0, x1, base);
+    appendOnePiece(out, pieceOver(profiles[current], placed, j, x0, x1), x0, x1, base);
   }
 }
 
@@ -213,10 +217,7 @@ void sweepOverlapping(const std::vector<PlacedProfile>& profiles, const std::vec
       const SectionPoint* pts = &placed[p.first];
       if (pts[p.count - 1].b <= x0) continue;  // the band ended: drop it
       active[keep++] = a;
-      std::size_t& j = cursor[a];
-      while (j + 2 < p.count && pts[j + 1].b <= x0) ++j;  // skips vertical segments too
-      const LocalGroove& g = *p.groove->groove;
-      pieces.push_back({heightOn(pts[j], pts[j + 1], x0), heightOn(pts[j], pts[j + 1], x1), g.material, g.primitive});
+      pieces.push_back(pieceOver(p, placed, cursor[a], x0, x1));
     }
     active.resize(keep);
     appendInterval(out, pieces, x0, x1, base, splits);

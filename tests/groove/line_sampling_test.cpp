@@ -45,6 +45,15 @@ Rgb blinnPhong(const Material& m, Vec3 n, Vec3 e, Vec3 l) {
   return out;
 }
 
+// The section's points are `expected` (b, h), in order.
+void expectPolyline(const CrossSection& section, const std::vector<std::pair<double, double>>& expected) {
+  ASSERT_EQ(section.points.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(section.points[i].b, expected[i].first, 1e-15) << i;
+    EXPECT_NEAR(section.points[i].h, expected[i].second, 1e-15) << i;
+  }
+}
+
 Footprint across(double centreV, double widthAcross, double widthAlong = 0.001) {
   return {{0.5, centreV}, {widthAlong, 0}, {0, widthAcross}};
 }
@@ -115,11 +124,7 @@ TEST(LineSampleSection, OverlappingCutsTakeTheDeeperAndSplitAtCrossings) {
   buildCrossSection(s, {{&a, 0.0, false}, {&b, 0.01, false}}, -0.05, 0.05, section);
   const std::vector<std::pair<double, double>> expected = {
       {-0.05, 0}, {-0.01, 0}, {0, -0.01}, {0.005, -0.005}, {0.01, -0.01}, {0.02, 0}, {0.05, 0}};
-  ASSERT_EQ(section.points.size(), expected.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    EXPECT_NEAR(section.points[i].b, expected[i].first, 1e-15) << i;
-    EXPECT_NEAR(section.points[i].h, expected[i].second, 1e-15) << i;
-  }
+  ASSERT_NO_FATAL_FAILURE(expectPolyline(section, expected));
 }
 
 TEST(LineSampleSection, DisjointBandsWithPileUpAndSupportInsideABand) {
@@ -141,11 +146,7 @@ TEST(LineSampleSection, DisjointBandsWithPileUpAndSupportInsideABand) {
   const std::vector<std::pair<double, double>> expected = {
       {-0.01, 0}, {-0.007, -0.006}, {-0.005, -0.01}, {-0.005 + 0.01 * 10 / 14.0, 0}, {0.005, 0.004}, {0.01, 0},
       {0.02, 0},  {0.025, 0.004},   {0.025 + 0.01 * 4 / 14.0, 0}, {0.035, -0.01},  {0.04, 0},     {0.05, 0}};
-  ASSERT_EQ(section.points.size(), expected.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    EXPECT_NEAR(section.points[i].b, expected[i].first, 1e-15) << i;
-    EXPECT_NEAR(section.points[i].h, expected[i].second, 1e-15) << i;
-  }
+  ASSERT_NO_FATAL_FAILURE(expectPolyline(section, expected));
   // The flat base between and after the bands takes the base material, the grooves' facets theirs.
   const std::size_t g = s.grooves[0].material, base = s.baseMaterial;
   ASSERT_NE(g, base);
@@ -165,11 +166,7 @@ TEST(LineSampleSection, RidgeAddsToCutAndWallsAreVertical) {
   // Reversed: b' = 0.001 - b, so the channel spans [-0.019, 0.011].
   const std::vector<std::pair<double, double>> expected = {
       {-0.1, 0}, {-0.019, 0}, {-0.019, -0.004}, {0.011, -0.004}, {0.011, 0}, {0.1, 0}};
-  ASSERT_EQ(section.points.size(), expected.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    EXPECT_NEAR(section.points[i].b, expected[i].first, 1e-15) << i;
-    EXPECT_NEAR(section.points[i].h, expected[i].second, 1e-15) << i;
-  }
+  ASSERT_NO_FATAL_FAILURE(expectPolyline(section, expected));
   double nb = 0, nh = 0;
   facetNormal(section, 1, nb, nh);  // the wall at b = -0.019 faces -b... into the cavity: +b
   EXPECT_EQ(nb, 1);
