@@ -1,6 +1,7 @@
 #include "core/atomic_file.h"
 
 #include "core/limits.h"
+#include "core/output_plan.h"
 #include "core/temporaries.h"
 
 #include <fcntl.h>
@@ -26,11 +27,10 @@ void removeTemporary(const fs::path& temporary) {
 // Writes `bytes` to a fresh temporary file in the target's directory; returns its path.
 Result<fs::path> writeTemporary(const fs::path& target, std::span<const std::uint8_t> bytes) {
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  std::error_code ec;
-  if (fs::is_directory(target, ec)) {
-    return ioError("is a directory, not a file", {target.string(), ""});
-  }
-  std::string pattern = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  if (target.empty()) return usageError("an output file name is empty");
+  // Never rename over a device node, a FIFO or a folder (core/output_plan.h).
+  BAKE_RETURN_IF_ERROR(checkReplaceable(target));
+  std::string pattern = temporaryPatternFor(target);
   const int fd = createRegisteredTemporary(pattern);
   if (fd < 0) {
     return ioError("cannot create a file in " + dir.string() + ": " + systemMessage(errno),
@@ -90,22 +90,6 @@ Status checkWritable(const fs::path& target) {
 
 Status writeFileAtomic(const fs::path& target, const std::string& text) {
   return writeFileAtomic(target, asBytes(text));
-}
-
-Result<std::vector<std::uint8_t>> readFileBytes(const fs::path& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) return ioError("is a directory, not a file", {path.string(), ""});
-  // Checked before reading: a file beyond the budget would only exhaust memory.
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (!ec) BAKE_RETURN_IF_ERROR(checkBudget(Budget::InputBytes, size, "bytes", {path.string(), ""}));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int err = errno;
-    return ioError(std::string("cannot open: ") + systemMessage(err ? err : ENOENT), {path.string(), ""});
-  }
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return ioError("read failed", {path.string(), ""});
-  return bytes;
 }
 
 OutputSet::~OutputSet() { discard(); }

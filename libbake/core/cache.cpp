@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/hash.h"
+#include "core/json_read.h"
 
 namespace bake {
 namespace fs = std::filesystem;
@@ -95,7 +96,9 @@ std::string lowercase(std::string text) {
 
 Result<json> readManifest(const fs::path& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  json manifest = json::parse(bytes.begin(), bytes.end(), nullptr, false);
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  BAKE_RETURN_IF_ERROR(checkJsonDepth(text, path.string()));
+  json manifest = json::parse(text.begin(), text.end(), nullptr, false);
   if (manifest.is_discarded() || !manifest.is_object()) return invalidInput("not JSON", {path.string(), ""});
   return manifest;
 }

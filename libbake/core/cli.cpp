@@ -1,8 +1,14 @@
 #include "core/cli.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <new>
+#include <set>
 
+#include "core/input_file.h"
 #include "core/limits.h"
 #include "core/version.h"
 
@@ -40,11 +46,93 @@ void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet whi
       ->type_name("NAME=N")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_flag_callback("--allow-outside-uris", [] { setOutsideUrisAllowed(true); },
+                        "Let a .gltf read buffers outside its own folder (absolute paths, ../); refused otherwise");
   if (which.cacheDir) {
     app.add_option("--cache-dir", options.cacheDir,
                    "Content-addressed cache of outputs: reuse a verified earlier bake of the same inputs and options");
   }
 }
+
+namespace {
+
+// One range for every numeric option of every tool, checked once after parsing, before a value can
+// wrap (4294967296 into a 32-bit index), turn into inf or NaN, or reach a package as a number no
+// reader accepts. Tools check tighter ranges of their own on top.
+constexpr double kLargestMagnitude = 1e9;
+constexpr double kSmallestMagnitude = 1e-9;
+constexpr long long kLargestInteger = 2147483647LL;
+constexpr unsigned long long kLargestUnsigned = 4294967295ULL;
+
+std::string optionName(const CLI::Option& option) {
+  const std::string name = option.get_name(false, true);
+  return name.empty() ? option.get_name() : name;
+}
+
+Status outOfRange(const CLI::Option& option, const std::string& value, const std::string& range) {
+  return usageError(optionName(option) + " " + value + ": " + range);
+}
+
+Status checkNumber(const CLI::Option& option, const std::string& type, const std::string& value) {
+  const char* text = value.c_str();
+  char* end = nullptr;
+  errno = 0;
+  if (type == "FLOAT") {
+    const double number = std::strtod(text, &end);
+    if (end == text || *end != '\0') return outOfRange(option, value, "not a number");
+    char limits[160];
+    std::snprintf(limits, sizeof limits, "out of range: give a finite number of magnitude %g to %g, or 0",
+                  kSmallestMagnitude, kLargestMagnitude);
+    const double magnitude = std::fabs(number);
+    if (!std::isfinite(number) || magnitude > kLargestMagnitude || (number != 0 && magnitude < kSmallestMagnitude)) {
+      return outOfRange(option, value, limits);
+    }
+    return {};
+  }
+  if (type == "UINT") {
+    const unsigned long long number = std::strtoull(text, &end, 10);
+    if (value.find('-') != std::string::npos || end == text || *end != '\0' || errno == ERANGE ||
+        number > kLargestUnsigned) {
+      return outOfRange(option, value, "out of range: give a whole number from 0 to " + std::to_string(kLargestUnsigned));
+    }
+    return {};
+  }
+  const long long number = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || errno == ERANGE || number > kLargestInteger || number < -kLargestInteger) {
+    return outOfRange(option, value,
+                      "out of range: give a whole number from " + std::to_string(-kLargestInteger) + " to " +
+                          std::to_string(kLargestInteger));
+  }
+  return {};
+}
+
+// Options that name files: an empty value names no file.
+bool namesAFile(const CLI::Option& option) {
+  static const std::set<std::string> kFileOptions{"output", "report", "depfile", "threshold", "package", "views",
+                                                  "sources", "apply-to", "cache-dir", "height-map", "out-dir"};
+  for (const std::string& name : option.get_lnames()) {
+    if (kFileOptions.count(name)) return true;
+  }
+  return false;
+}
+
+Status checkOptionValues(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0) continue;
+    const std::string type = option->get_type_name();
+    const bool numeric = type == "INT" || type == "UINT" || type == "FLOAT";
+    for (const std::string& value : option->results()) {
+      if (numeric) BAKE_RETURN_IF_ERROR(checkNumber(*option, type, value));
+      if (value.empty() && namesAFile(*option)) return usageError(optionName(*option) + ": the file name is empty");
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (!sub->get_name().empty() && sub->parsed()) BAKE_RETURN_IF_ERROR(checkOptionValues(*sub));
+  }
+  return {};
+}
+
+}  // namespace
 
 int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
             const std::function<Status()>& body) {
@@ -59,6 +147,10 @@ int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
   } catch (const CLI::ParseError& e) {
     diagnostics.error(std::string(e.what()) + " (run with --help for usage)");
     return int(ExitCode::Usage);
+  }
+  if (const Status values = checkOptionValues(app); !values.isOk()) {
+    diagnostics.error(values.message() + " (run with --help for usage)");
+    return int(values.code());
   }
   try {
     const Status status = body();

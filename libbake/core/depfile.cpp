@@ -1,31 +1,15 @@
 #include "core/depfile.h"
 
 #include "core/atomic_file.h"
+#include "core/build_syntax.h"
 
 namespace bake {
 namespace fs = std::filesystem;
 
-std::string escapeDepfilePath(const std::string& path) {
-  std::string out;
-  out.reserve(path.size());
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    const char c = path[i];
-    if (c == ' ' || c == '#') {
-      // A backslash run before a space must be doubled so Make does not read it as the escape.
-      for (std::size_t j = i; j > 0 && path[j - 1] == '\\'; --j) out += '\\';
-      out += '\\';
-      out += c;
-    } else if (c == '$') {
-      out += "$$";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+Result<std::string> escapeDepfilePath(const std::string& path) { return makeEscapedPath(path); }
 
 namespace {
-std::string absoluteEscaped(const fs::path& path) {
+Result<std::string> absoluteEscaped(const fs::path& path) {
   std::error_code ec;
   fs::path absolute = fs::absolute(path, ec);
   if (ec) absolute = path;
@@ -33,21 +17,26 @@ std::string absoluteEscaped(const fs::path& path) {
 }
 }  // namespace
 
-std::string formatDepfile(const std::vector<fs::path>& outputs, const std::vector<fs::path>& inputs) {
+Result<std::string> formatDepfile(const std::vector<fs::path>& outputs, const std::vector<fs::path>& inputs) {
   std::string text;
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     if (i) text += " \\\n ";
-    text += absoluteEscaped(outputs[i]);
+    BAKE_ASSIGN_OR_RETURN(const std::string output, absoluteEscaped(outputs[i]));
+    text += output;
   }
   text += ":";
-  for (const fs::path& input : inputs) text += " \\\n  " + absoluteEscaped(input);
+  for (const fs::path& input : inputs) {
+    BAKE_ASSIGN_OR_RETURN(const std::string escaped, absoluteEscaped(input));
+    text += " \\\n  " + escaped;
+  }
   text += "\n";
   return text;
 }
 
 Status writeDepfile(const fs::path& depfile, const std::vector<fs::path>& outputs,
                     const std::vector<fs::path>& inputs) {
-  return writeFileAtomic(depfile, formatDepfile(outputs, inputs));
+  BAKE_ASSIGN_OR_RETURN(const std::string text, formatDepfile(outputs, inputs));
+  return writeFileAtomic(depfile, text);
 }
 
 }  // namespace bake

@@ -1,6 +1,6 @@
 // Make-syntax dependency files (--depfile) for Make, Ninja and CMake's DEPFILE: every output is a
-// target, every file read is a prerequisite, all as absolute normalised paths with spaces, '#', '$'
-// and backslashes escaped the way GNU Make and Ninja both read them.
+// target, every file read is a prerequisite, all as absolute normalised paths escaped the way GNU Make
+// and Ninja both read them (core/build_syntax.h); a path neither can hold is a usage error.
 #pragma once
 
 #include <filesystem>
@@ -11,9 +11,9 @@
 
 namespace bake {
 
-std::string escapeDepfilePath(const std::string& path);
+Result<std::string> escapeDepfilePath(const std::string& path);
 
-std::string formatDepfile(const std::vector<std::filesystem::path>& outputs,
+Result<std::string> formatDepfile(const std::vector<std::filesystem::path>& outputs,
                           const std::vector<std::filesystem::path>& inputs);
 
 // Formats and writes the depfile atomically.

@@ -1,11 +1,14 @@
 #include "core/hash.h"
 
+#include <sys/stat.h>
 #include <xxhash.h>
 
 #include <cstdio>
 #include <fstream>
 #include <memory>
 #include <vector>
+
+#include "core/input_file.h"
 
 namespace bake {
 
@@ -23,6 +26,12 @@ std::string hashBytes(std::span<const std::uint8_t> bytes) {
 }
 
 Result<std::string> hashFile(const std::filesystem::path& path) {
+  // An input read through readFileBytes is never opened again (a pipe cannot be read twice).
+  if (std::optional<std::string> known = hashOfReadInput(path)) return *known;
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    return ioError("not a regular file, and not read by this run: no content hash", {path.string(), ""});
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) return ioError("cannot open for hashing", {path.string(), ""});
   std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> state(XXH3_createState(), &XXH3_freeState);

@@ -12,7 +12,8 @@ Budgets& current() {
 }
 
 constexpr Budget kAll[] = {Budget::InputBytes, Budget::Triangles, Budget::TextureSide, Budget::Grooves,
-                           Budget::Primitives, Budget::FieldValues, Budget::ControlPoints};
+                           Budget::Primitives, Budget::FieldValues, Budget::ControlPoints, Budget::DecodedBytes,
+                           Budget::Crossings};
 
 }  // namespace
 
@@ -25,6 +26,8 @@ std::uint64_t& Budgets::operator[](Budget which) {
     case Budget::Primitives: return primitives;
     case Budget::FieldValues: return fieldValues;
     case Budget::ControlPoints: return controlPoints;
+    case Budget::DecodedBytes: return decodedBytes;
+    case Budget::Crossings: return crossings;
   }
   return inputBytes;
 }
@@ -40,6 +43,8 @@ const char* budgetName(Budget which) {
     case Budget::Primitives: return "primitives";
     case Budget::FieldValues: return "field-values";
     case Budget::ControlPoints: return "control-points";
+    case Budget::DecodedBytes: return "decoded-bytes";
+    case Budget::Crossings: return "crossings";
   }
   return "?";
 }

@@ -24,16 +24,21 @@ enum class Budget {
   Primitives,   // segments and arcs of one groove scene once its curves are flattened
   FieldValues,  // geodesic field values: vertices times fields
   ControlPoints,  // paintstroke control points of one stroke list, generators included
+  DecodedBytes,   // memory one decoded texture or image takes (KTX2 levels inflated, image pixels as floats)
+  Crossings,      // pairs of grooves that cross in one groove scene, estimated before the grid is built
 };
 
 struct Budgets {
-  std::uint64_t inputBytes = std::uint64_t(4) << 30;
+  // The defaults keep every tool well under 8 GB (each budget's cost model is in README.md).
+  std::uint64_t inputBytes = std::uint64_t(256) << 20;
   std::uint64_t triangles = 50'000'000;
   std::uint64_t textureSide = 16384;
   std::uint64_t grooves = 10'000'000;
   std::uint64_t primitives = 20'000'000;
   std::uint64_t fieldValues = std::uint64_t(1) << 30;
-  std::uint64_t controlPoints = 100'000'000;
+  std::uint64_t controlPoints = 10'000'000;
+  std::uint64_t decodedBytes = std::uint64_t(512) << 20;
+  std::uint64_t crossings = 10'000'000;
 
   std::uint64_t& operator[](Budget which);
   std::uint64_t operator[](Budget which) const;

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/depfile.h"
+#include "core/output_plan.h"
 
 namespace bake {
 namespace fs = std::filesystem;
@@ -31,6 +32,12 @@ BakeSession::BakeSession(const std::string& tool, const CommonOptions& options, 
 void BakeSession::addInput(const std::filesystem::path& path) { inputs_.push_back(path); }
 
 Status BakeSession::stageOutput(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+  // A tool plans its outputs before the work (core/output_plan.h); an output outside that plan is a
+  // bug of the tool. Library callers that made no plan are still covered at finish(): no output may
+  // replace an input, and the writer never replaces anything but a regular file.
+  if (outputsPlanned() && !isPlannedOutput(path)) {
+    return internalError("an output that was not planned before the bake", {path.string(), ""});
+  }
   return outputs_.stage(path, bytes);
 }
 
@@ -75,8 +82,17 @@ Status BakeSession::finish(Status outcome) {
   // The depfile is staged with the outputs and the report's folder is tried before anything is
   // committed: a --depfile or --report that cannot be written fails the bake with every earlier
   // output still in place.
+  // Checked again against every input the bake actually read (a .gltf's buffers, a style's images):
+  // no output may replace one of them.
+  if (outcome.isOk()) {
+    std::vector<fs::path> targets = outputs;
+    if (!options_.depfilePath.empty()) targets.push_back(options_.depfilePath);
+    if (!options_.reportPath.empty()) targets.push_back(options_.reportPath);
+    outcome = checkDistinctFiles(inputs_, targets);
+  }
   if (outcome.isOk() && !options_.depfilePath.empty()) {
-    outcome = outputs_.stage(options_.depfilePath, formatDepfile(outputs, inputs_));
+    Result<std::string> depfile = formatDepfile(outputs, inputs_);
+    outcome = depfile.isOk() ? outputs_.stage(options_.depfilePath, *depfile) : Status(depfile.status()).inFile(options_.depfilePath);
   }
   if (outcome.isOk() && !options_.reportPath.empty()) outcome = checkWritable(options_.reportPath);
   if (outcome.isOk()) outcome = outputs_.commit();
@@ -134,10 +150,18 @@ Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions
     return {};
   }
   common.cacheStore = {};
-  if (common.cacheDir.empty()) return bake();
-  // A run whose files or key cannot be known is baked without the cache: the bake reports any error.
+  // Every output is resolved and checked before any work (core/output_plan.h). A run whose files
+  // cannot be known (its input does not parse) is baked unplanned: the bake reports the error, and
+  // the session's own checks at commit still keep every input.
   Result<RunFiles> run = files();
   if (!run.isOk()) return bake();
+  if (Status planned = planOutputs(*run, common); !planned.isOk()) {
+    // The failure is still reported in --report, when that file itself is safe to write.
+    if (reportIsSafe(*run, common)) static_cast<void>(BakeSession(tool, common, diagnostics).finish(planned));
+    return planned;
+  }
+  if (common.cacheDir.empty()) return bake();
+  // A run whose key cannot be known is baked without the cache: the bake reports any error.
   Result<nlohmann::json> description = describeRun(tool, toolkitVersion(), app, *run);
   if (!description.isOk()) return bake();
   const std::string key = cacheKey(*description);

@@ -7,6 +7,7 @@
 #include "bake_formats/geodesic.h"
 
 #include "core/atomic_file.h"
+#include "core/json_read.h"
 #include "geodesic/bake_stages.h"
 #include "geodesic/farthest.h"
 #include "geodesic/snap.h"
@@ -19,16 +20,17 @@ using nlohmann::json;
 Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
   // readFileBytes refuses a directory (an ifstream on one fails like malformed JSON).
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  json document;
-  try {
-    document = json::parse(bytes.begin(), bytes.end());
-  } catch (const json::exception& e) {  // a parse error, or e.g. a number overflowing a double
-    return invalidInput(std::string("not valid JSON: ") + e.what(), {path, ""});
-  }
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  BAKE_ASSIGN_OR_RETURN(json document, parseJsonText(text, path));
   if (!document.is_object() || !document.contains("fields") || !document["fields"].is_array())
     return invalidInput("expected an object with a \"fields\" array", {path, ""});
   std::vector<FieldSpec> fields;
   const json& list = document["fields"];
+  if (list.size() > std::size_t(format::geodesic::kMaxFields)) {
+    return invalidInput("lists " + std::to_string(list.size()) + " fields; a package holds at most " +
+                            std::to_string(format::geodesic::kMaxFields),
+                        {path, "fields"});
+  }
   for (std::size_t f = 0; f < list.size(); ++f) {
     const std::string where = "fields[" + std::to_string(f) + "]";
     const json& entry = list[f];

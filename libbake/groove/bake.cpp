@@ -133,7 +133,8 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
   {
     // What a reader gets back (the package's arrays are the file's bytes), measured against the scene.
     StageTimer timer(&report, "measure");
-    BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(package, settings.output, false));
+    // Errors here come from the scene's content (values a package cannot hold): they name the scene.
+    BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(package, settings.scene, false));
     reportError(storedGeometryError(scene, grid, stored), grid, report);
   }
   progress.update(4);

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/json_keys.h"
+#include "core/json_read.h"
 #include "core/limits.h"
 #include "groove/generators.h"
 #include "groove/path_svg.h"
@@ -189,14 +190,7 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
   Reader r{{source}};
   r.directory = directory;
   r.filesRead = &scene.files;
-  json doc;
-  try {
-    doc = json::parse(jsonText);
-  } catch (const json::parse_error& error) {
-    return invalidInput(std::string("not valid JSON: ") + error.what(), {source, "byte " + std::to_string(error.byte)});
-  } catch (const json::exception& error) {  // e.g. a number overflowing to infinity
-    return invalidInput(std::string("not valid JSON: ") + error.what(), {source, ""});
-  }
+  BAKE_ASSIGN_OR_RETURN(json doc, parseJsonText(jsonText, source));
   BAKE_RETURN_IF_ERROR(r.object(doc, "", {"$schema", "description", "version", "units", "domain", "wrap",
                                           "flatteningTolerance", "profiles", "materials", "base", "grooves", "generators"}));
   for (const char* key : {"version", "domain", "profiles", "materials", "base"})
@@ -315,6 +309,11 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
         const std::uint64_t lines = bond == "running" ? std::uint64_t(ny + 1) + std::uint64_t(nx + 1) * std::uint64_t(ny)
                                                       : std::uint64_t(nx + 1) + std::uint64_t(ny + 1);
         BAKE_RETURN_IF_ERROR(checkBudget(Budget::Grooves, pending.size() + lines, "grooves", {source, child(at, "count")}));
+        // Every grout line crosses or meets every line of the other direction: each meeting is a
+        // special-case record of the grid, and each costs the grid build an intersection.
+        const std::uint64_t crossings = bond == "running" ? 2 * std::uint64_t(nx + 1) * std::uint64_t(ny)
+                                                          : std::uint64_t(nx + 1) * std::uint64_t(ny + 1);
+        BAKE_RETURN_IF_ERROR(checkBudget(Budget::Crossings, crossings, "groove crossings", {source, child(at, "count")}));
         for (auto& pieces : tileGroutLines(origin, tile, nx, ny, bond == "running")) {
           PendingGroove one = groove;
           one.pieces = pieces;

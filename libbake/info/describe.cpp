@@ -29,7 +29,8 @@ FileKind sniff(const std::vector<std::uint8_t>& bytes) {
   std::uint32_t magic = 0;
   if (bytes.size() >= 4) std::memcpy(&magic, bytes.data(), 4);
   if (magic == format::glb::kMagic) return FileKind::Glb;
-  const auto first = std::find_if(bytes.begin(), bytes.end(), [](std::uint8_t c) { return !std::isspace(c); });
+  const std::size_t bom = bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF ? 3 : 0;
+  const auto first = std::find_if(bytes.begin() + std::ptrdiff_t(bom), bytes.end(), [](std::uint8_t c) { return !std::isspace(c); });
   if (first != bytes.end() && *first == '{') return FileKind::GltfText;
   return FileKind::Unknown;
 }
@@ -206,7 +207,7 @@ Result<json> describeFile(const fs::path& path) {
       break;
     }
     case FileKind::GltfText: {
-      BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::read(path));
+      BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::decodeFile(bytes, path));
       description = describeGlb(package, "gltf");
       if (hasMaterialExtension(package, format::paintstrokes::kExtension)) {
         BAKE_ASSIGN_OR_RETURN(description["paintstrokes"], describePaintstrokes(package, path.string()));

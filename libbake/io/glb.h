@@ -127,5 +127,8 @@ Status write(const std::filesystem::path& path, const Package& package, const Wr
 Result<Package> decode(std::span<const std::uint8_t> bytes, const std::string& name = "<memory>");
 // .glb or .gltf (external buffers and data URIs resolved relative to the file).
 Result<Package> read(const std::filesystem::path& path);
+// What read() makes of the bytes of the file at `path` (already read): a GLB, or a .gltf whose
+// buffer files are found beside it.
+Result<Package> decodeFile(std::span<const std::uint8_t> bytes, const std::filesystem::path& path);
 
 }  // namespace bake::glb

@@ -12,6 +12,8 @@
 #include <limits>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
+#include "core/json_read.h"
 #include "io/draco_codec.h"
 #include "io/glb.h"
 
@@ -116,14 +118,26 @@ Result<std::string> glbJsonChunk(std::span<const std::uint8_t> bytes, const std:
     return invalidInput("JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the end of the file",
                         {name, "chunk 0"});
   }
-  const std::uint64_t binHeader = jsonStart + jsonLength;
-  if (binHeader + fmt::kChunkHeaderBytes <= declared && readU32(bytes, std::size_t(binHeader) + 4) == fmt::kChunkBin) {
-    const std::uint64_t binLength = readU32(bytes, std::size_t(binHeader));
-    if (binHeader + fmt::kChunkHeaderBytes + binLength > declared) {
-      return invalidInput("BIN chunk of " + std::to_string(binLength) + " bytes runs past the end of the file",
-                          {name, "chunk 1"});
+  // Every chunk after the JSON one must lie whole inside the declared length (glTF 2.0, 4.4.3); the
+  // BIN chunk, when present, comes second. Unknown chunk types are skipped.
+  std::uint64_t chunkHeader = jsonStart + jsonLength;
+  for (int chunk = 1; chunkHeader < declared; ++chunk) {
+    const std::string element = "chunk " + std::to_string(chunk);
+    if (chunkHeader + fmt::kChunkHeaderBytes > declared) {
+      return invalidInput("chunk header at byte " + std::to_string(chunkHeader) + " runs past the end of the file (" +
+                              std::to_string(declared) + " bytes)",
+                          {name, element});
     }
-    binChunk = bytes.subspan(std::size_t(binHeader + fmt::kChunkHeaderBytes), std::size_t(binLength));
+    const std::uint64_t length = readU32(bytes, std::size_t(chunkHeader));
+    const std::uint32_t type = readU32(bytes, std::size_t(chunkHeader) + 4);
+    const std::uint64_t start = chunkHeader + fmt::kChunkHeaderBytes;
+    if (start + length > declared) {
+      return invalidInput(std::string(type == fmt::kChunkBin ? "BIN chunk" : "chunk") + " of " + std::to_string(length) +
+                              " bytes runs past the end of the file",
+                          {name, element});
+    }
+    if (type == fmt::kChunkBin && chunk == 1) binChunk = bytes.subspan(std::size_t(start), std::size_t(length));
+    chunkHeader = start + length;
   }
   return std::string(reinterpret_cast<const char*>(bytes.data() + jsonStart), std::size_t(jsonLength));
 }
@@ -162,6 +176,29 @@ int hexValue(char c) {
   return -1;
 }
 
+// URI confinement: a .gltf names files beside it or below its folder, never elsewhere (an absolute
+// path, "../", a link leading out), unless --allow-outside-uris says so: a package from elsewhere must
+// not copy /etc/passwd or another project's files into its output.
+Status checkUriConfined(const std::string& uri, const std::string& decoded, const fs::path& baseDir, const Location& where) {
+  if (outsideUrisAllowed()) return {};
+  const fs::path relative(decoded);
+  const auto refuse = [&](const std::string& why) {
+    return invalidInput("uri " + uri + " " + why + "; files outside the .gltf's folder are refused (allow them with "
+                        "--allow-outside-uris)", where);
+  };
+  if (relative.is_absolute()) return refuse("is an absolute path");
+  const fs::path normal = relative.lexically_normal();
+  if (!normal.empty() && *normal.begin() == "..") return refuse("leads outside the .gltf's folder");
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(baseDir), ec);
+  const fs::path target = fs::weakly_canonical(fs::absolute(baseDir / relative), ec);
+  if (!ec) {
+    const fs::path inside = target.lexically_relative(folder);
+    if (inside.empty() || *inside.begin() == "..") return refuse("leads outside the .gltf's folder (through a link)");
+  }
+  return {};
+}
+
 Result<std::vector<std::uint8_t>> loadBufferUri(const std::string& uri, const fs::path& baseDir, const Location& where) {
   if (uri.empty()) return invalidInput("uri is empty", where);
   if (uri.rfind("data:", 0) == 0) {
@@ -187,6 +224,7 @@ Result<std::vector<std::uint8_t>> loadBufferUri(const std::string& uri, const fs
     decoded += char(high * 16 + low);
     i += 2;
   }
+  BAKE_RETURN_IF_ERROR(checkUriConfined(uri, decoded, baseDir, where));
   auto bytes = readFileBytes(baseDir / decoded);
   if (!bytes.isOk()) return Status(bytes.status().code(), "buffer file " + decoded + ": " + bytes.status().message(), where);
   return bytes;
@@ -534,6 +572,7 @@ Result<Package> toPackage(const Document& doc) {
 }
 
 Result<json> parseJson(const std::string& text, const std::string& name) {
+  BAKE_RETURN_IF_ERROR(checkJsonDepth(text, name));
   json root = json::parse(text, nullptr, false);
   if (root.is_discarded() || !root.is_object()) return invalidInput("the glTF JSON is not a valid JSON object", {name, "JSON"});
   return root;
@@ -553,12 +592,17 @@ Result<Package> decode(std::span<const std::uint8_t> bytes, const std::string& n
 
 Result<Package> read(const fs::path& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  return decodeFile(bytes, path);
+}
+
+Result<Package> decodeFile(std::span<const std::uint8_t> bytes, const fs::path& path) {
   std::uint32_t magic = 0;
   if (bytes.size() >= 4) std::memcpy(&magic, bytes.data(), 4);
   if (magic == fmt::kMagic) return decode(bytes, path.string());
   Document doc;
   doc.name = path.string();
-  BAKE_ASSIGN_OR_RETURN(doc.root, parseJson(std::string(bytes.begin(), bytes.end()), doc.name));
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  BAKE_ASSIGN_OR_RETURN(doc.root, parseJson(std::string(withoutByteOrderMark(text)), doc.name));
   BAKE_RETURN_IF_ERROR(loadBuffers(doc, {}, path.parent_path().empty() ? fs::path(".") : path.parent_path()));
   return toPackage(doc);
 }

@@ -18,17 +18,39 @@ std::vector<int> rootsOf(const Package& package) {
   return roots;
 }
 
-Status visitNode(const Package& package, const std::string& name, int index, const WorldMatrix& parent,
-                 std::vector<bool>& onPath, const std::function<void(const Node&, const WorldMatrix&)>& visit) {
-  if (onPath[std::size_t(index)]) {
-    return invalidInput("node " + std::to_string(index) + " is its own ancestor (cycle)", {name, "node " + std::to_string(index)});
+// Depth first with an explicit stack, never recursion: a chain of 100,000 nodes is a valid glTF and
+// must not overflow the call stack. Children are visited in order, as a recursive walk would.
+Status visitTree(const Package& package, const std::string& name, int root, std::vector<bool>& onPath,
+                 const std::function<void(const Node&, const WorldMatrix&)>& visit) {
+  struct Frame {
+    int node;
+    WorldMatrix world;
+    std::size_t nextChild;
+  };
+  std::vector<Frame> stack;
+  auto enter = [&](int index, const WorldMatrix& parent) -> Status {
+    if (onPath[std::size_t(index)]) {
+      return invalidInput("node " + std::to_string(index) + " is its own ancestor (cycle)", {name, "node " + std::to_string(index)});
+    }
+    onPath[std::size_t(index)] = true;
+    const Node& node = package.nodes[std::size_t(index)];
+    stack.push_back({index, multiplyMatrices(parent, node.localMatrix()), 0});
+    visit(node, stack.back().world);
+    return {};
+  };
+  BAKE_RETURN_IF_ERROR(enter(root, kIdentity));
+  while (!stack.empty()) {
+    Frame& top = stack.back();
+    const std::vector<int>& children = package.nodes[std::size_t(top.node)].children;
+    if (top.nextChild < children.size()) {
+      const int child = children[top.nextChild++];
+      const WorldMatrix world = top.world;
+      BAKE_RETURN_IF_ERROR(enter(child, world));
+    } else {
+      onPath[std::size_t(top.node)] = false;
+      stack.pop_back();
+    }
   }
-  onPath[std::size_t(index)] = true;
-  const Node& node = package.nodes[std::size_t(index)];
-  const WorldMatrix world = multiplyMatrices(parent, node.localMatrix());
-  visit(node, world);
-  for (int child : node.children) BAKE_RETURN_IF_ERROR(visitNode(package, name, child, world, onPath, visit));
-  onPath[std::size_t(index)] = false;
   return {};
 }
 
@@ -49,7 +71,7 @@ WorldMatrix multiplyMatrices(const WorldMatrix& a, const WorldMatrix& b) {
 Status forEachNode(const Package& package, const std::string& name,
                    const std::function<void(const Node&, const WorldMatrix&)>& visit) {
   std::vector<bool> onPath(package.nodes.size(), false);
-  for (int root : rootsOf(package)) BAKE_RETURN_IF_ERROR(visitNode(package, name, root, kIdentity, onPath, visit));
+  for (int root : rootsOf(package)) BAKE_RETURN_IF_ERROR(visitTree(package, name, root, onPath, visit));
   return {};
 }
 

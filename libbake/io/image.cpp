@@ -14,7 +14,9 @@
 // private temporary file, with the same conversions.
 #include "io/image.h"
 
+#include "core/atomic_file.h"
 #include "core/limits.h"
+#include "core/output_plan.h"
 #include "core/path.h"
 #include "core/temporaries.h"
 
@@ -147,7 +149,7 @@ class TemporaryFile {
 
   Status create(const fs::path& target, const std::string& extension) {
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string pattern = (dir / ("." + target.stem().string() + ".tmp.XXXXXX" + extension)).string();
+    std::string pattern = temporaryPatternFor(target.parent_path() / target.stem(), extension);
     const int fd = createRegisteredTemporary(pattern, int(extension.size()));
     if (fd < 0) {
       return ioError("cannot create a file in " + dir.string() + ": " + std::strerror(errno),
@@ -271,6 +273,13 @@ Result<Image> readOpened(std::unique_ptr<OIIO::ImageInput> in, const fs::path& n
                                    "texels on the longer side (" + std::to_string(spec.width) + "x" +
                                        std::to_string(spec.height) + ")",
                                    {name.string(), ""}));
+  const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) *
+                                std::uint64_t(spec.nchannels) * sizeof(float);
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::DecodedBytes, decoded,
+                                   "bytes of decoded pixels (" + std::to_string(spec.width) + "x" +
+                                       std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) +
+                                       " channels as floats)",
+                                   {name.string(), ""}));
   Image image;
   image.width = spec.width;
   image.height = spec.height;
@@ -294,15 +303,13 @@ OIIO::ImageSpec readConfig() {
   return config;
 }
 
-}  // namespace
-
-Result<Image> readImage(const fs::path& path) {
+// OIIO reading a file by its name: only for the private temporaries below, never for an input
+// (inputs are read once, bounded, by readFileBytes).
+Result<Image> readImageByName(const fs::path& path) {
   BAKE_RETURN_IF_ERROR(checkReadable(path));
   const OIIO::ImageSpec config = readConfig();
   return readOpened(OIIO::ImageInput::open(path.string(), &config), path);
 }
-
-namespace {
 
 // For readers without proxy support (OIIO 2.4's PNG reader): the bytes go through a private
 // temporary file, removed again whatever happens.
@@ -319,7 +326,7 @@ Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::st
   }
   ::close(fd);
   Result<Image> image = written == bytes.size()
-                            ? readImage(pattern)
+                            ? readImageByName(pattern)
                             : Result<Image>(ioError("cannot write a temporary file", {name, ""}));
   ::unlink(pattern.c_str());
   unregisterTemporary(pattern);
@@ -347,12 +354,16 @@ Result<Image> readImageFromMemory(std::span<const std::uint8_t> bytes, const std
   return readOpened(std::move(in), name);
 }
 
+Result<Image> readImage(const fs::path& path) {
+  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
+  return readImageFromMemory(bytes, path.string(), lowercaseExtension(path));
+}
+
 Status writeImage(const fs::path& path, const Image& image, PixelType type) {
   BAKE_RETURN_IF_ERROR(checkImageShape(image, path));
   const std::string extension = lowercaseExtension(path);
   BAKE_RETURN_IF_ERROR(checkFormatAllows(extension, type, image.channels, path));
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) return ioError("is a directory, not a file", {path.string(), ""});
+  BAKE_RETURN_IF_ERROR(checkReplaceable(path));
 
   TemporaryFile temporary;
   BAKE_RETURN_IF_ERROR(temporary.create(path, path.extension().string()));

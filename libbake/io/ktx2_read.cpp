@@ -10,10 +10,12 @@
 #include <zstd.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "bake_formats/ktx2.h"
 #include "core/atomic_file.h"
+#include "core/limits.h"
 #include "io/ktx2.h"
 #include "io/ktx2_layout.h"
 
@@ -517,6 +519,22 @@ Result<Texture> decode(std::span<const std::uint8_t> bytes, const std::string& n
                            supercompressed,
                            std::max({levelIndexEnd, std::uint64_t(index.dfdOffset) + index.dfdLength,
                                      std::uint64_t(index.kvdOffset) + index.kvdLength})};
+  // Before any level is read or inflated: what the whole chain would take in memory. A few kilobytes
+  // of Zstandard data can claim gigabytes (a decompression bomb).
+  std::uint64_t decodedTotal = 0;
+  for (std::uint32_t level = 0; level < levelCount; ++level) {
+    const auto size = levelSize(layout.width, layout.height, layout.layerCount, layout.texelBytes, level);
+    if (!size || *size > std::numeric_limits<std::uint64_t>::max() - decodedTotal) {
+      decodedTotal = std::numeric_limits<std::uint64_t>::max();
+      break;
+    }
+    decodedTotal += *size;
+  }
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::DecodedBytes, decodedTotal,
+                                   "bytes of decoded texture levels (" + std::to_string(layout.width) + "x" +
+                                       std::to_string(layout.height) + ", " + std::to_string(layout.layerCount) +
+                                       " layers, " + std::to_string(levelCount) + " levels)",
+                                   {name, "level index"}));
   texture.levels.resize(levelCount);
   std::uint64_t followsEnd = 0;  // end of the previously stored (next smaller) level
   for (std::uint32_t level = levelCount; level-- > 0;) {

@@ -28,6 +28,7 @@
 #include <OpenMesh/Core/IO/Options.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -36,11 +37,14 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <streambuf>
 #include <string_view>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/limits.h"
 #include "core/path.h"
+#include "core/temporaries.h"
 #include "io/gltf.h"
 #include "io/mesh_scan.h"
 #include "mesh/weld.h"
@@ -50,6 +54,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using meshscan::isBinaryStl;
 using meshscan::Prescan;
 using meshscan::prescanObj;
 using meshscan::prescanOff;
@@ -261,13 +266,67 @@ std::mutex& openMeshMutex() {
   return mutex;
 }
 
-bool parseWithOpenMesh(const fs::path& path, SoupImporter& importer) {
+enum class MeshFormat { Obj, Off, Ply, Stl, Gltf, Unknown };
+
+// The bytes already read, as the std::istream OpenMesh's readers take: the file is opened once
+// (a FIFO could not be opened twice), and nothing is copied.
+class MemoryStreamBuffer : public std::streambuf {
+ public:
+  explicit MemoryStreamBuffer(std::string_view bytes) {
+    char* begin = const_cast<char*>(bytes.data());
+    setg(begin, begin, begin + bytes.size());
+  }
+
+ protected:
+  pos_type seekoff(off_type offset, std::ios_base::seekdir direction, std::ios_base::openmode) override {
+    const off_type base = direction == std::ios_base::beg ? 0 : direction == std::ios_base::cur ? gptr() - eback() : egptr() - eback();
+    return seekpos(pos_type(base + offset), std::ios_base::in);
+  }
+  pos_type seekpos(pos_type position, std::ios_base::openmode) override {
+    if (off_type(position) < 0 || off_type(position) > egptr() - eback()) return pos_type(off_type(-1));
+    setg(eback(), eback() + off_type(position), egptr());
+    return position;
+  }
+};
+
+// OpenMesh's OFF reader learns NOFF/COFF/STOFF from the file's header only when it opens the file by
+// name, so OFF bytes go through a private temporary file (still one open of the input).
+bool parseOffThroughFile(std::string_view bytes, OpenMesh::IO::Options options, SoupImporter& importer) {
+  std::string pattern = (fs::temp_directory_path() / "bake-mesh.XXXXXX.off").string();
+  const int fd = createRegisteredTemporary(pattern, 4);
+  if (fd < 0) return false;
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n <= 0) break;
+    written += std::size_t(n);
+  }
+  ::close(fd);
+  bool ok = false;
+  if (written == bytes.size()) {
+    std::lock_guard<std::mutex> lock(openMeshMutex());
+    QuietOpenMeshLogs quiet;
+    ok = OpenMesh::IO::IOManager().read(pattern, importer, options);
+  }
+  ::unlink(pattern.c_str());
+  unregisterTemporary(pattern);
+  return ok;
+}
+
+bool parseWithOpenMesh(std::string_view bytes, MeshFormat format, SoupImporter& importer) {
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexNormal;
   options += OpenMesh::IO::Options::VertexTexCoord;
+  if (format == MeshFormat::Off) return parseOffThroughFile(bytes, options, importer);
+  // OpenMesh tells binary STL from ASCII by the file; a stream says so through the options.
+  if (format == MeshFormat::Stl && isBinaryStl(bytes)) options += OpenMesh::IO::Options::Binary;
+  const char* extension = format == MeshFormat::Obj ? "mesh.obj" : format == MeshFormat::Off ? "mesh.off"
+                          : format == MeshFormat::Ply ? "mesh.ply" : "mesh.stl";
+  MemoryStreamBuffer buffer(bytes);
+  std::istream stream(&buffer);
   std::lock_guard<std::mutex> lock(openMeshMutex());
   QuietOpenMeshLogs quiet;
-  return OpenMesh::IO::IOManager().read(path.string(), importer, options);
+  return OpenMesh::IO::IOManager().read(stream, extension, importer, options);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -367,8 +426,6 @@ Result<TriangleMesh> triangulate(PolygonSoup&& soup, const fs::path& path, MeshR
 // ---------------------------------------------------------------------------------------------------
 // Putting it together.
 
-enum class MeshFormat { Obj, Off, Ply, Stl, Gltf, Unknown };
-
 MeshFormat formatOf(const std::string& extension) {
   if (extension == ".obj") return MeshFormat::Obj;
   if (extension == ".off") return MeshFormat::Off;
@@ -406,7 +463,9 @@ Status checkDeclaredCounts(const Prescan& scan, const PolygonSoup& soup, const f
 Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, MeshReadStats& stats) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   if (bytes.empty()) return invalidInput("the file is empty", {path.string(), ""});
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  // A text mesh may start with a UTF-8 byte-order mark (a binary STL's free header may hold those bytes).
+  if (!(format == MeshFormat::Stl && isBinaryStl(text))) text = withoutByteOrderMark(text);
   BAKE_ASSIGN_OR_RETURN(const Prescan scan, prescan(format, text, path));
   // Before OpenMesh builds anything: the faces the header declares or the scan counted (an OBJ
   // polygon is at least one triangle; the exact count is checked again after triangulation).
@@ -414,7 +473,7 @@ Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, M
   BAKE_RETURN_IF_ERROR(checkBudget(Budget::Triangles, faces, "faces", {path.string(), scan.facesWhere}));
 
   SoupImporter importer(format == MeshFormat::Obj ? AttributeScope::PerCorner : AttributeScope::PerVertex);
-  if (!parseWithOpenMesh(path, importer)) {
+  if (!parseWithOpenMesh(text, format, importer)) {
     return invalidInput("OpenMesh could not parse the file", {path.string(), ""});
   }
   if (importer.problem()) return invalidInput(*importer.problem(), {path.string(), ""});

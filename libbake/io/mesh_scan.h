@@ -37,6 +37,8 @@ Result<Prescan> prescanObj(std::string_view text, const std::filesystem::path& p
 Result<Prescan> prescanOff(std::string_view text, const std::filesystem::path& path);
 Result<Prescan> prescanPly(std::string_view text, const std::filesystem::path& path);
 Result<Prescan> prescanStl(std::string_view bytes, const std::filesystem::path& path);
+// Binary when the size matches the triangle count in the header (OpenMesh's own rule).
+bool isBinaryStl(std::string_view bytes);
 
 // ---------------------------------------------------------------------------------------------------
 // Text helpers shared by the pre-scans (mesh_scan_common.cpp).

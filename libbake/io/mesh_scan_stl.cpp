@@ -37,11 +37,6 @@ std::optional<std::uint32_t> binaryStlTriangleCount(std::string_view bytes) {
   return count;
 }
 
-bool isBinaryStl(std::string_view bytes) {
-  const std::optional<std::uint32_t> count = binaryStlTriangleCount(bytes);
-  return count && bytes.size() == kStlHeaderBytes + std::uint64_t(*count) * kStlTriangleBytes;
-}
-
 // OpenMesh maps positions to vertices with a comparison that treats NaN as equal to anything, so a
 // non-finite corner would silently become some other vertex: reject them before.
 Result<Prescan> prescanBinaryStl(std::string_view bytes, const fs::path& path) {
@@ -141,6 +136,11 @@ Result<Prescan> prescanAsciiStl(std::string_view text, const fs::path& path) {
 }
 
 }  // namespace
+
+bool isBinaryStl(std::string_view bytes) {
+  const std::optional<std::uint32_t> count = binaryStlTriangleCount(bytes);
+  return count && bytes.size() == kStlHeaderBytes + std::uint64_t(*count) * kStlTriangleBytes;
+}
 
 Result<Prescan> prescanStl(std::string_view bytes, const fs::path& path) {
   if (isBinaryStl(bytes)) return prescanBinaryStl(bytes, path);

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/atomic_file.h"
+#include "core/output_plan.h"
 #include "core/session.h"
 #include "io/glb.h"
 #include "pipe/assemble.h"
@@ -108,9 +109,11 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   settings.ninjaFile = fs::absolute(command.output).lexically_normal();
   settings.keepUnused = command.pipe.keepUnused;
   if (!command.pipe.cacheDirectory.empty()) settings.cacheDirectory = fs::absolute(command.pipe.cacheDirectory);
+  const std::string output = command.output.empty() ? std::string() : fs::absolute(command.output).string();
+  BAKE_RETURN_IF_ERROR(planOutputs({{loaded.scene.file.string()}, {output}}, command.pipe.common));
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
-  const std::string text = ninjaFile(loaded.scene, loaded.plan, settings);
+  BAKE_ASSIGN_OR_RETURN(const std::string text, ninjaFile(loaded.scene, loaded.plan, settings));
   const std::vector<std::uint8_t> bytes(text.begin(), text.end());
   return session.finish(session.stageOutput(fs::absolute(command.output), bytes));
 }
@@ -121,6 +124,15 @@ Status runAssembleCommand(const AssembleCommand& command, Diagnostics& diagnosti
     std::printf("%s\n", loaded.scene.file.c_str());
     for (const fs::path& package : loaded.plan.packages) std::printf("%s\n", package.c_str());
     return {};
+  }
+  if (loaded.plan.packages.empty()) return invalidInput("the scene has no objects to assemble", {loaded.scene.file.string(), ""});
+  const fs::path output = command.output.empty()
+                              ? defaultAssembledPackage(loaded.plan.packages.front().parent_path(), loaded.scene.name)
+                              : fs::absolute(command.output);
+  {
+    RunFiles files{{loaded.scene.file.string()}, {output.string()}};
+    for (const fs::path& package : loaded.plan.packages) files.inputs.push_back(package.string());
+    BAKE_RETURN_IF_ERROR(planOutputs(files, command.pipe.common));
   }
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   const auto body = [&]() -> Status {
@@ -137,9 +149,6 @@ Status runAssembleCommand(const AssembleCommand& command, Diagnostics& diagnosti
     session.report().setStatistic("kept", report.kept);
     session.report().setStatistic("inputBytes", report.inputBytes);
     session.report().setStatistic("outputBytes", bytes.size());
-    const fs::path output = command.output.empty()
-                                ? defaultAssembledPackage(loaded.plan.packages.front().parent_path(), loaded.scene.name)
-                                : fs::absolute(command.output);
     return session.stageOutput(output, bytes);
   };
   return session.finish(body());

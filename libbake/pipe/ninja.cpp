@@ -1,42 +1,41 @@
 // Ninja file writer (pipe/ninja.h). Paths are absolute, as the tools' depfiles write them, so Ninja
 // matches every depfile target with the edge's outputs. One rule runs every bake step (its command
-// line is a variable of the edge); restat lets an unchanged output stop the rebuild there.
+// line is a variable of the edge); restat lets an unchanged output stop the rebuild there. Commands
+// never use Ninja's $in/$out, which reach the shell unquoted: each edge carries its paths shell-quoted
+// (q* variables), so no file name is ever read as shell syntax.
 #include "pipe/ninja.h"
 
 #include <sstream>
 
 #include "bake_formats/scene.h"
+#include "core/build_syntax.h"
 
 namespace bake::pipe {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A path in a build statement: '$', ' ', ':' and newlines are escaped with '$'.
-std::string ninjaPath(const fs::path& path) {
-  std::string out;
-  for (const char c : path.string()) {
-    if (c == '$' || c == ' ' || c == ':' || c == '\n') out += '$';
-    out += c;
+// Every path and value goes through the one escaper (core/build_syntax.h), which refuses what Ninja
+// cannot hold; the first refusal stops the file.
+class Escaper {
+ public:
+  std::string path(const fs::path& path) { return take(ninjaEscapedPath(path.string())); }
+  std::string value(const std::string& text) { return take(ninjaEscapedValue(text)); }
+  std::string paths(const std::vector<fs::path>& paths) {
+    std::string out;
+    for (const fs::path& p : paths) out += " " + path(p);
+    return out;
   }
-  return out;
-}
+  const Status& status() const { return status_; }
 
-// A variable value: only '$' and newlines need escaping.
-std::string ninjaValue(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '$' || c == '\n') out += '$';
-    out += c;
+ private:
+  std::string take(Result<std::string> escaped) {
+    if (escaped.isOk()) return *escaped;
+    if (status_.isOk()) status_ = escaped.status();
+    return {};
   }
-  return out;
-}
-
-std::string joinPaths(const std::vector<fs::path>& paths) {
-  std::string out;
-  for (const fs::path& p : paths) out += " " + ninjaPath(p);
-  return out;
-}
+  Status status_;
+};
 
 // The options that make bakepipe plan the same steps again (for assemble, validate, regenerate).
 std::string pipeOptions(const Scene& scene, const Plan& plan, const NinjaSettings& settings, bool keepUnused) {
@@ -50,42 +49,49 @@ std::string pipeOptions(const Scene& scene, const Plan& plan, const NinjaSetting
 
 }  // namespace
 
-std::string ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings) {
+Result<std::string> ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings) {
+  Escaper e;
   const std::string bakepipe = shellQuote(settings.bakepipe.string());
   const std::string options = pipeOptions(scene, plan, settings, settings.keepUnused);
   const fs::path assembled = settings.assembled;
   const fs::path validated = fs::path(assembled.string() + ".validated");
   std::ostringstream n;
-  n << "# Bake steps of the scene " << scene.name << " (" << scene.file.string() << "), written by bakepipe ninja.\n"
+  n << "# Bake steps of the scene " << commentSafe(scene.name) << " (" << commentSafe(scene.file.string())
+    << "), written by bakepipe ninja.\n"
     << "# Run: ninja -f THIS_FILE. Edit the scene, not this file: it is rewritten when the scene changes.\n"
     << "ninja_required_version = 1.10\n"
     // Ninja's log and dependency database live beside the outputs, not in whatever directory it
     // was started from.
-    << "builddir = " << ninjaValue(plan.packages.empty() ? std::string(".") : plan.packages.front().parent_path().string())
+    << "builddir = " << e.value(plan.packages.empty() ? std::string(".") : plan.packages.front().parent_path().string())
     << "\n\n"
     << "pool " << format::scene::kGlPool << "\n  depth = 1\n\n"
     << "rule bake\n  command = $cmd --depfile $quoteddep\n  depfile = $dep\n  deps = gcc\n  restat = 1\n"
     << "  description = $desc\n\n"
-    << "rule assemble\n  command = " << ninjaValue(bakepipe) << " assemble " << ninjaValue(options)
-    << " -q -o $out --depfile $out.d\n  depfile = $out.d\n  deps = gcc\n  restat = 1\n  description = ASSEMBLE $out\n\n"
-    << "rule validate\n  command = " << ninjaValue(bakepipe) << " validate " << ninjaValue(options)
-    << " -q --package $in && touch $out\n  pool = " << format::scene::kGlPool << "\n  description = VALIDATE $in\n\n"
-    << "rule regenerate\n  command = " << ninjaValue(bakepipe) << " ninja " << ninjaValue(options)
-    << " -q -o $out\n  generator = 1\n  description = REGENERATE $out\n\n";
+    << "rule assemble\n  command = " << e.value(bakepipe) << " assemble " << e.value(options)
+    << " -q -o $qout --depfile $qdep\n  depfile = $out.d\n  deps = gcc\n  restat = 1\n  description = ASSEMBLE $out\n\n"
+    << "rule validate\n  command = " << e.value(bakepipe) << " validate " << e.value(options)
+    << " -q --package $qin && touch $qout\n  pool = " << format::scene::kGlPool << "\n  description = VALIDATE $in\n\n"
+    << "rule regenerate\n  command = " << e.value(bakepipe) << " ninja " << e.value(options)
+    << " -q -o $qout\n  generator = 1\n  description = REGENERATE $out\n\n";
   if (!settings.ninjaFile.empty())
-    n << "build " << ninjaPath(settings.ninjaFile) << ": regenerate " << ninjaPath(scene.file) << "\n\n";
+    n << "build " << e.path(settings.ninjaFile) << ": regenerate " << e.path(scene.file) << "\n"
+      << "  qout = " << e.value(shellQuote(settings.ninjaFile.string())) << "\n\n";
   for (const Step& step : plan.steps) {
-    n << "build" << joinPaths(step.outputs) << ": bake" << joinPaths(step.inputs) << "\n"
-      << "  cmd = " << ninjaValue(commandLine(step, settings.toolDirectory)) << "\n"
-      << "  dep = " << ninjaValue(step.outputs.front().string() + ".d") << "\n"
-      << "  quoteddep = " << ninjaValue(shellQuote(step.outputs.front().string() + ".d")) << "\n"
-      << "  desc = " << ninjaValue(step.id) << "\n\n";
+    n << "build" << e.paths(step.outputs) << ": bake" << e.paths(step.inputs) << "\n"
+      << "  cmd = " << e.value(commandLine(step, settings.toolDirectory)) << "\n"
+      << "  dep = " << e.value(step.outputs.front().string() + ".d") << "\n"
+      << "  quoteddep = " << e.value(shellQuote(step.outputs.front().string() + ".d")) << "\n"
+      << "  desc = " << e.value(step.id) << "\n\n";
   }
-  n << "build " << ninjaPath(assembled) << ": assemble" << joinPaths(plan.packages) << " | " << ninjaPath(scene.file)
-    << "\n\n"
-    << "build " << ninjaPath(validated) << ": validate " << ninjaPath(assembled) << "\n\n"
-    << "build validate: phony " << ninjaPath(validated) << "\n"
-    << "default " << ninjaPath(validated) << "\n";
+  n << "build " << e.path(assembled) << ": assemble" << e.paths(plan.packages) << " | " << e.path(scene.file) << "\n"
+    << "  qout = " << e.value(shellQuote(assembled.string())) << "\n"
+    << "  qdep = " << e.value(shellQuote(assembled.string() + ".d")) << "\n\n"
+    << "build " << e.path(validated) << ": validate " << e.path(assembled) << "\n"
+    << "  qin = " << e.value(shellQuote(assembled.string())) << "\n"
+    << "  qout = " << e.value(shellQuote(validated.string())) << "\n\n"
+    << "build validate: phony " << e.path(validated) << "\n"
+    << "default " << e.path(validated) << "\n";
+  if (!e.status().isOk()) return e.status();
   return n.str();
 }
 

@@ -20,6 +20,6 @@ struct NinjaSettings {
   std::filesystem::path cacheDirectory; // the plan's --cache-dir (passed on)
 };
 
-std::string ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings);
+Result<std::string> ninjaFile(const Scene& scene, const Plan& plan, const NinjaSettings& settings);
 
 }  // namespace bake::pipe

@@ -10,7 +10,9 @@
 #include <sstream>
 
 #include "bake_formats/scene.h"
+#include "core/atomic_file.h"
 #include "core/json_keys.h"
+#include "core/json_read.h"
 
 namespace bake::pipe {
 namespace {
@@ -101,17 +103,13 @@ Result<Generated> readGenerated(const Reader& r, const json& node, const std::st
 
 // A JSON file, parsed; `what` names it in the error when it cannot be read ("scene file", ...).
 Result<json> readJsonFile(const fs::path& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return ioError("cannot read the " + what, {path.string(), ""});
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), "byte " + std::to_string(e.byte)});
-  } catch (const json::exception& e) {  // e.g. a number too large for a double
-    return invalidInput(std::string("not valid JSON: ") + e.what(), {path.string(), ""});
+  Result<std::vector<std::uint8_t>> bytes = readFileBytes(path);
+  if (!bytes.isOk()) {
+    Status status = bytes.status();
+    return Status(status.code(), "cannot read the " + what + ": " + status.message(), {path.string(), ""});
   }
+  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  return parseJsonText(text, path.string());
 }
 
 // The field names of a geobake sources file, in order; unnamed fields are "field K".

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
+#include "core/json_read.h"
 #include "revolution/profile.h"
 
 namespace bake::revolution {
@@ -94,14 +96,8 @@ Status readJsonContour(const nlohmann::json& node, std::size_t c, const std::str
 Result<Profile> readProfileJson(const std::string& path) {
   // readFileBytes refuses a directory (an ifstream on one fails with an exception or reads nothing).
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(bytes.begin(), bytes.end());
-  } catch (const nlohmann::json::parse_error& error) {
-    return invalidInput(std::string("not valid JSON: ") + error.what(), {path, "byte " + std::to_string(error.byte)});
-  } catch (const nlohmann::json::exception& error) {  // e.g. a number overflowing a double
-    return invalidInput(std::string("not valid JSON: ") + error.what(), {path, ""});
-  }
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  BAKE_ASSIGN_OR_RETURN(nlohmann::json document, parseJsonText(text, path));
   Profile profile;
   profile.source = path;
   if (document.is_array() && (document.empty() || document[0].is_array())) {
@@ -118,7 +114,7 @@ Result<Profile> readProfileJson(const std::string& path) {
 
 Result<Profile> readProfileCsv(const std::string& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  std::istringstream in(std::string(bytes.begin(), bytes.end()));
+  std::istringstream in(std::string(withoutByteOrderMark({reinterpret_cast<const char*>(bytes.data()), bytes.size()})));
   Profile profile;
   profile.source = path;
   std::vector<Point2> points;

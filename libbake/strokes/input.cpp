@@ -19,7 +19,9 @@
 #include <map>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/json_keys.h"
+#include "core/json_read.h"
 #include "core/limits.h"
 #include "bake_formats/paintstrokes.h"
 
@@ -212,6 +214,7 @@ std::string pointElement(std::size_t stroke, std::size_t point) {
 }
 
 Result<StrokeInput> parseStrokeJson(const std::string& text, const std::string& source) {
+  BAKE_RETURN_IF_ERROR(checkJsonDepth(text, source));
   json doc;
   try {
     doc = json::parse(text);
@@ -399,7 +402,7 @@ Result<StrokeInput> readStrokeInput(const std::filesystem::path& path) {
   if (ext != ".json" && ext != ".csv") return unsupported("not a stroke list (.json or .csv)", {path.string(), ""});
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   if (bytes.empty()) return invalidInput("the file is empty", {path.string(), ""});
-  const std::string text(bytes.begin(), bytes.end());
+  const std::string text(withoutByteOrderMark({reinterpret_cast<const char*>(bytes.data()), bytes.size()}));
   Result<StrokeInput> input = ext == ".json" ? parseStrokeJson(text, path.string()) : parseStrokeCsv(text, path.string());
   if (input.isOk()) input->directory = path.parent_path();
   return input;

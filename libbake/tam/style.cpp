@@ -22,6 +22,7 @@
 #include "bake_formats/tam.h"
 #include "core/atomic_file.h"
 #include "core/json_keys.h"
+#include "core/json_read.h"
 #include "io/image.h"
 
 namespace bake::tam {
@@ -294,14 +295,7 @@ Status setResolution(Style& style, int resolution, const std::string& where) {
 }
 
 Result<Style> parseStyle(const std::string& jsonText, const std::string& source, const std::string& baseDir, bool loadImage) {
-  json document;
-  try {
-    document = json::parse(jsonText);
-  } catch (const json::parse_error& e) {
-    return invalidInput(std::string("malformed JSON: ") + e.what(), {source, "byte " + std::to_string(e.byte)});
-  } catch (const json::exception& e) {  // e.g. a number overflowing a double
-    return invalidInput(std::string("malformed JSON: ") + e.what(), {source, ""});
-  }
+  BAKE_ASSIGN_OR_RETURN(json document, parseJsonText(jsonText, source, "malformed JSON"));
   Style style;
   style.source = source;
   style.tones.clear();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/output_plan.h"
 #include "core/session.h"
 #include "gl/context.h"
 #include "io/image.h"
@@ -155,6 +156,11 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
   if (settings.size < 16 || settings.size > 4096) return usageError("--size must be 16 to 4096");
   if (!settings.viewsDirectory.empty() && !std::filesystem::is_directory(settings.viewsDirectory)) {
     return ioError("--views: not a directory", {settings.viewsDirectory, ""});
+  }
+  {
+    RunFiles files{settings.packages, {}};
+    files.inputs.insert(files.inputs.end(), settings.goldens.begin(), settings.goldens.end());
+    BAKE_RETURN_IF_ERROR(planOutputs(files, settings.common));
   }
   BakeSession session("bakeplay", settings.common, diagnostics);
   session.report().setOptions({{"command", "validate"}, {"goldens", settings.goldens}, {"size", settings.size},

@@ -10,6 +10,7 @@
 #include <iterator>
 
 #include "core/json_keys.h"
+#include "core/json_read.h"
 #include "render/hatching.h"
 
 namespace bake::play {
@@ -92,6 +93,7 @@ Status checkTam(const ktx2::Texture& tam, const HatchingParams& p, const Locatio
   }
   const std::string metadata = tam.text(fmt::kMetadataKey);
   if (!metadata.empty()) {
+    BAKE_RETURN_IF_ERROR(checkJsonDepth(metadata, where.file).atElement(name + " metadata"));
     const nlohmann::json meta = nlohmann::json::parse(metadata, nullptr, false);
     if (meta.is_object() && meta.contains("tones") && meta["tones"].is_array()) {
       const nlohmann::json& tones = meta["tones"];

@@ -16,6 +16,7 @@
 
 #include "bake_formats/ktx2.h"
 #include "core/atomic_file.h"
+#include "core/limits.h"
 #include "core/version.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
@@ -405,7 +406,8 @@ TEST(Ktx2, HeaderFieldsThatMustBeRejected) {
   expectError(fmt::kOffsetFaceCount, 6, ExitCode::InvalidInput, "header");  // 7x5 faces are not square
   expectError(fmt::kOffsetLevelCount, 4, ExitCode::InvalidInput, "header");  // 7x5 has 3 levels
   expectError(fmt::kOffsetLayerCount, 3, ExitCode::InvalidInput, "level 2");
-  expectError(fmt::kOffsetLayerCount, 0xFFFFFFFF, ExitCode::InvalidInput, "level 2");
+  // 2^32 - 1 layers claim terabytes: the decoded-bytes budget stops it at the level index, before any level.
+  expectError(fmt::kOffsetLayerCount, 0xFFFFFFFF, ExitCode::InvalidInput, "level index");
   expectError(fmt::kOffsetDfdByteLength, 0xFFFFFFF0, ExitCode::InvalidInput, "index");
   expectError(fmt::kOffsetKvdByteOffset, 3, ExitCode::InvalidInput, "index");
 }
@@ -486,7 +488,28 @@ TEST(Ktx2, ZstdSizeClaimsAreCheckedBeforeInflating) {
   }
   decoded = decode(bytes);
   EXPECT_EQ(decoded.status().code(), ExitCode::InvalidInput);
+  EXPECT_NE(decoded.status().message().find("--budget decoded-bytes"), std::string::npos) << decoded.status().message();
+  // With the budget raised out of the way, the expansion bound still refuses it before inflating.
+  const Budgets saved = budgets();
+  Budgets unlimited = saved;
+  unlimited.decodedBytes = ~std::uint64_t(0);
+  setBudgets(unlimited);
+  decoded = decode(bytes);
+  setBudgets(saved);
+  EXPECT_EQ(decoded.status().code(), ExitCode::InvalidInput);
   EXPECT_NE(decoded.status().message().find("cannot come from"), std::string::npos) << decoded.status().message();
+}
+
+TEST(Ktx2, DecompressionBombIsRefusedBeforeInflating) {
+  // A level index claiming far more decoded bytes than the budget: refused at the index, whatever the
+  // Zstandard data would inflate to.
+  std::vector<std::uint8_t> bytes = sampleFiles()[0];
+  write32(bytes, fmt::kOffsetLayerCount, 10000000);  // about 1.7 GB of 7x5 levels
+  const auto decoded = decode(bytes, "bomb.ktx2");
+  ASSERT_FALSE(decoded.isOk());
+  EXPECT_EQ(decoded.status().code(), ExitCode::InvalidInput);
+  EXPECT_EQ(decoded.status().where().element, "level index");
+  EXPECT_NE(decoded.status().message().find("--budget decoded-bytes"), std::string::npos);
 }
 
 TEST(Ktx2, KeyValueDataIsChecked) {

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
       bake::RunFiles run{style.inputs(), {settings.output}};
       if (!material.mesh.empty()) run.inputs.push_back(material.mesh);
       if (!settings.threshold.empty()) run.outputs.push_back(settings.threshold);
-      if (!material.mesh.empty()) run.outputs.push_back(material.package);
+      if (!material.mesh.empty() && !material.package.empty()) run.outputs.push_back(material.package);
       return run;
     };
     return bake::runCachedBake("tambake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
