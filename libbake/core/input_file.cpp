@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <mutex>
 
 #include "core/atomic_file.h"
@@ -21,7 +22,10 @@ namespace {
 
 struct ReadInputs {
   std::mutex mutex;
-  std::map<std::string, std::string> hashes;  // absolute, normal path -> content hash
+  std::map<std::string, ReadInput> read;  // absolute, normal path -> size and content hash
+  // The bytes of every pipe read: a pipe cannot be read twice, and a tool may read an input twice
+  // (once to list the files of the run, once to bake).
+  std::map<std::string, std::shared_ptr<const std::vector<std::uint8_t>>> pipes;
   bool outsideUris = false;
 };
 
@@ -82,6 +86,10 @@ bool waitForPipe(int fd) {
 Result<std::vector<std::uint8_t>> readToEnd(int fd, bool pipe, std::uint64_t expected, const fs::path& path) {
   const std::uint64_t limit = budgets()[Budget::InputBytes];
   const std::uint64_t cap = limit + 1;
+  // A FIFO opened without blocking reads as empty until a writer comes: wait for one (or its data).
+  if (pipe && !waitForPipe(fd)) {
+    return ioError("no writer sent data within " + std::to_string(kPipeIdleSeconds) + " s", {path.string(), ""});
+  }
   std::vector<std::uint8_t> bytes(std::size_t(std::min<std::uint64_t>(std::max<std::uint64_t>(expected + 1, 65536), cap)));
   std::size_t filled = 0;
   for (;;) {
@@ -116,6 +124,11 @@ Result<std::vector<std::uint8_t>> readToEnd(int fd, bool pipe, std::uint64_t exp
 
 Result<std::vector<std::uint8_t>> readFileBytes(const fs::path& path) {
   if (path.empty()) return usageError("an input file name is empty");
+  {
+    ReadInputs& state = readInputs();
+    std::lock_guard<std::mutex> lock(state.mutex);
+    if (const auto pipe = state.pipes.find(keyOf(path)); pipe != state.pipes.end()) return *pipe->second;
+  }
   // O_NONBLOCK: opening a FIFO must not wait for a writer; cleared again for regular files.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
   if (fd < 0) {
@@ -139,17 +152,24 @@ Result<std::vector<std::uint8_t>> readFileBytes(const fs::path& path) {
   {
     ReadInputs& state = readInputs();
     std::lock_guard<std::mutex> lock(state.mutex);
-    state.hashes[keyOf(path)] = hashBytes(bytes);
+    state.read[keyOf(path)] = {bytes.size(), hashBytes(bytes)};
+    if (pipe) state.pipes[keyOf(path)] = std::make_shared<const std::vector<std::uint8_t>>(bytes);
   }
   return bytes;
 }
 
-std::optional<std::string> hashOfReadInput(const fs::path& path) {
+std::optional<ReadInput> readInputRecord(const fs::path& path) {
   ReadInputs& state = readInputs();
   std::lock_guard<std::mutex> lock(state.mutex);
-  const auto found = state.hashes.find(keyOf(path));
-  if (found == state.hashes.end()) return std::nullopt;
+  const auto found = state.read.find(keyOf(path));
+  if (found == state.read.end()) return std::nullopt;
   return found->second;
+}
+
+std::optional<std::string> hashOfReadInput(const fs::path& path) {
+  std::optional<ReadInput> record = readInputRecord(path);
+  if (!record) return std::nullopt;
+  return record->hash;
 }
 
 Status checkInputKind(const fs::path& path) {

@@ -13,7 +13,8 @@ Budgets& current() {
 
 constexpr Budget kAll[] = {Budget::InputBytes, Budget::Triangles, Budget::TextureSide, Budget::Grooves,
                            Budget::Primitives, Budget::FieldValues, Budget::ControlPoints, Budget::DecodedBytes,
-                           Budget::Crossings};
+                           Budget::Crossings, Budget::ProfileWork,
+                           Budget::TamWork};
 
 }  // namespace
 
@@ -28,6 +29,8 @@ std::uint64_t& Budgets::operator[](Budget which) {
     case Budget::ControlPoints: return controlPoints;
     case Budget::DecodedBytes: return decodedBytes;
     case Budget::Crossings: return crossings;
+    case Budget::ProfileWork: return profileWork;
+    case Budget::TamWork: return tamWork;
   }
   return inputBytes;
 }
@@ -45,6 +48,8 @@ const char* budgetName(Budget which) {
     case Budget::ControlPoints: return "control-points";
     case Budget::DecodedBytes: return "decoded-bytes";
     case Budget::Crossings: return "crossings";
+    case Budget::ProfileWork: return "profile-work";
+    case Budget::TamWork: return "tam-work";
   }
   return "?";
 }

@@ -25,7 +25,9 @@ enum class Budget {
   FieldValues,  // geodesic field values: vertices times fields
   ControlPoints,  // paintstroke control points of one stroke list, generators included
   DecodedBytes,   // memory one decoded texture or image takes (KTX2 levels inflated, image pixels as floats)
-  Crossings,      // pairs of grooves that cross in one groove scene, estimated before the grid is built
+  Crossings,      // pairs of groove primitives that may cross (share a grid cell), counted before they are tried
+  ProfileWork,    // texels of a shape map times the pieces of its profile (each texel's distance visits every piece)
+  TamWork,        // candidate strokes per choice times the texels of every TAM level drawn
 };
 
 struct Budgets {
@@ -38,7 +40,9 @@ struct Budgets {
   std::uint64_t fieldValues = std::uint64_t(1) << 30;
   std::uint64_t controlPoints = 10'000'000;
   std::uint64_t decodedBytes = std::uint64_t(512) << 20;
-  std::uint64_t crossings = 10'000'000;
+  std::uint64_t crossings = 100'000'000;
+  std::uint64_t profileWork = 1'000'000'000;
+  std::uint64_t tamWork = 500'000'000;
 
   std::uint64_t& operator[](Budget which);
   std::uint64_t operator[](Budget which) const;

@@ -4,6 +4,7 @@
 
 #include "core/atomic_file.h"
 #include "core/hash.h"
+#include "core/input_file.h"
 
 namespace bake {
 namespace fs = std::filesystem;
@@ -11,6 +12,11 @@ using nlohmann::json;
 
 namespace {
 Result<json> describeFile(const fs::path& path) {
+  // An input read through readFileBytes (a pipe among them) is described from what was read, never
+  // opened again.
+  if (const std::optional<ReadInput> read = readInputRecord(path)) {
+    return json{{"path", path.string()}, {"bytes", read->bytes}, {"hash", read->hash}};
+  }
   std::error_code ec;
   const auto bytes = fs::file_size(path, ec);
   if (ec) return ioError("cannot stat: " + ec.message(), {path.string(), ""});

@@ -95,6 +95,13 @@ Status BakeSession::finish(Status outcome) {
     outcome = depfile.isOk() ? outputs_.stage(options_.depfilePath, *depfile) : Status(depfile.status()).inFile(options_.depfilePath);
   }
   if (outcome.isOk() && !options_.reportPath.empty()) outcome = checkWritable(options_.reportPath);
+  // The report's input entries are made before the commit too: an input it cannot describe fails the
+  // bake while every earlier output is still in place.
+  if (!options_.reportPath.empty()) {
+    for (const auto& input : inputs_) {
+      if (const Status s = report_.addInput(input); !s.isOk() && outcome.isOk()) outcome = s;
+    }
+  }
   if (outcome.isOk()) outcome = outputs_.commit();
   if (!outcome.isOk()) outputs_.discard();
   if (!options_.cacheDir.empty() && !cacheHit_) {
@@ -102,9 +109,6 @@ Status BakeSession::finish(Status outcome) {
     if (outcome.isOk() && !options_.cacheStore.key.empty()) storeInCache(outputs);
   }
   if (!options_.reportPath.empty()) {
-    for (const auto& input : inputs_) {
-      if (const Status s = report_.addInput(input); !s.isOk() && outcome.isOk()) outcome = s;
-    }
     if (outcome.isOk()) {
       for (const auto& output : outputs) {
         if (const Status s = report_.addOutput(output); !s.isOk()) outcome = s;

@@ -7,6 +7,7 @@
 #include "bake_formats/geodesic.h"
 
 #include "core/atomic_file.h"
+#include "core/json_keys.h"
 #include "core/json_read.h"
 #include "geodesic/bake_stages.h"
 #include "geodesic/farthest.h"
@@ -24,6 +25,9 @@ Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
   BAKE_ASSIGN_OR_RETURN(json document, parseJsonText(text, path));
   if (!document.is_object() || !document.contains("fields") || !document["fields"].is_array())
     return invalidInput("expected an object with a \"fields\" array", {path, ""});
+  // Strict keys: a misspelt key would otherwise silently bake something else.
+  if (const auto unknown = findUnknownKey(document, {"$schema", "description", "fields"}))
+    return invalidInput(unknown->message, {path, ""});
   std::vector<FieldSpec> fields;
   const json& list = document["fields"];
   if (list.size() > std::size_t(format::geodesic::kMaxFields)) {
@@ -37,6 +41,7 @@ Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
     if (!entry.is_object() || !entry.contains("sources") || !entry["sources"].is_array() ||
         entry["sources"].empty())
       return invalidInput("a field needs a non-empty \"sources\" array", {path, where});
+    if (const auto unknown = findUnknownKey(entry, {"name", "sources"})) return invalidInput(unknown->message, {path, where});
     FieldSpec field;
     field.name = entry.contains("name") && entry["name"].is_string() ? entry["name"].get<std::string>()
                                                                      : "field " + std::to_string(f);
@@ -46,6 +51,11 @@ Result<std::vector<FieldSpec>> readSourcesFile(const std::string& path) {
       const json& source = sources[s];
       SourceSpec spec;
       spec.origin = path + ": " + element;
+      if (!source.is_object() || source.size() != 1) {
+        return invalidInput("a source is an object with exactly one of \"vertex\", \"point\", \"node\"", {path, element});
+      }
+      if (const auto unknown = findUnknownKey(source, {"vertex", "point", "node"}))
+        return invalidInput(unknown->message, {path, element});
       if (source.contains("vertex") && source["vertex"].is_number_integer() && source["vertex"].get<std::int64_t>() >= 0 &&
           source["vertex"].get<std::int64_t>() <= std::int64_t(UINT32_MAX)) {
         spec.kind = SourceSpec::Kind::Vertex;

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/limits.h"
 #include "core/parallel.h"
 #include "groove/grid_stages.h"
 
@@ -286,6 +287,15 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
       coarseItemStart, coarseItemCells);
   BAKE_RETURN_IF_ERROR(buildCsr(std::uint64_t(coarse.cells[0]) * coarse.cells[1], coarseItemStart, coarseItemCells,
                                 "primitive", threads, coarseCellStart, coarseRefs));
+  // Before the records: every pair of primitives sharing a coarse cell is tried for a crossing, so the
+  // pairs are the work of that stage (a million tiny segments in one cell would be 10^12 tries).
+  std::uint64_t pairs = 0;
+  for (std::size_t c = 0; c + 1 < coarseCellStart.size(); ++c) {
+    const std::uint64_t n = coarseCellStart[c + 1] - coarseCellStart[c];
+    pairs += n * (n - 1) / 2;
+  }
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::Crossings, pairs,
+                                   "pairs of primitives sharing a grid cell (each is tried for a crossing)", {}));
   grid_detail::RecordInputs inputs;
   inputs.scene = &scene;
   inputs.lattice = &coarse;

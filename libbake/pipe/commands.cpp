@@ -109,8 +109,13 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   settings.ninjaFile = fs::absolute(command.output).lexically_normal();
   settings.keepUnused = command.pipe.keepUnused;
   if (!command.pipe.cacheDirectory.empty()) settings.cacheDirectory = fs::absolute(command.pipe.cacheDirectory);
-  const std::string output = command.output.empty() ? std::string() : fs::absolute(command.output).string();
-  BAKE_RETURN_IF_ERROR(planOutputs({{loaded.scene.file.string()}, {output}}, command.pipe.common));
+  // The Ninja file must not replace anything the build it describes reads or writes.
+  RunFiles files{{loaded.scene.file.string()}, {command.output.empty() ? std::string() : fs::absolute(command.output).string()}};
+  for (const Step& step : loaded.plan.steps) {
+    for (const fs::path& path : step.inputs) files.inputs.push_back(path.string());
+    for (const fs::path& path : step.outputs) files.inputs.push_back(path.string());
+  }
+  BAKE_RETURN_IF_ERROR(planOutputs(files, command.pipe.common));
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
   BAKE_ASSIGN_OR_RETURN(const std::string text, ninjaFile(loaded.scene, loaded.plan, settings));

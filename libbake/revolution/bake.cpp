@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "bake_formats/revolution.h"
+#include "core/limits.h"
 #include "core/session.h"
 #include "io/glb.h"
 #include "io/image.h"
@@ -66,7 +67,13 @@ Status checkSettings(const Settings& settings) {
   if (!(settings.overRelaxation >= 1 && settings.overRelaxation < 2)) return usageError("--over-relaxation must be within [1, 2)");
   if (!(settings.heightScale > 0) || !std::isfinite(settings.heightScale)) return usageError("--height-scale must be > 0");
   if (settings.imageTexelSize < 0 || !std::isfinite(settings.imageTexelSize)) return usageError("--texel-size must be >= 0");
-  if (settings.repeatU < 0 || settings.repeatV < 0) return usageError("--repeat values must be >= 0");
+  for (const auto& [option, value] : {std::pair{"--repeat-u", settings.repeatU}, std::pair{"--repeat-v", settings.repeatV}}) {
+    if (value < 0) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%g", value);
+      return usageError(std::string(option) + " " + text + ": must be >= 0 (0: from the projection)");
+    }
+  }
   return {};
 }
 
@@ -139,6 +146,15 @@ Status readAndMeasure(const Settings& settings, ProfileKind kind, BakeSession& s
         default: return internalError("unexpected profile kind");
       }
       state.profile.source = settings.input;
+      // Before the profile is checked and the distances computed: both visit every piece for every
+      // texel (or every other piece), so a profile of a million pieces would run for minutes.
+      std::uint64_t pieces = 0;
+      for (const Contour& contour : state.profile.contours) pieces += contour.segments.size();
+      const std::uint64_t side = std::uint64_t(std::max(1, settings.resolution));
+      BAKE_RETURN_IF_ERROR(checkBudget(Budget::ProfileWork, side * side * std::max<std::uint64_t>(pieces, 1),
+                                       "distance evaluations (" + std::to_string(pieces) + " profile pieces at " +
+                                           std::to_string(side) + "x" + std::to_string(side) + " texels)",
+                                       {settings.input, ""}));
       BAKE_RETURN_IF_ERROR(validateProfile(state.profile, repairs).inFile(settings.input));
     }
     StageTimer timer(&report, "distance");

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/input_file.h"
+#include "core/json_keys.h"
 #include "core/json_read.h"
 #include "revolution/profile.h"
 
@@ -50,6 +51,8 @@ Status readJsonContour(const nlohmann::json& node, std::size_t c, const std::str
   if (node.is_object()) {
     if (!node.contains("points") || !node["points"].is_array())
       return invalidInput("contour needs a \"points\" array", {path, "contour " + std::to_string(c)});
+    if (const auto unknown = findUnknownKey(node, {"points", "closed", "bulges"}))
+      return invalidInput(unknown->message, {path, "contour " + std::to_string(c)});
     pointsNode = &node["points"];
     if (node.contains("closed")) {
       if (!node["closed"].is_boolean())
@@ -106,6 +109,9 @@ Result<Profile> readProfileJson(const std::string& path) {
   }
   if (!document.is_object() || !document.contains("contours") || !document["contours"].is_array())
     return invalidInput("expected {\"contours\": [...]} or a list of [r, h] points", {path, ""});
+  // Strict keys: a misspelt key would otherwise be ignored silently.
+  if (const auto unknown = findUnknownKey(document, {"$schema", "description", "contours"}))
+    return invalidInput(unknown->message, {path, ""});
   const nlohmann::json& contours = document["contours"];
   if (contours.empty()) return invalidInput("no contours", {path, "contours"});
   for (std::size_t c = 0; c < contours.size(); ++c) BAKE_RETURN_IF_ERROR(readJsonContour(contours[c], c, path, profile));

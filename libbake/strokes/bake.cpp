@@ -7,12 +7,14 @@
 #include "strokes/bake.h"
 
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "core/limits.h"
 #include "core/path.h"
 #include "core/progress.h"
 #include "core/session.h"
+#include "strokes/generators.h"
 #include "strokes/input.h"
 #include "strokes/package.h"
 #include "strokes/shadow.h"
@@ -82,12 +84,27 @@ void addTextureInput(const std::string& from, std::vector<std::string>& inputs) 
   if (from.compare(0, prefix.size(), prefix) == 0) inputs.push_back(from.substr(prefix.size()));
 }
 
+// The strokebake option that sets a grow setting.
+std::string growOptionOf(const std::string& setting) {
+  static const std::map<std::string, std::string> kOptions{
+      {"count", "--count"},         {"length", "--length"},       {"radius", "--radius"},
+      {"tipRadius", "--tip-radius"}, {"bend", "--bend"},           {"bendDirection", "--bend-direction"},
+      {"pointsPerStroke", "--points"}, {"lengthFrom", "--length-from"}, {"colourFrom", "--colour-from"}};
+  const auto found = kOptions.find(setting);
+  return found == kOptions.end() ? setting : found->second;
+}
+
 Result<Loaded> load(const BakeSettings& settings) {
   Loaded loaded;
   loaded.inputs.push_back(settings.input);
   if (!isStrokeList(settings.input)) {
     GrowSettings grow = settings.grow;
     grow.mesh = settings.input;
+    // The grow settings came from the command line: a value out of range is a usage error naming
+    // the option (a stroke list's generators report the same checks as invalid input).
+    if (Status checked = checkGrowSettings(grow); !checked.isOk()) {
+      return usageError(growOptionOf(checked.where().element) + ": " + checked.message());
+    }
     addTextureInput(grow.lengthFrom, loaded.inputs);
     addTextureInput(grow.colourFrom, loaded.inputs);
     glb::Mesh mesh;

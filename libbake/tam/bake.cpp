@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "bake_formats/tam.h"
+#include "core/limits.h"
 #include "core/path.h"
 #include "core/progress.h"
 #include "core/session.h"
@@ -122,6 +123,19 @@ Status readInputs(const Settings& settings, BakeSession& session, BakeState& sta
   if (settings.resolution != -1) BAKE_RETURN_IF_ERROR(setResolution(state.style, settings.resolution, "--resolution"));
   if (settings.candidates != -1) state.style.candidates = settings.candidates;
   if (settings.seed != -1) state.style.seed = std::uint64_t(settings.seed);
+  // Before any stroke is drawn: every stroke placed is chosen among K candidates, each scored over its
+  // texels, and the strokes of a tone cover each level about once, so the work grows as K times the
+  // texels of all the levels drawn (Praun et al. 2001's greedy choice).
+  std::uint64_t texels = 0;
+  for (int level = 0; level < state.style.levels; ++level) {
+    const std::uint64_t side = std::uint64_t(state.style.resolution) >> level;
+    texels += side * side;
+  }
+  BAKE_RETURN_IF_ERROR(checkBudget(Budget::TamWork, texels * std::uint64_t(std::max(1, state.style.candidates)),
+                                   "candidate texels (" + std::to_string(state.style.candidates) + " candidates over " +
+                                       std::to_string(texels) + " texels of " + std::to_string(state.style.levels) +
+                                       " levels)",
+                                   {settings.style, ""}));
   if (settings.material.mesh.empty()) return {};
   MeshReadStats stats;
   BAKE_ASSIGN_OR_RETURN(TriangleMesh mesh, readMesh(settings.material.mesh, {}, &stats));

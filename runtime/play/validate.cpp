@@ -86,6 +86,7 @@ std::vector<Camera> referenceViews(const Scene& scene) {
 struct Verdict {
   bool pass = true;
   std::string detail;
+  ExitCode failure = ExitCode::InvalidInput;  // a package that could not be read at all is an I/O failure
 };
 
 Status renderViews(const Scene& scene, const ValidateSettings& settings, std::vector<Image>& views) {
@@ -107,7 +108,9 @@ Status renderViews(const Scene& scene, const ValidateSettings& settings, std::ve
 // Validates one package; a failed check is a verdict, not an error of the run.
 Verdict validateOne(const std::string& file, const std::string& golden, const ValidateSettings& settings,
                     BakeSession& session, std::size_t index) {
-  auto fail = [](const Status& status) { return Verdict{false, status.describe()}; };
+  auto fail = [](const Status& status) {
+    return Verdict{false, status.describe(), status.code() == ExitCode::Io ? ExitCode::Io : ExitCode::InvalidInput};
+  };
   session.addInput(file);
   auto package = glb::read(file);
   if (!package.isOk()) return fail(package.status());
@@ -166,7 +169,7 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
   session.report().setOptions({{"command", "validate"}, {"goldens", settings.goldens}, {"size", settings.size},
                                {"tolerance", {{"rmse", settings.tolerance.rmse}, {"threshold", settings.tolerance.threshold},
                                               {"percentOver", settings.tolerance.percentOver}}}});
-  std::size_t failed = 0;
+  std::size_t failed = 0, unreadable = 0;
   nlohmann::json verdicts = nlohmann::json::array();
   {
     StageTimer timer(&session.report(), "validate");
@@ -176,12 +179,15 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
       std::fprintf(out, "%s %s: %s\n", verdict.pass ? "PASS" : "FAIL", file.c_str(), verdict.detail.c_str());
       verdicts.push_back({{"package", file}, {"pass", verdict.pass}, {"detail", verdict.detail}});
       failed += verdict.pass ? 0 : 1;
+      unreadable += !verdict.pass && verdict.failure == ExitCode::Io ? 1 : 0;
     }
   }
   session.report().setStatistic("verdicts", verdicts);
   Status outcome;
   if (failed > 0) {
-    outcome = invalidInput(std::to_string(failed) + " of " + std::to_string(settings.packages.size()) + " packages failed validation");
+    // Exit 2 when every failed package failed because it could not be read (exit codes, README.md).
+    outcome = Status(unreadable == failed ? ExitCode::Io : ExitCode::InvalidInput,
+                     std::to_string(failed) + " of " + std::to_string(settings.packages.size()) + " packages failed validation");
   }
   return session.finish(outcome);
 }

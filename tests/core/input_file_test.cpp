@@ -27,12 +27,13 @@ TEST(InputFile, DeviceNodesAreRefusedWithoutReading) {
   }
 }
 
-TEST(InputFile, AFifoWithoutWriterIsEmptyNotAHang) {
+TEST(InputFile, AFifoWithoutWriterIsAnIoErrorNotAHang) {
   const fs::path dir = test::freshTempDir("input_fifo_alone");
   ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
-  const Result<std::vector<std::uint8_t>> bytes = readFileBytes(dir / "fifo");
-  ASSERT_TRUE(bytes.isOk()) << bytes.status().describe();
-  EXPECT_TRUE(bytes->empty());
+  const Result<std::vector<std::uint8_t>> bytes = readFileBytes(dir / "fifo");  // waits kPipeIdleSeconds
+  ASSERT_FALSE(bytes.isOk());
+  EXPECT_EQ(bytes.status().code(), ExitCode::Io);
+  EXPECT_NE(bytes.status().message().find("no writer"), std::string::npos) << bytes.status().message();
 }
 
 TEST(InputFile, AFifoIsReadOnceAndItsHashRemembered) {
