@@ -4,7 +4,7 @@
 #   scripts/test.sh --sanitize   ASan + UBSan build with clang (build-sanitize/)
 #   scripts/test.sh --fuzz       clang libFuzzer targets (build-fuzz/), each run briefly: ctest -L fuzz
 #                                (BAKE_FUZZ_SECONDS=600 scripts/test.sh --fuzz: ten minutes each)
-#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline)
+#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline hostile)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
