@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <set>
 #include <unistd.h>
 
 #include "core/atomic_file.h"
@@ -109,12 +110,14 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
   settings.ninjaFile = fs::absolute(command.output).lexically_normal();
   settings.keepUnused = command.pipe.keepUnused;
   if (!command.pipe.cacheDirectory.empty()) settings.cacheDirectory = fs::absolute(command.pipe.cacheDirectory);
-  // The Ninja file must not replace anything the build it describes reads or writes.
+  // The Ninja file must not replace anything the build it describes reads (each file once: thousands
+  // of objects often share a few inputs).
   RunFiles files{{loaded.scene.file.string()}, {command.output.empty() ? std::string() : fs::absolute(command.output).string()}};
+  std::set<std::string> stepInputs;
   for (const Step& step : loaded.plan.steps) {
-    for (const fs::path& path : step.inputs) files.inputs.push_back(path.string());
-    for (const fs::path& path : step.outputs) files.inputs.push_back(path.string());
+    for (const fs::path& path : step.inputs) stepInputs.insert(path.lexically_normal().string());
   }
+  files.inputs.insert(files.inputs.end(), stepInputs.begin(), stepInputs.end());
   BAKE_RETURN_IF_ERROR(planOutputs(files, command.pipe.common));
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
