@@ -18,6 +18,7 @@
 #include "core/limits.h"
 #include "core/output_plan.h"
 #include "core/path.h"
+#include "core/private_copy.h"
 #include "core/temporaries.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -315,21 +316,9 @@ Result<Image> readImageByName(const fs::path& path) {
 // temporary file, removed again whatever happens.
 Result<Image> readThroughFile(std::span<const std::uint8_t> bytes, const std::string& name,
                               const std::string& extension) {
-  std::string pattern = (fs::temp_directory_path() / ("bake-image.XXXXXX" + extension)).string();
-  const int fd = createRegisteredTemporary(pattern, int(extension.size()));
-  if (fd < 0) return ioError(std::string("cannot create a temporary file: ") + std::strerror(errno), {name, ""});
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n <= 0) break;
-    written += std::size_t(n);
-  }
-  ::close(fd);
-  Result<Image> image = written == bytes.size()
-                            ? readImageByName(pattern)
-                            : Result<Image>(ioError("cannot write a temporary file", {name, ""}));
-  ::unlink(pattern.c_str());
-  unregisterTemporary(pattern);
+  PrivateCopy copy;
+  BAKE_RETURN_IF_ERROR(copy.write(bytes, "image", extension, name));
+  Result<Image> image = readImageByName(copy.path());
   if (!image.isOk()) return Status(image.status().code(), image.status().message(), {name, ""});
   return image;
 }

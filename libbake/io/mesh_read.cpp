@@ -28,7 +28,6 @@
 #include <OpenMesh/Core/IO/Options.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/System/omstream.hh>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -44,7 +43,7 @@
 #include "core/input_file.h"
 #include "core/limits.h"
 #include "core/path.h"
-#include "core/temporaries.h"
+#include "core/private_copy.h"
 #include "io/gltf.h"
 #include "io/mesh_scan.h"
 #include "mesh/weld.h"
@@ -292,25 +291,12 @@ class MemoryStreamBuffer : public std::streambuf {
 // OpenMesh's OFF reader learns NOFF/COFF/STOFF from the file's header only when it opens the file by
 // name, so OFF bytes go through a private temporary file (still one open of the input).
 bool parseOffThroughFile(std::string_view bytes, OpenMesh::IO::Options options, SoupImporter& importer) {
-  std::string pattern = (fs::temp_directory_path() / "bake-mesh.XXXXXX.off").string();
-  const int fd = createRegisteredTemporary(pattern, 4);
-  if (fd < 0) return false;
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n <= 0) break;
-    written += std::size_t(n);
-  }
-  ::close(fd);
-  bool ok = false;
-  if (written == bytes.size()) {
-    std::lock_guard<std::mutex> lock(openMeshMutex());
-    QuietOpenMeshLogs quiet;
-    ok = OpenMesh::IO::IOManager().read(pattern, importer, options);
-  }
-  ::unlink(pattern.c_str());
-  unregisterTemporary(pattern);
-  return ok;
+  PrivateCopy copy;
+  const std::span<const std::uint8_t> data(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  if (!copy.write(data, "mesh", ".off", "").isOk()) return false;
+  std::lock_guard<std::mutex> lock(openMeshMutex());
+  QuietOpenMeshLogs quiet;
+  return OpenMesh::IO::IOManager().read(copy.path(), importer, options);
 }
 
 bool parseWithOpenMesh(std::string_view bytes, MeshFormat format, SoupImporter& importer) {
