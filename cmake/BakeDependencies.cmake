@@ -26,8 +26,11 @@ add_library(bake_cholmod INTERFACE)
 target_include_directories(bake_cholmod INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(bake_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
 
-# CGAL is a peer and oracle only (tests and benchmarks), never linked into libbake. Its headers are
-# slow to compile: keep them in few translation units.
-if(BAKE_BUILD_TESTS OR BAKE_BUILD_BENCH)
-  find_package(CGAL REQUIRED)
-endif()
+# CGAL: exact predicates for the independent references a bake measures itself against (libbake,
+# few translation units: its headers are slow to compile), and the geodesic peer of tests and benchmarks.
+find_package(CGAL REQUIRED)
+# CGAL's exact rationals: what libbake links for them (CGAL::CGAL itself would put -frounding-math on
+# every libbake source).
+find_library(BAKE_GMP_LIBRARY gmp REQUIRED)
+find_library(BAKE_MPFR_LIBRARY mpfr REQUIRED)
+set(BAKE_GMP_LIBRARIES ${BAKE_MPFR_LIBRARY} ${BAKE_GMP_LIBRARY})

@@ -179,7 +179,7 @@ Status bake(const Settings& settings, BakeSession& session) {
   warnAboutThinFeatures(state, diagnostics);
   {
     StageTimer timer(&report, "encode");
-    encodeAndMeasure(settings, state, report);
+    encodeAndMeasure(settings, state, report, diagnostics);
   }
   {
     StageTimer timer(&report, "projection");

@@ -13,6 +13,7 @@
 #include "bake_formats/revolution.h"
 #include "revolution/bake_stages.h"
 #include "revolution/profile_geometry.h"
+#include "revolution/reference/exact_reference.h"
 
 namespace bake::revolution {
 namespace {
@@ -84,43 +85,42 @@ void warnAboutThinFeatures(const BakeState& state, Diagnostics& diagnostics) {
   warn("gap", thin.gap);
 }
 
-void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report) {
+void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report, Diagnostics& diagnostics) {
   state.encoded = encodeShapeMap(state.field, settings.encoding);
   const ShapeField decoded = decodeShapeMap(state.encoded, state.field.grid);
   state.margin = measureSafetyMargin(decoded, &state.profile);
   const double texel = state.field.grid.texelSize;
   state.hitEpsilon = format::revolution::kHitEpsilonTexels * texel;
 
-  // Stored against the field (exact for vector profiles) at every texel centre, and near the surface
-  // against the distance to the profile itself.
-  double maxStored = 0, nearSum = 0, nearMax = 0;
-  std::size_t nearCount = 0;
+  // What the package stores, decoded, against the independent exact reference (sign and distance at
+  // every texel centre; reference/exact_reference.h shares no code with the map's filling), and
+  // against the field before encoding.
   const ShapeGrid& grid = state.field.grid;
-  for (int j = 0; j < grid.height; ++j) {
-    for (int i = 0; i < grid.width; ++i) {
-      const std::size_t k = std::size_t(j) * grid.width + i;
-      maxStored = std::max(maxStored, double(std::abs(decoded.distance[k] - state.field.distance[k])));
-      if (std::abs(state.field.distance[k]) > 2 * texel) continue;
-      const double reference = signedDistance(state.profile, {grid.centreR(i), grid.centreH(j)}).distance;
-      const double error = std::abs(decoded.distance[k] - reference);
-      nearSum += error;
-      nearMax = std::max(nearMax, error);
-      ++nearCount;
-    }
-  }
+  double maxStored = 0;
+  for (std::size_t k = 0; k < decoded.distance.size(); ++k)
+    maxStored = std::max(maxStored, double(std::abs(decoded.distance[k] - state.field.distance[k])));
   state.storedErrorTexels = maxStored / texel;
-  const std::string reference = state.exactReference
-                                    ? "exact signed distance to the vector profile at texel centres"
-                                    : "signed distance to the 0.5 iso-contour of the coverage image at texel centres";
-  report.addAccuracy("shape map distance within 2 texels of the surface (texels)", reference,
-                     {{"texels", nearCount},
-                      {"mean", nearCount ? nearSum / double(nearCount) / texel : 0.0},
-                      {"max", nearMax / texel},
+  const reference::FieldCheck check = reference::checkField(state.profile, grid, decoded.distance, settings.common.threads);
+  const std::string source = state.exactReference ? "the vector profile" : "the 0.5 iso-contour of the coverage image";
+  report.addAccuracy("stored shape map signed distance at every texel centre (texels)",
+                     "exact signed distance to " + source +
+                         " (even-odd rule by exact predicates: CGAL orientation, rational circle test)",
+                     {{"texels", check.texels},
+                      {"signErrors", check.signErrors},
+                      {"mean", check.meanError},
+                      {"max", check.maxError},
+                      {"worstTexel", {check.worstI, check.worstJ}},
+                      {"nearSurface", {{"texels", check.nearTexels}, {"mean", check.nearMeanError}, {"max", check.nearMaxError}}},
                       {"encodingMaxError", state.storedErrorTexels}});
   report.setStatistic("safetyMargin", {{"bilinear", state.margin.bilinearOverestimate},
                                        {"quantisation", state.margin.quantisation},
                                        {"total", state.margin.total()},
                                        {"totalTexels", state.margin.total() / texel}});
+  if (check.signErrors > 0) {
+    diagnostics.warning("self-check", std::to_string(check.signErrors) +
+                                          " texels of the shape map have the wrong sign against the exact reference (worst at texel " +
+                                          std::to_string(check.worstI) + ", " + std::to_string(check.worstJ) + ")");
+  }
 }
 
 void measureMarch(const Settings& settings, BakeState& state, Report& report, Diagnostics& diagnostics) {

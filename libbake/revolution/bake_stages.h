@@ -40,7 +40,7 @@ struct BakeState {
 };
 
 void warnAboutThinFeatures(const BakeState& state, Diagnostics& diagnostics);
-void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report);
+void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report, Diagnostics& diagnostics);
 void measureMarch(const Settings& settings, BakeState& state, Report& report, Diagnostics& diagnostics);
 
 void chooseTextureProjection(const Settings& settings, BakeState& state);

@@ -163,7 +163,11 @@ void parityCrossings(const Segment& s, double y, std::vector<double>& out) {
   const double arcSide = s.bulge > 0 ? -1.0 : 1.0;  // sign of cross(d, q - a) on the arc's side
   // cross(d, (x - a.r, y - a.h)) = d.r (y - a.h) - d.h (x - a.r): linear in x.
   if (d.h == 0) {
-    if (arcSide * d.r * (y - s.a.h) <= 0) return;
+    // A horizontal chord: the lens lies wholly above or below its row. On the chord's own row the
+    // half-open rule of the chords (the line read as y + e) decides: the lens counts there when the
+    // arc bulges upwards.
+    const double side = y - s.a.h;
+    if (side == 0 ? arcSide * d.r <= 0 : arcSide * d.r * side <= 0) return;
   } else {
     const double x0 = s.a.r + d.r * (y - s.a.h) / d.h;
     if (arcSide * -d.h > 0) lo = std::max(lo, x0);
