@@ -120,13 +120,21 @@ Status bake(const Settings& settings, BakeSession& session) {
       }
       report.addAccuracy("geodesic distance, field " + std::to_string(f) + " (" + fields[f].name + ")", reference,
                          {{"samples", errors[f].samples},
+                          {"requested", errors[f].requested},
+                          {"referenceRuns", errors[f].referenceRuns},
+                          {"referenceSeconds", errors[f].seconds},
                           {"meanRelative", errors[f].meanRelative},
                           {"maxRelative", errors[f].maxRelative},
                           {"unreachableMismatches", errors[f].unreachableMismatches}});
+      if (exact && errors[f].requested > errors[f].samples)
+        diagnostics.info("field " + std::to_string(f) + ": --verify " + std::to_string(errors[f].requested) +
+                         " checks an exact field at " + std::to_string(errors[f].samples) +
+                         " vertices (at most " + std::to_string(kExactVerifyVertices) +
+                         ": each is an independent exact run; these took " + std::to_string(int(std::lround(errors[f].seconds * 1000))) + " ms)");
       if (!diagnostics.quiet())
-        std::fprintf(stderr, "geobake: field %zu: %s error vs %s at %zu vertices: mean %.3g %%, max %.3g %% of radius\n",
+        std::fprintf(stderr, "geobake: field %zu: %s error vs %s at %zu vertices: mean %.3g %%, max %.3g %% of radius (%zu reference runs, %.2f s)\n",
                      f, methodName(settings.method), exact ? "independent exact runs" : "exact", errors[f].samples, 100.0 * errors[f].meanRelative,
-                     100.0 * errors[f].maxRelative);
+                     100.0 * errors[f].maxRelative, errors[f].referenceRuns, errors[f].seconds);
     }
   }
 

@@ -45,16 +45,23 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
 
 // Error of a field against exact distances at `samples` vertices, relative to the largest exact
 // distance of the field (the geodesic radius from its sources).
+// An exact field is checked at no more vertices than this: each costs a whole exact run.
+constexpr unsigned kExactVerifyVertices = 8;
+
 struct FieldError {
   std::size_t samples = 0;
   double meanRelative = 0.0;
   double maxRelative = 0.0;
   std::size_t unreachableMismatches = 0;  // reachable in one field and not in the other
+  std::size_t requested = 0;              // what --verify asked for
+  std::size_t referenceRuns = 0;          // exact propagations the reference needed
+  double seconds = 0;                     // what the reference cost
 };
 std::vector<FieldError> verifyFields(const Surface& surface, const std::vector<ResolvedField>& fields,
                                      const std::vector<std::vector<double>>& distances, unsigned samples,
                                      unsigned threads);
-// For fields computed by the exact method itself: independent exact runs (backwards from up to 8
+// For fields computed by the exact method itself: independent exact runs (backwards from up to
+// kExactVerifyVertices
 // sampled vertices, or forwards from each face-point source alone) must give the same distances.
 std::vector<FieldError> verifyExactFields(const Surface& surface, const std::vector<ResolvedField>& fields,
                                           const std::vector<std::vector<double>>& distances, unsigned samples,

@@ -4,11 +4,12 @@
 // normalised field is used (seed 003, 5.2.2).
 //
 // An exact field cannot be its own reference, so it is checked by independent runs instead: at up to
-// kExactChecks sampled vertices, the distance to each vertex source is recomputed by propagating
+// kExactVerifyVertices sampled vertices, the distance to each vertex source is recomputed by propagating
 // backwards from the sampled vertex (d(s, v) = d(v, s) through a different set of windows), and the
 // distance to each face-point source by a forward run from that source alone; the field must equal
 // the smallest of them.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -18,8 +19,6 @@
 
 namespace bake::geodesic {
 namespace {
-
-constexpr unsigned kExactChecks = 8;
 
 // Mean and max of differences relative to the field's radius, over the sampled vertices.
 struct RelativeErrors {
@@ -64,7 +63,7 @@ FieldError compare(const std::vector<double>& field, const std::vector<double>& 
 
 // The exact distance at `v` from the field's sources, by independent runs (see the top of the file).
 double independentExactDistance(const Surface& surface, const ResolvedField& field, std::uint32_t v, double bound,
-                                std::vector<std::vector<double>>& forwardRuns) {
+                                std::vector<std::vector<double>>& forwardRuns, std::size_t& runs) {
   double best = kUnreachable;
   ExactOptions options;
   options.maxDistance = bound;
@@ -75,10 +74,14 @@ double independentExactDistance(const Surface& surface, const ResolvedField& fie
       if (backward.empty()) {
         const SurfacePoint from = vertexPoint(surface, v);
         backward = exactDistances(surface, std::span<const SurfacePoint>(&from, 1), options);
+        ++runs;
       }
       best = std::min(best, backward[std::size_t(sourceVertex)]);
     } else {
-      if (forwardRuns[s].empty()) forwardRuns[s] = exactDistances(surface, std::span<const SurfacePoint>(&field.points[s], 1));
+      if (forwardRuns[s].empty()) {
+        forwardRuns[s] = exactDistances(surface, std::span<const SurfacePoint>(&field.points[s], 1));
+        ++runs;
+      }
       best = std::min(best, forwardRuns[s][v]);
     }
   }
@@ -87,20 +90,23 @@ double independentExactDistance(const Surface& surface, const ResolvedField& fie
 
 FieldError checkExactField(const Surface& surface, const ResolvedField& field, const std::vector<double>& distance,
                            unsigned samples) {
+  const auto start = std::chrono::steady_clock::now();
   FieldError error;
+  error.requested = samples;
   // A lone face-point source has no independent run: a forward run would repeat the computation.
   if (field.points.size() == 1 && field.points[0].vertex(surface) < 0) return error;
   const double radius = largestReached(distance);
-  const std::vector<std::uint32_t> chosen = sampleVertices(distance, std::min(samples, kExactChecks));
+  const std::vector<std::uint32_t> chosen = sampleVertices(distance, std::min(samples, kExactVerifyVertices));
   std::vector<std::vector<double>> forwardRuns(field.points.size());
   RelativeErrors errors{radius, 0.0, error};
   for (std::uint32_t v : chosen) {
     // Paths longer than the field's value (plus slack for round-off) cannot be the shortest.
     const double bound = distance[v] * (1.0 + 1e-6) + 1e-12 * (radius + 1.0);
-    const double reference = independentExactDistance(surface, field, v, bound, forwardRuns);
+    const double reference = independentExactDistance(surface, field, v, bound, forwardRuns, error.referenceRuns);
     errors.add(reference == kUnreachable ? radius : std::abs(distance[v] - reference));
   }
   errors.finish(chosen.size());
+  error.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return error;
 }
 
@@ -123,8 +129,12 @@ std::vector<FieldError> verifyFields(const Surface& surface, const std::vector<R
   parallelFor(
       fields.size(), threads,
       [&](std::size_t f) {
+        const auto start = std::chrono::steady_clock::now();
         const std::vector<double> exact = exactDistances(surface, std::span<const SurfacePoint>(fields[f].points));
         errors[f] = compare(distances[f], exact, samples);
+        errors[f].requested = samples;
+        errors[f].referenceRuns = 1;
+        errors[f].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       },
       1);
   return errors;

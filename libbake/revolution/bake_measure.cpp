@@ -109,8 +109,11 @@ void encodeAndMeasure(const Settings& settings, BakeState& state, Report& report
                       {"signErrors", check.signErrors},
                       {"mean", check.meanError},
                       {"max", check.maxError},
-                      {"worstTexel", {check.worstI, check.worstJ}},
-                      {"nearSurface", {{"texels", check.nearTexels}, {"mean", check.nearMeanError}, {"max", check.nearMaxError}}},
+                      {"worstTexelColumn", check.worstI},
+                      {"worstTexelRow", check.worstJ},
+                      {"nearSurfaceTexels", check.nearTexels},
+                      {"nearSurfaceMean", check.nearMeanError},
+                      {"nearSurfaceMax", check.nearMaxError},
                       {"encodingMaxError", state.storedErrorTexels}});
   report.setStatistic("safetyMargin", {{"bilinear", state.margin.bilinearOverestimate},
                                        {"quantisation", state.margin.quantisation},

@@ -70,7 +70,9 @@ int main(int argc, char** argv) {
       ->transform(CLI::CheckedTransformer(encodings))
       ->default_str("float");
   app.add_option("--verify", settings.verifySamples,
-                 "Measure the error against exact distances at K sampled vertices (report and stderr)");
+                 "Measure the error against exact distances at K sampled vertices (report and stderr). Heat and FMM "
+                 "fields: one exact run per field gives the reference at K vertices. Exact fields: at most 8 vertices, "
+                 "each checked by its own independent exact run (about the cost of the bake per vertex)");
   app.add_option("--weld-tolerance", settings.weldTolerance,
                  "Weld positions closer than this fraction of the bounding-box diagonal (0: identical only)")
       ->default_str("0");
