@@ -123,19 +123,18 @@ Result<Loaded> load(const BakeSettings& settings) {
 }
 
 void reportErrors(const QuantizationError& error, const PaintstrokePackage& stored, Report& report) {
-  double positionBound = 0, radiusBound = 0;
-  for (const fmt::Stroke& s : stored.strokes) {
+  double positionBound = 0;
+  for (const fmt::Stroke& s : stored.strokes)
     positionBound = std::max({positionBound, double(s.step[0]) / 2, double(s.step[1]) / 2, double(s.step[2]) / 2});
-    radiusBound = std::max(radiusBound, double(s.origin[3]) / 2);
-  }
   report.addAccuracy("largest error against the input of the stored control points: positions (per axis, uint16 over each stroke's "
                      "box, dequantised in double), radii (uint16 over each stroke's largest radius), colour, opacity and "
-                     "reflectance (unorm8); bounds: half the largest stored step, half the largest radius step, 1/510",
+                     "reflectance (unorm8); bounds: half the largest stored step, half the largest radius step (a whole step for a "
+                     "stroke with a radius below half its step, stored as one step), 1/510",
                      "the validated input control points (double precision)",
                      {{"maxPositionError", error.position},
                       {"positionBound", positionBound},
                       {"maxRadiusError", error.radius},
-                      {"radiusBound", radiusBound},
+                      {"radiusBound", error.radiusBound},
                       {"maxUnormError", error.unorm},
                       {"unormBound", 1.0 / 510}});
 }

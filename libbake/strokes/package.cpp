@@ -270,7 +270,10 @@ Result<glb::Package> buildPaintstrokePackage(const StrokeSet& set, const std::ve
       lo[k] = std::min(lo[k], floatDown(double(sphere[k]) - double(sphere[3])));
       hi[k] = std::max(hi[k], floatUp(double(sphere[k]) + double(sphere[3])));
     }
+    double strokeRadiusBound = 0.5 * double(frame.radiusStep);
     for (const StrokePoint& p : stroke.points) {
+      // Below half a step a radius is stored as one step: off by less than a whole step.
+      if (p.radius < 0.5 * double(frame.radiusStep)) strokeRadiusBound = double(frame.radiusStep);
       const fmt::ControlPoint q = packPoint(p, frame);
       const std::array<double, 4> back = dequantise(q, frame);
       for (int k = 0; k < 3; ++k) {
@@ -282,6 +285,7 @@ Result<glb::Package> buildPaintstrokePackage(const StrokeSet& set, const std::ve
       measured.unorm = std::max({measured.unorm, std::abs(q.opacity / 255.0 - p.opacity), std::abs(q.reflectance / 255.0 - p.reflectance)});
       points.push_back(q);
     }
+    measured.radiusBound = std::max(measured.radiusBound, strokeRadiusBound);
     strokes.push_back(out);
   }
   std::vector<fmt::Style> styles;

@@ -39,6 +39,9 @@ struct QuantizationError {
   double position = 0;  // largest |stored - input| over every axis and point
   double radius = 0;
   double unorm = 0;     // colour, opacity, reflectance
+  // The radius bound that holds for every stored point: radiusStep / 2 of each stroke, or a whole
+  // radiusStep for a stroke with a radius below half a step (stored as one step, as 0 is not allowed).
+  double radiusBound = 0;
 };
 
 // Packs `strokes` (already validated) with their baked shadow table (`shadows`: points x directions,

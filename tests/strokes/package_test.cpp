@@ -344,3 +344,34 @@ TEST(PaintstrokesStiffPackage, ExtremePlacementsKeepTheirBoundsAndFiniteRecords)
 
 }  // namespace
 }  // namespace bake::strokes
+
+namespace bake::strokes {
+namespace {
+
+// A radius below half a quantisation step (1e-6 on a 0.35-thick stroke) is stored as one step: the
+// stated radius bound must cover it, for that stroke and in the package as a whole.
+TEST(PaintstrokesPackage, RadiusBoundHoldsForRadiiBelowHalfAStep) {
+  StrokeSet set;
+  set.styles.resize(1);
+  Stroke stroke;
+  for (double radius : {0.35, 1e-6, 0.2}) {
+    StrokePoint p;
+    p.position = {double(stroke.points.size()), 0, 0};
+    p.radius = radius;
+    stroke.points.push_back(p);
+  }
+  set.strokes.push_back(stroke);
+  const Baked baked = bake(set, {{0, 1, 0}});
+  const double step = 0.35 / fmt::kRadiusLevels;
+  EXPECT_GT(baked.error.radius, 0.5 * step * (1 + 1e-6));  // the thin radius is off by nearly a step
+  EXPECT_LE(baked.error.radius, baked.error.radiusBound);
+  EXPECT_LT(baked.error.radiusBound, 1.01 * step);
+  // Without thin radii the bound is half a step.
+  set.strokes[0].points[1].radius = 0.1;
+  const Baked plain = bake(set, {{0, 1, 0}});
+  EXPECT_LE(plain.error.radius, plain.error.radiusBound);
+  EXPECT_LT(plain.error.radiusBound, 0.51 * step);
+}
+
+}  // namespace
+}  // namespace bake::strokes
