@@ -7,12 +7,11 @@
 #include <vector>
 
 #include "core/status.h"
+#include "io/planar_path.h"
 
 namespace bake::groove {
 
-struct Vec2 {
-  double u = 0, v = 0;
-};
+using Vec2 = planar::Vec2;
 
 // A polyline cross-section: points [b, h] from the right edge (b < 0) to the left edge (b > 0).
 struct Profile {
@@ -97,16 +96,7 @@ Result<GrooveScene> parseGrooveScene(const std::string& jsonText, const std::str
 // Stages (one file each); used by the reader and by the tests.
 
 // A groove's path before flattening: a list of pieces, each a curve of one kind.
-struct PathPiece {
-  enum class Kind { Line, Arc, Spiral, Quadratic, Cubic };
-  Kind kind = Kind::Line;
-  Vec2 p[4];                 // control points (line: 2, quadratic: 3, cubic: 4)
-  Vec2 centre;               // arc / spiral
-  double radius = 0;         // arc; spiral: start radius
-  double startAngle = 0;     // radians
-  double sweep = 0;          // arc / spiral: signed angle swept (radians)
-  double pitch = 0;          // spiral: radius change per turn
-};
+using PathPiece = planar::PathPiece;
 
 // Profile checks and derived bounds (validate.cpp). `where` names the profile for messages.
 Status validateProfile(Profile& profile, const std::string& source);

@@ -15,7 +15,7 @@
 #include "core/json_read.h"
 #include "core/limits.h"
 #include "groove/generators.h"
-#include "groove/path_svg.h"
+#include "io/svg_path.h"
 #include "groove/svg_file.h"
 #include "groove/scene.h"
 
@@ -158,7 +158,7 @@ Result<std::vector<std::vector<PathPiece>>> readPath(const Reader& r, const json
     pieces.push_back(piece);
   } else if (kind == "svg") {
     BAKE_ASSIGN_OR_RETURN(const std::string data, r.string(value, at));
-    return parseSvgPath(data, r.file, at);
+    return svg::parsePathData(data, r.file, at);
   } else {
     return readSvgFilePath(r, value, at);
   }

@@ -1,6 +1,6 @@
-// SVG files as groove input (svg_file.cpp; formats/groove-scene.md "Paths", `svgFile`): the centreline
-// of every shape of a drawing (path, line, polyline, polygon, rect, circle, and ellipses that are
-// circles) becomes a groove, placed in texture space by an origin and a scale.
+// SVG files as groove input (formats/groove-scene.md "Paths", `svgFile`): the centreline of every
+// shape of a drawing (read by io/svg_drawing.h) becomes a groove, placed in texture space by an origin
+// and a scale.
 #pragma once
 
 #include <filesystem>
@@ -19,10 +19,8 @@ struct SvgPlacement {
   double scale = 1;
 };
 
-// One list of pieces per subpath, in document order. Element transforms (matrix, translate, scale,
-// rotate, skewX, skewY) apply; an arc under a transform that is not a similarity would become an
-// ellipse and is refused. Errors name the file, the element (tag, line, id) and, through `where`,
-// the scene's JSON pointer; I/O errors exit 2, bad content 3.
+// One list of pieces per subpath, in document order (see io/svg_drawing.h for what is followed and
+// refused).
 Result<std::vector<std::vector<PathPiece>>> readSvgFile(const std::filesystem::path& file, const SvgPlacement& placement,
                                                         const std::string& where);
 

@@ -1,342 +1,139 @@
-// SVG profile reader (profile.h): the `d` attribute of the file's first <path>, or of the one with
-// the given id, parsed by hand (SVG 1.1, "Paths", section 8.3): M L H V Z as straight pieces, A as a
-// bulge arc when rx == ry (elliptical arcs are refused), C S Q T flattened by recursive de
-// Casteljau subdivision until the control points lie within 1e-4 of the chord (the curve lies in
-// their convex hull, so it is then within 1e-4 of the chord too). Each subpath is a contour; Z
-// closes it. SVG's y grows downwards, so h = -y, which also turns SVG's positive-angle sweep
-// (clockwise on screen) into a clockwise arc in (r, h): a negative bulge.
-// The XML is read by a small scanner: tags and their quoted attributes, nothing else.
-#include <cctype>
+// SVG profile reader (profile.h) over the library's SVG reader (io/svg_drawing.h): the shape with the
+// given id, or else the first <path> (or the first shape when there is no path), with every element
+// transform applied and the root's viewBox mapped to its width and height (SVG 1.1 §7.7, default
+// xMidYMid meet), so the profile is in the unit of the root's width and height (user units when it
+// has none). SVG's y grows downwards, so h = -y; the map reverses the sense of arcs, which the reader
+// turns into the sign of the bulge. Lines and arcs are kept exactly; quadratic and cubic Béziers are
+// flattened by halving (de Casteljau) until the control points lie within 1e-4 of the chord and over
+// its span (the curve lies in their convex hull, so it is then within 1e-4 of the chord too). Each
+// subpath is a contour, closed when it ends where it started.
 #include <cmath>
-#include <numbers>
-#include <sstream>
 
-#include "core/atomic_file.h"
+#include "io/svg_drawing.h"
 #include "revolution/profile.h"
 
 namespace bake::revolution {
 namespace {
 
+using svg::PathPiece;
+using svg::Vec2;
+
 constexpr double kCurveTolerance = 1e-4;
 
-struct Vec {
-  double x = 0, y = 0;
-};
-
-// Attributes of the tag starting at `open` (just after "<path").
-bool readAttributes(const std::string& text, std::size_t from, std::vector<std::pair<std::string, std::string>>& out) {
-  std::size_t k = from;
-  while (k < text.size()) {
-    while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
-    if (k >= text.size()) return false;
-    if (text[k] == '>' || text[k] == '/') return true;
-    const std::size_t nameStart = k;
-    while (k < text.size() && text[k] != '=' && !std::isspace(static_cast<unsigned char>(text[k])) && text[k] != '>') ++k;
-    const std::string name = text.substr(nameStart, k - nameStart);
-    while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
-    if (k >= text.size() || text[k] != '=') {
-      out.push_back({name, ""});
-      continue;
-    }
-    ++k;
-    while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
-    if (k >= text.size() || (text[k] != '"' && text[k] != '\'')) return false;
-    const char quote = text[k++];
-    const std::size_t end = text.find(quote, k);
-    if (end == std::string::npos) return false;
-    out.push_back({name, text.substr(k, end - k)});
-    k = end + 1;
-  }
-  return false;
+// The root's user space to the viewport: the viewBox scaled uniformly to fit width x height and
+// centred (the default preserveAspectRatio), then y flipped.
+Result<svg::Affine> profilePlacement(const svg::Frame& frame, const std::string& path) {
+  const svg::Affine flip{1, 0, 0, -1, 0, 0};
+  const Location at{path, frame.rootElement};
+  for (const std::string* text : {&frame.widthText, &frame.heightText})
+    if (!text->empty() && text->back() != '%' && !(text == &frame.widthText ? frame.width : frame.height))
+      return unsupported("the root's width or height \"" + *text + "\" is not a positive length in px, mm, cm, in, pt or pc", at);
+  if (!frame.viewBox || !frame.width || !frame.height) return flip;
+  if (frame.width->unit != frame.height->unit)
+    return unsupported("the root's width and height use different units (" + frame.width->unit + ", " + frame.height->unit + ")", at);
+  const std::string& aspect = frame.preserveAspectRatio;
+  if (!aspect.empty() && aspect != "xMidYMid" && aspect != "xMidYMid meet")
+    return unsupported("preserveAspectRatio=\"" + aspect + "\" is not supported (only the default, xMidYMid meet)", at);
+  const auto& box = *frame.viewBox;
+  const double scale = std::min(frame.width->value / box[2], frame.height->value / box[3]);
+  const double tx = 0.5 * (frame.width->value - scale * box[2]) - scale * box[0];
+  const double ty = 0.5 * (frame.height->value - scale * box[3]) - scale * box[1];
+  return svg::Affine{scale, 0, 0, scale, tx, ty}.then(flip);
 }
 
-class PathParser {
+Point2 toProfile(Vec2 p) { return {p.u, p.v}; }
+
+class ContourBuilder {
  public:
-  PathParser(const std::string& d, std::string path, std::string element)
-      : d_(d), path_(std::move(path)), element_(std::move(element)) {}
-
-  Result<Profile> parse() {
-    Profile profile;
-    profile.source = path_;
-    char command = 0;
-    while (true) {
-      skipSeparators();
-      if (k_ >= d_.size()) break;
-      if (std::isalpha(static_cast<unsigned char>(d_[k_]))) {
-        command = d_[k_++];
-        ++commandIndex_;
-      } else if (command == 0) {
-        return error("path data must start with a command");
-      } else if (command == 'M') {
-        command = 'L';  // extra pairs after a moveto are linetos
-      } else if (command == 'm') {
-        command = 'l';
-      } else if (command == 'Z' || command == 'z') {
-        return error("numbers after Z");
-      }
-      BAKE_RETURN_IF_ERROR(apply(command));
-    }
-    finishSubpath(false);
-    profile.contours = std::move(contours_);
-    if (profile.contours.empty()) return invalidInput("path draws nothing", {path_, element_});
-    return profile;
-  }
-
- private:
-  Status error(const std::string& message) const {
-    return invalidInput(message, {path_, element_ + ", command " + std::to_string(commandIndex_) + " (character " +
-                                             std::to_string(k_) + ")"});
-  }
-
-  void skipSeparators() {
-    while (k_ < d_.size() && (std::isspace(static_cast<unsigned char>(d_[k_])) || d_[k_] == ',')) ++k_;
-  }
-
-  Status number(double& value) {
-    skipSeparators();
-    const std::size_t start = k_;
-    if (k_ < d_.size() && (d_[k_] == '+' || d_[k_] == '-')) ++k_;
-    bool digits = false, dot = false;
-    while (k_ < d_.size() && (std::isdigit(static_cast<unsigned char>(d_[k_])) || (d_[k_] == '.' && !dot))) {
-      if (d_[k_] == '.') dot = true;
-      else digits = true;
-      ++k_;
-    }
-    if (digits && k_ < d_.size() && (d_[k_] == 'e' || d_[k_] == 'E')) {
-      std::size_t e = k_ + 1;
-      if (e < d_.size() && (d_[e] == '+' || d_[e] == '-')) ++e;
-      if (e < d_.size() && std::isdigit(static_cast<unsigned char>(d_[e]))) {
-        k_ = e;
-        while (k_ < d_.size() && std::isdigit(static_cast<unsigned char>(d_[k_]))) ++k_;
-      }
-    }
-    if (!digits) {
-      k_ = start;
-      return error("expected a number");
-    }
-    value = std::strtod(d_.substr(start, k_ - start).c_str(), nullptr);
-    if (!std::isfinite(value)) return error("number is not finite");
-    return Status::ok();
-  }
-
-  Status flag(bool& value) {
-    skipSeparators();
-    if (k_ >= d_.size() || (d_[k_] != '0' && d_[k_] != '1')) return error("expected an arc flag 0 or 1");
-    value = d_[k_++] == '1';
-    return Status::ok();
-  }
-
-  Status point(bool relative, Vec& p) {
-    BAKE_RETURN_IF_ERROR(number(p.x));
-    BAKE_RETURN_IF_ERROR(number(p.y));
-    if (relative) {
-      p.x += current_.x;
-      p.y += current_.y;
-    }
-    return Status::ok();
-  }
-
-  static Point2 toProfile(Vec p) { return {p.x, -p.y}; }
-
-  void addPiece(Vec to, double bulge) {
-    if (!open_) startSubpath(current_);
+  void line(Vec2 to, double bulge = 0) {
     Segment s;
     s.a = toProfile(current_);
     s.b = toProfile(to);
     s.bulge = bulge;
-    pieces_.push_back(s);
+    segments_.push_back(s);
     current_ = to;
   }
 
-  void startSubpath(Vec at) {
-    finishSubpath(false);
-    open_ = true;
-    start_ = at;
-    current_ = at;
-  }
-
-  void finishSubpath(bool closed) {
-    if (open_ && !pieces_.empty()) {
-      Contour contour;
-      contour.segments = std::move(pieces_);
-      contour.closed = closed;
-      contours_.push_back(std::move(contour));
-    }
-    pieces_.clear();
-    open_ = false;
-  }
-
-  // Cubic Bezier flattened by halving until flat.
-  void cubic(Vec p0, Vec p1, Vec p2, Vec p3, int depth) {
-    const double cx = p3.x - p0.x, cy = p3.y - p0.y, chord = std::hypot(cx, cy);
-    auto off = [&](Vec q) {
-      if (chord == 0) return std::hypot(q.x - p0.x, q.y - p0.y);
-      return std::abs((q.x - p0.x) * cy - (q.y - p0.y) * cx) / chord;
+  // Cubic Bézier flattened by halving until flat.
+  void cubic(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, int depth) {
+    const double cx = p3.u - p0.u, cy = p3.v - p0.v, chord = std::hypot(cx, cy);
+    auto off = [&](Vec2 q) {
+      if (chord == 0) return std::hypot(q.u - p0.u, q.v - p0.v);
+      return std::abs((q.u - p0.u) * cy - (q.v - p0.v) * cx) / chord;
     };
     // Within the chord's span too, so a control point far along the line still splits.
-    auto along = [&](Vec q) {
+    auto along = [&](Vec2 q) {
       if (chord == 0) return true;
-      const double t = ((q.x - p0.x) * cx + (q.y - p0.y) * cy) / (chord * chord);
+      const double t = ((q.u - p0.u) * cx + (q.v - p0.v) * cy) / (chord * chord);
       return t >= -kCurveTolerance / chord && t <= 1 + kCurveTolerance / chord;
     };
     if (depth >= 24 || (off(p1) <= kCurveTolerance && off(p2) <= kCurveTolerance && along(p1) && along(p2))) {
-      addPiece(p3, 0.0);
+      line(p3);
       return;
     }
-    auto mid = [](Vec a, Vec b) { return Vec{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; };
-    const Vec a = mid(p0, p1), b = mid(p1, p2), c = mid(p2, p3);
-    const Vec ab = mid(a, b), bc = mid(b, c), m = mid(ab, bc);
+    auto mid = [](Vec2 a, Vec2 b) { return Vec2{0.5 * (a.u + b.u), 0.5 * (a.v + b.v)}; };
+    const Vec2 a = mid(p0, p1), b = mid(p1, p2), c = mid(p2, p3);
+    const Vec2 ab = mid(a, b), bc = mid(b, c), m = mid(ab, bc);
     cubic(p0, a, ab, m, depth + 1);
     cubic(m, bc, c, p3, depth + 1);
   }
 
-  Status arc(bool relative) {
-    double rx, ry, rotation;
-    bool large, sweep;
-    Vec to;
-    BAKE_RETURN_IF_ERROR(number(rx));
-    BAKE_RETURN_IF_ERROR(number(ry));
-    BAKE_RETURN_IF_ERROR(number(rotation));
-    BAKE_RETURN_IF_ERROR(flag(large));
-    BAKE_RETURN_IF_ERROR(flag(sweep));
-    BAKE_RETURN_IF_ERROR(point(relative, to));
-    rx = std::abs(rx);
-    ry = std::abs(ry);
-    const double chord = std::hypot(to.x - current_.x, to.y - current_.y);
-    if (chord == 0) return Status::ok();  // SVG: an arc to the current point is omitted
-    if (rx == 0 || ry == 0) {
-      addPiece(to, 0.0);  // SVG: a zero radius draws a line
-      return Status::ok();
-    }
-    if (std::abs(rx - ry) > 1e-9 * std::max(rx, ry))
-      return unsupported("elliptical arcs are not supported (rx " + std::to_string(rx) + " != ry " +
-                             std::to_string(ry) + ")",
-                         {path_, element_ + ", command " + std::to_string(commandIndex_)});
-    // Too small a radius is scaled up until the chord fits (SVG implementation notes, F.6.6).
-    const double radius = std::max(rx, 0.5 * chord);
-    const double minor = 2.0 * std::asin(std::min(1.0, chord / (2.0 * radius)));
-    const double angle = large ? 2.0 * std::numbers::pi - minor : minor;
-    const double bulge = std::tan(angle / 4.0);
-    addPiece(to, sweep ? -bulge : bulge);
-    return Status::ok();
-  }
-
-  Status apply(char command) {
-    const bool relative = std::islower(static_cast<unsigned char>(command)) != 0;
-    Vec p;
-    switch (std::toupper(static_cast<unsigned char>(command))) {
-      case 'M':
-        BAKE_RETURN_IF_ERROR(point(relative, p));
-        startSubpath(p);
-        lastControl_ = p;
-        return Status::ok();
-      case 'L':
-        BAKE_RETURN_IF_ERROR(point(relative, p));
-        addPiece(p, 0.0);
-        break;
-      case 'H': {
-        double x;
-        BAKE_RETURN_IF_ERROR(number(x));
-        addPiece({relative ? current_.x + x : x, current_.y}, 0.0);
-        break;
-      }
-      case 'V': {
-        double y;
-        BAKE_RETURN_IF_ERROR(number(y));
-        addPiece({current_.x, relative ? current_.y + y : y}, 0.0);
-        break;
-      }
-      case 'Z':
-        if (open_) {
-          if (current_.x != start_.x || current_.y != start_.y) addPiece(start_, 0.0);
-          const Vec start = start_;
-          finishSubpath(true);
-          current_ = start;
-        }
-        lastControl_ = current_;
-        return Status::ok();
-      case 'A':
-        BAKE_RETURN_IF_ERROR(arc(relative));
-        break;
-      case 'C': case 'S': {
-        Vec c1, c2, end;
-        const char upper = char(std::toupper(static_cast<unsigned char>(command)));
-        if (upper == 'C') BAKE_RETURN_IF_ERROR(point(relative, c1));
-        else c1 = previousCubic_ ? Vec{2 * current_.x - lastControl_.x, 2 * current_.y - lastControl_.y} : current_;
-        BAKE_RETURN_IF_ERROR(point(relative, c2));
-        BAKE_RETURN_IF_ERROR(point(relative, end));
-        cubic(current_, c1, c2, end, 0);
-        lastControl_ = c2;
-        previousCubic_ = true;
-        previousQuadratic_ = false;
-        return Status::ok();
-      }
-      case 'Q': case 'T': {
-        Vec q, end;
-        const char upper = char(std::toupper(static_cast<unsigned char>(command)));
-        if (upper == 'Q') BAKE_RETURN_IF_ERROR(point(relative, q));
-        else q = previousQuadratic_ ? Vec{2 * current_.x - lastControl_.x, 2 * current_.y - lastControl_.y} : current_;
-        BAKE_RETURN_IF_ERROR(point(relative, end));
-        const Vec start = current_;
+  void piece(const PathPiece& p) {
+    switch (p.kind) {
+      case PathPiece::Kind::Line: line(p.p[1]); break;
+      // bulge = tan(sweep / 4), positive counter-clockwise in (r, h): the sweep after the map.
+      case PathPiece::Kind::Arc: line(p.p[1], std::tan(p.sweep / 4)); break;
+      case PathPiece::Kind::Quadratic: {
         // The same curve as a cubic: controls two thirds of the way to the quadratic's control.
-        const Vec c1{start.x + 2.0 / 3.0 * (q.x - start.x), start.y + 2.0 / 3.0 * (q.y - start.y)};
-        const Vec c2{end.x + 2.0 / 3.0 * (q.x - end.x), end.y + 2.0 / 3.0 * (q.y - end.y)};
-        cubic(start, c1, c2, end, 0);
-        lastControl_ = q;
-        previousQuadratic_ = true;
-        previousCubic_ = false;
-        return Status::ok();
+        const Vec2 s = p.p[0], q = p.p[1], e = p.p[2];
+        cubic(s, {s.u + 2.0 / 3.0 * (q.u - s.u), s.v + 2.0 / 3.0 * (q.v - s.v)},
+              {e.u + 2.0 / 3.0 * (q.u - e.u), e.v + 2.0 / 3.0 * (q.v - e.v)}, e, 0);
+        break;
       }
-      default:
-        return error(std::string("unknown path command '") + command + "'");
+      case PathPiece::Kind::Cubic: cubic(p.p[0], p.p[1], p.p[2], p.p[3], 0); break;
+      case PathPiece::Kind::Spiral: break;  // SVG path data has none
     }
-    previousCubic_ = previousQuadratic_ = false;
-    lastControl_ = current_;
-    return Status::ok();
   }
 
-  const std::string& d_;
-  std::string path_, element_;
-  std::size_t k_ = 0;
-  int commandIndex_ = -1;
-  Vec current_, start_, lastControl_;
-  bool open_ = false, previousCubic_ = false, previousQuadratic_ = false;
-  std::vector<Segment> pieces_;
-  std::vector<Contour> contours_;
+  Contour contour(const std::vector<PathPiece>& pieces) {
+    segments_.clear();
+    current_ = pieces.front().p[0];
+    const Vec2 start = current_;
+    for (const PathPiece& p : pieces) piece(p);
+    Contour contour;
+    contour.closed = current_.u == start.u && current_.v == start.v;
+    contour.segments = std::move(segments_);
+    return contour;
+  }
+
+ private:
+  Vec2 current_;
+  std::vector<Segment> segments_;
 };
+
+const svg::Shape* chooseShape(const std::vector<svg::Shape>& shapes, const std::string& id) {
+  for (const svg::Shape& shape : shapes)
+    if (id.empty() ? shape.tag == "path" : shape.id == id) return &shape;
+  return id.empty() && !shapes.empty() ? &shapes.front() : nullptr;
+}
 
 }  // namespace
 
 Result<Profile> readProfileSvg(const std::string& path, const std::string& pathId) {
-  // readFileBytes refuses a directory (an ifstream reads one as an empty file).
-  BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  const std::string text(bytes.begin(), bytes.end());
-  std::size_t at = 0;
-  while ((at = text.find("<path", at)) != std::string::npos) {
-    const std::size_t after = at + 5;
-    at = after;
-    if (after < text.size() && !std::isspace(static_cast<unsigned char>(text[after])) && text[after] != '/' &&
-        text[after] != '>')
-      continue;  // another tag name that starts with "path"
-    std::vector<std::pair<std::string, std::string>> attributes;
-    if (!readAttributes(text, after, attributes))
-      return invalidInput("malformed <path> tag", {path, "character " + std::to_string(after)});
-    std::string id, d;
-    bool hasD = false;
-    for (const auto& [name, value] : attributes) {
-      if (name == "id") id = value;
-      if (name == "d") {
-        d = value;
-        hasD = true;
-      }
-    }
-    if (!pathId.empty() && id != pathId) continue;
-    const std::string element = id.empty() ? "path" : "path '" + id + "'";
-    if (!hasD) return invalidInput("<path> has no d attribute", {path, element});
-    return PathParser(d, path, element).parse();
+  auto place = [&](const svg::Frame& frame) { return profilePlacement(frame, path); };
+  BAKE_ASSIGN_OR_RETURN(const std::vector<svg::Shape> shapes, svg::readDrawing(path, "", place));
+  const svg::Shape* shape = chooseShape(shapes, pathId);
+  if (!shape) {
+    if (!pathId.empty()) return invalidInput("no shape with id '" + pathId + "'", {path, ""});
+    return invalidInput("the drawing has no shape to read a profile from", {path, ""});
   }
-  if (!pathId.empty()) return invalidInput("no <path> with id '" + pathId + "'", {path, ""});
-  return invalidInput("no <path> element", {path, ""});
+  Profile profile;
+  profile.source = path;
+  ContourBuilder builder;
+  for (const std::vector<PathPiece>& pieces : shape->subpaths)
+    if (!pieces.empty()) profile.contours.push_back(builder.contour(pieces));
+  if (profile.contours.empty()) return invalidInput(shape->element + " draws nothing", {path, ""});
+  return profile;
 }
 
 }  // namespace bake::revolution

@@ -157,7 +157,7 @@ TEST(ReadProfile, SvgArcsBecomeBulgesWithYFlipped) {
   // A half circle of radius 1 about the origin, right of the axis, drawn in SVG's y-down frame
   // with a relative arc; then a second path that the id selects.
   const std::string path = writeFile("p.svg", R"(<?xml version="1.0"?>
-<svg xmlns="http://www.w3.org/2000/svg"><pathology/>
+<svg xmlns="http://www.w3.org/2000/svg" xmlns:ink="http://example.com/editor"><ink:pathology/>
   <path d="M0,-1 A1 1 0 0 1 0,1 Z" id='sphere'/>
   <path id="rod" d="m 1 0 v -2 h 0.5 V 0 z"/>
 </svg>)");
@@ -222,7 +222,56 @@ TEST(ReadProfile, TheThreeVaseFilesDescribeTheSameSolid) {
 TEST(ReadProfile, SvgEllipticalArcsAreRefused) {
   auto profile = readProfileSvg(writeFile("e.svg", "<svg><path d='M0 0 A 2 1 0 0 1 0 2'/></svg>"));
   ASSERT_FALSE(profile.isOk());
-  EXPECT_NE(profile.status().message().find("elliptical arcs are not supported"), std::string::npos);
+  EXPECT_NE(profile.status().message().find("elliptical arc"), std::string::npos) << profile.status().describe();
+}
+
+// One SVG reader for the library (io/svg_drawing.h): element transforms and the root's viewBox apply
+// (a path under scale(0.01) is 100 times smaller), units come from the root's width and height, and
+// what the reader cannot follow is an error naming the element, never skipped.
+TEST(ReadProfile, SvgTransformsAndViewBoxApply) {
+  // Each writeFile starts a fresh folder: read each file before writing the next.
+  const std::string plain = "<svg><path d='M 0 0 L 100 0 L 100 -200 L 0 -200 Z'/></svg>";
+  const std::string scaled = "<svg><g transform='scale(0.01)'><path d='M 0 0 L 100 0 L 100 -200 L 0 -200 Z'/></g></svg>";
+  // 1000 user units across shown 10 mm wide: the profile is in mm, a hundredth of a millimetre per
+  // user unit, and the viewBox's top (y = -2000) is the viewport's y = 0: y = -200 lands at 18 mm.
+  const std::string viewBox =
+      "<svg width='10mm' height='20mm' viewBox='0 -2000 1000 2000'><path d='M 0 0 L 100 0 L 100 -200 L 0 -200 Z'/></svg>";
+  std::vector<std::string> warnings;
+  const double expectedTop[] = {200, 2, -18};
+  const double expectedRight[] = {100, 1, 1};
+  int k = 0;
+  for (const std::string& text : {plain, scaled, viewBox}) {
+    const std::string file = writeFile("drawing.svg", text);
+    auto profile = readProfileSvg(file);
+    ASSERT_TRUE(profile.isOk()) << profile.status().describe();
+    ASSERT_TRUE(validateProfile(*profile, warnings).isOk()) << file;
+    const Bounds2 bounds = profileBounds(*profile);
+    EXPECT_NEAR(bounds.hMax, expectedTop[k], 1e-9) << file;
+    EXPECT_NEAR(bounds.rMax, expectedRight[k], 1e-9) << file;
+    ++k;
+  }
+  // A circle under a rotation and a uniform scale stays a circle; the bulges follow the y flip.
+  auto circle = readProfileSvg(writeFile("circle.svg", "<svg><circle transform='rotate(30) scale(2)' cx='1' cy='0' r='0.5'/></svg>"));
+  ASSERT_TRUE(circle.isOk()) << circle.status().describe();
+  ASSERT_TRUE(validateProfile(*circle, warnings).isOk());
+  const double c = 3.14159265358979323846 / 6;
+  const Point2 centre{2 * std::cos(c), -2 * std::sin(c)};
+  EXPECT_NEAR(signedDistance(*circle, {centre.r, centre.h}).distance, -1.0, 1e-9);
+  EXPECT_NEAR(signedDistance(*circle, {centre.r + 1.5, centre.h}).distance, 0.5, 1e-9);
+}
+
+TEST(ReadProfile, SvgConstructsItCannotFollowAreErrors) {
+  auto expectError = [&](const std::string& name, const std::string& text, const std::string& part, const std::string& id = "") {
+    auto profile = readProfileSvg(writeFile(name, text), id);
+    ASSERT_FALSE(profile.isOk()) << name;
+    EXPECT_NE(profile.status().describe().find(part), std::string::npos) << profile.status().describe();
+  };
+  expectError("text.svg", "<svg xmlns='http://www.w3.org/2000/svg'><text>vase</text><path d='M 0 0 L 1 0 L 1 1 Z'/></svg>", "<text> (line 1)");
+  expectError("skew.svg", "<svg><path transform='skewX(20)' d='M 0 0 A 1 1 0 0 1 2 0 Z'/></svg>", "not a similarity");
+  expectError("unit.svg", "<svg width='3em' height='3em' viewBox='0 0 1 1'><path d='M 0 0 L 1 0 L 1 1 Z'/></svg>", "3em");
+  expectError("aspect.svg", "<svg width='1' height='2' viewBox='0 0 1 1' preserveAspectRatio='none'><path d='M 0 0 L 1 0 L 1 1 Z'/></svg>",
+              "preserveAspectRatio");
+  expectError("missing.svg", "<svg><path id='a' d='M 0 0 L 1 0 L 1 1 Z'/></svg>", "no shape with id", "b");
 }
 
 

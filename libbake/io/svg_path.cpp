@@ -1,16 +1,16 @@
-// SVG 1.1 path data (https://www.w3.org/TR/SVG11/paths.html#PathData) in texture units: M/m L/l
+// SVG 1.1 path data (https://www.w3.org/TR/SVG11/paths.html#PathData) in the caller's units: M/m L/l
 // H/h V/v C/c S/s Q/q T/t A/a Z/z. Arcs must be circular (rx == ry; the rotation is then
 // irrelevant); their centre follows the endpoint-to-centre conversion of SVG 1.1 appendix F.6.5, with
-// a too-small radius scaled up as F.6.6 says. Every subpath becomes its own groove; Z closes it.
+// a too-small radius scaled up as F.6.6 says. Every subpath becomes its own list of pieces; Z closes it.
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
 
-#include "groove/path_svg.h"
+#include "io/svg_path.h"
 
-namespace bake::groove {
+namespace bake::svg {
 namespace {
 
 struct Tokens {
@@ -24,14 +24,23 @@ struct Tokens {
     skip();
     return i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '-' || s[i] == '+' || s[i] == '.');
   }
+  std::string problem;  // why the last number failed, for the message
   bool number(double& out) {
-    if (!atNumber()) return false;
+    if (!atNumber()) return expected();
     const char* begin = s.c_str() + i;
     char* end = nullptr;
     out = std::strtod(begin, &end);
-    if (end == begin) return false;
+    if (end == begin) return expected();
+    if (!std::isfinite(out)) {
+      problem = "the number at character " + std::to_string(i) + " is not finite";
+      return false;
+    }
     i += std::size_t(end - begin);
-    return std::isfinite(out);
+    return true;
+  }
+  bool expected() {
+    problem = i < s.size() ? "expected a number at character " + std::to_string(i) : "the path data ends early";
+    return false;
   }
   bool flag(bool& out) {
     skip();
@@ -51,8 +60,8 @@ std::string showPoint(Vec2 p) {
 
 }  // namespace
 
-Result<std::vector<std::vector<PathPiece>>> parseSvgPath(const std::string& data, const std::string& source,
-                                                         const std::string& where) {
+Result<std::vector<std::vector<PathPiece>>> parsePathData(const std::string& data, const std::string& source,
+                                                          const std::string& where) {
   std::vector<std::vector<PathPiece>> subpaths;
   std::vector<PathPiece> current;
   Tokens t{data};
@@ -65,7 +74,8 @@ Result<std::vector<std::vector<PathPiece>>> parseSvgPath(const std::string& data
     current.clear();
   };
   auto fail = [&](const std::string& message) {
-    return invalidInput("svg path command " + std::to_string(commandIndex) + " at " + showPoint(cur) + ": " + message,
+    const std::string why = t.problem.empty() ? "" : " (" + t.problem + ")";
+    return invalidInput("svg path command " + std::to_string(commandIndex) + " at " + showPoint(cur) + ": " + message + why,
                         {source, where});
   };
   auto line = [&](Vec2 to) {
@@ -194,6 +204,8 @@ Result<std::vector<std::vector<PathPiece>>> parseSvgPath(const std::string& data
         if (sweep && delta < 0) delta += 2 * std::numbers::pi;
         if (!sweep && delta > 0) delta -= 2 * std::numbers::pi;
         p.sweep = delta;
+        p.p[0] = cur;
+        p.p[1] = to;
         current.push_back(p);
         cur = to;  // exactly the given end point
         break;
@@ -209,4 +221,4 @@ Result<std::vector<std::vector<PathPiece>>> parseSvgPath(const std::string& data
   return subpaths;
 }
 
-}  // namespace bake::groove
+}  // namespace bake::svg
