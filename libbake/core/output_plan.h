@@ -39,6 +39,15 @@ bool outputsPlanned();
 bool isPlannedOutput(const std::filesystem::path& target);
 // Drops the plan (for a process that runs several bakes, such as a test).
 void forgetOutputPlan();
+// Forgets the plan when the operation that made it ends, so a later operation in the same process (a
+// library user's second bake, a test) starts unplanned.
+class OutputPlanScope {
+ public:
+  OutputPlanScope() = default;
+  OutputPlanScope(const OutputPlanScope&) = delete;
+  OutputPlanScope& operator=(const OutputPlanScope&) = delete;
+  ~OutputPlanScope() { forgetOutputPlan(); }
+};
 
 // Usage error when one of `outputs` is the same file as one of `inputs`, or as another output.
 Status checkDistinctFiles(const std::vector<std::filesystem::path>& inputs,

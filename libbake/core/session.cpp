@@ -159,6 +159,7 @@ Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions
   // the session's own checks at commit still keep every input.
   Result<RunFiles> run = files();
   if (!run.isOk()) return bake();
+  const OutputPlanScope planScope;
   if (Status planned = planOutputs(*run, common); !planned.isOk()) {
     // The failure is still reported in --report, when that file itself is safe to write.
     if (reportIsSafe(*run, common)) static_cast<void>(BakeSession(tool, common, diagnostics).finish(planned));

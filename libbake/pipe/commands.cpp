@@ -118,6 +118,7 @@ Status runNinjaCommand(const NinjaCommand& command, Diagnostics& diagnostics) {
     for (const fs::path& path : step.inputs) stepInputs.insert(path.lexically_normal().string());
   }
   files.inputs.insert(files.inputs.end(), stepInputs.begin(), stepInputs.end());
+  const OutputPlanScope planScope;
   BAKE_RETURN_IF_ERROR(planOutputs(files, command.pipe.common));
   BakeSession session("bakepipe", command.pipe.common, diagnostics);
   session.addInput(loaded.scene.file);
@@ -137,6 +138,7 @@ Status runAssembleCommand(const AssembleCommand& command, Diagnostics& diagnosti
   const fs::path output = command.output.empty()
                               ? defaultAssembledPackage(loaded.plan.packages.front().parent_path(), loaded.scene.name)
                               : fs::absolute(command.output);
+  const OutputPlanScope planScope;
   {
     RunFiles files{{loaded.scene.file.string()}, {output.string()}};
     for (const fs::path& package : loaded.plan.packages) files.inputs.push_back(package.string());

@@ -1,14 +1,16 @@
-// The package of a revolbake run (formats/revolution.md): one node with the shape box (a plain box mesh
-// any glTF viewer draws), its material carrying BAKE_revolution with the shape map, the optional
+// The package of a revolbake run (formats/revolution.md): one node with a coarse revolved mesh of the
+// profile (what any glTF viewer draws), its material carrying BAKE_revolution with the shape map, the optional
 // displacement and arc-length maps in bufferViews aligned for direct upload, the march parameters and
 // the projection, and an optional embedded PNG as the standard base colour texture.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "bake_formats/revolution.h"
 #include "core/atomic_file.h"
 #include "revolution/bake_stages.h"
+#include "revolution/profile_geometry.h"
 
 namespace bake::revolution {
 namespace {
@@ -16,38 +18,77 @@ namespace {
 using nlohmann::json;
 namespace fmt = format::revolution;
 
-// A box with outward normals: 6 faces x 4 corners, so every viewer shades it flat.
-glb::Mesh shapeBox(double radius, double hMin, double hMax) {
-  std::vector<float> positions, normals;
+// What a viewer without BAKE_revolution draws: the profile revolved coarsely (its pieces flattened
+// within 1/200 of the profile's size, 48 steps round the axis), with outward normals and the
+// cylindrical texture coordinates (u round the axis, v up the shape map's height, both repeated as
+// the package says), so the base colour texture shows on it. The runtime ray-marches the shape map's
+// own box and never reads this mesh.
+constexpr int kFallbackSteps = 48;
+constexpr std::size_t kFallbackMaxEdges = 4096;
+
+std::vector<std::pair<Point2, Point2>> fallbackEdges(const Profile& profile, double tolerance) {
+  std::vector<std::pair<Point2, Point2>> edges;
+  std::vector<Point2> points;
+  for (const Contour& contour : profile.contours)
+    for (const Segment& s : contour.segments) {
+      if (s.onAxis) continue;
+      points.assign(1, s.a);
+      flattenSegment(s, tolerance, points);
+      for (std::size_t k = 0; k + 1 < points.size(); ++k)
+        if (points[k].r != points[k + 1].r || points[k].h != points[k + 1].h) edges.push_back({points[k], points[k + 1]});
+    }
+  // A profile of very many pieces: every n-th edge's ends joined (only a preview).
+  if (edges.size() > kFallbackMaxEdges) {
+    const std::size_t stride = (edges.size() + kFallbackMaxEdges - 1) / kFallbackMaxEdges;
+    std::vector<std::pair<Point2, Point2>> coarse;
+    for (std::size_t k = 0; k < edges.size(); k += stride)
+      coarse.push_back({edges[k].first, edges[std::min(edges.size(), k + stride) - 1].second});
+    edges = std::move(coarse);
+  }
+  return edges;
+}
+
+glb::Mesh revolvedFallback(const Profile& profile, const ShapeGrid& grid, const double repeat[2]) {
+  const double hMax = grid.hMin + grid.height * grid.texelSize;
+  const double extent = std::max(grid.width, grid.height) * grid.texelSize;
+  std::vector<float> positions, normals, texcoords;
   std::vector<std::uint32_t> indices;
-  const float lo[3] = {float(-radius), float(hMin), float(-radius)};
-  const float hi[3] = {float(radius), float(hMax), float(radius)};
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side = 0; side < 2; ++side) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  for (const auto& [a, b] : fallbackEdges(profile, extent / 200)) {
+    const double length = std::hypot(b.r - a.r, b.h - a.h);
+    Point2 normal{(b.h - a.h) / length, -(b.r - a.r) / length};
+    const Point2 mid{0.5 * (a.r + b.r), 0.5 * (a.h + b.h)};
+    const double step = 1e-4 * extent;
+    if (signedDistance(profile, {mid.r + step * normal.r, mid.h + step * normal.h}).distance < 0) normal = {-normal.r, -normal.h};
+    for (int k = 0; k < kFallbackSteps; ++k) {
       const std::uint32_t base = std::uint32_t(positions.size() / 3);
       for (int corner = 0; corner < 4; ++corner) {
-        float p[3];
-        p[axis] = side ? hi[axis] : lo[axis];
-        p[u] = (corner == 1 || corner == 2) ? hi[u] : lo[u];
-        p[v] = (corner >= 2) ? hi[v] : lo[v];
-        positions.insert(positions.end(), p, p + 3);
-        float n[3] = {0, 0, 0};
-        n[axis] = side ? 1.0f : -1.0f;
-        normals.insert(normals.end(), n, n + 3);
+        const int along = corner == 1 || corner == 2 ? k + 1 : k;
+        const Point2& p = corner >= 2 ? b : a;
+        const double angle = 2 * std::numbers::pi * along / kFallbackSteps;
+        const double c = std::cos(angle), sn = std::sin(angle);
+        positions.insert(positions.end(), {float(p.r * c), float(p.h), float(p.r * sn)});
+        normals.insert(normals.end(), {float(normal.r * c), float(normal.h), float(normal.r * sn)});
+        texcoords.insert(texcoords.end(), {float(repeat[0] * along / kFallbackSteps),
+                                           float(repeat[1] * (1 - (p.h - grid.hMin) / (hMax - grid.hMin)))});
       }
-      // Corners 0..3 go round the face counter-clockwise seen from +axis; flip for the -axis side.
+      // Wind the quad so that its face normal agrees with the outward normal.
+      const float* q = positions.data() + std::size_t(base) * 3;
+      const double e1[3] = {q[3] - q[0], q[4] - q[1], q[5] - q[2]}, e2[3] = {q[9] - q[0], q[10] - q[1], q[11] - q[2]};
+      const double face[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+      const float* n = normals.data() + std::size_t(base) * 3;
+      const bool agrees = face[0] * n[0] + face[1] * n[1] + face[2] * n[2] >= 0;
       const std::uint32_t quad[6] = {0, 1, 2, 0, 2, 3};
-      for (int k = 0; k < 6; ++k) indices.push_back(base + quad[side ? k : 5 - k]);
+      for (int m = 0; m < 6; ++m) indices.push_back(base + quad[agrees ? m : 5 - m]);
     }
   }
   glb::Primitive primitive;
   primitive.attributes.push_back(glb::Attribute::fromFloats("POSITION", 3, positions));
   primitive.attributes.push_back(glb::Attribute::fromFloats("NORMAL", 3, normals));
+  primitive.attributes.push_back(glb::Attribute::fromFloats("TEXCOORD_0", 2, texcoords));
   primitive.indices = std::move(indices);
   primitive.material = 0;
   glb::Mesh mesh;
-  mesh.name = "shape box";
+  mesh.name = "revolved preview";
   mesh.primitives.push_back(std::move(primitive));
   return mesh;
 }
@@ -159,7 +200,7 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   }
   package.materials.push_back(material);
 
-  package.meshes.push_back(shapeBox(grid.width * grid.texelSize, grid.hMin, grid.hMin + grid.height * grid.texelSize));
+  package.meshes.push_back(revolvedFallback(state.profile, grid, state.repeat));
   glb::Node node;
   node.name = std::filesystem::path(settings.input).stem().string();
   node.mesh = 0;

@@ -193,6 +193,7 @@ Percentiles percentiles(std::vector<double> samples) {
 Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
   if (settings.frames < 1) return usageError("--frames must be at least 1");
   BAKE_RETURN_IF_ERROR(renderersFor(settings.view).status());  // bad stroke options are usage errors
+  const OutputPlanScope planScope;
   BAKE_RETURN_IF_ERROR(planOutputs({settings.view.scenes, {settings.output}}, settings.common));
   BakeSession session("bakeplay", settings.common, diagnostics);
   session.report().setOptions({{"command", "render"},

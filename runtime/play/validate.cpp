@@ -160,6 +160,7 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
   if (!settings.viewsDirectory.empty() && !std::filesystem::is_directory(settings.viewsDirectory)) {
     return ioError("--views: not a directory", {settings.viewsDirectory, ""});
   }
+  const OutputPlanScope planScope;
   {
     RunFiles files{settings.packages, {}};
     files.inputs.insert(files.inputs.end(), settings.goldens.begin(), settings.goldens.end());

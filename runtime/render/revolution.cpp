@@ -74,29 +74,14 @@ struct Box {
   Vec3 lo{0, 0, 0}, hi{0, 0, 0};
 };
 
-Result<Box> drawnBox(const glb::Primitive& primitive, const RevolutionParams& params, const Location& where) {
-  const glb::Attribute* position = primitive.find("POSITION");
-  if (!position || position->count() == 0) return invalidInput("the shape box has no POSITION", where);
-  const std::vector<float> p = position->toFloats();
-  Box box{{p[0], p[1], p[2]}, {p[0], p[1], p[2]}};
-  for (std::size_t v = 0; v + 2 < p.size(); v += 3) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      box.lo[k] = std::min(box.lo[k], p[v + k]);
-      box.hi[k] = std::max(box.hi[k], p[v + k]);
-    }
-  }
-  // Beyond the map's own box there is nothing to sample.
+// The box the march is rasterised over: the shape map's own (r <= rMax, h in the map's rows), where
+// every sample lies. The node's mesh is the package's preview for viewers without BAKE_revolution
+// (a coarse revolved mesh), never the march's bound: its chords cut inside convex arcs.
+Result<Box> drawnBox(const RevolutionParams& params, const Location& where) {
   const float r = params.shapeMap.rMax();
-  const Box map{{-r, params.shapeMap.hMin, -r}, {r, params.shapeMap.hMax(), r}};
-  for (std::size_t k = 0; k < 3; ++k) {
-    box.lo[k] = std::max(box.lo[k], map.lo[k]);
-    box.hi[k] = std::min(box.hi[k], map.hi[k]);
-    if (!(box.lo[k] < box.hi[k])) {
-      return invalidInput("the shape box mesh does not overlap the shape map's box (r <= " + std::to_string(r) +
-                              ", h in [" + std::to_string(map.lo[1]) + ", " + std::to_string(map.hi[1]) + "])",
-                          where);
-    }
-  }
+  const Box box{{-r, params.shapeMap.hMin, -r}, {r, params.shapeMap.hMax(), r}};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!(box.lo[k] < box.hi[k])) return invalidInput("the shape map's box is empty", where);
   return box;
 }
 
@@ -239,7 +224,7 @@ Status RevolutionRenderer::prepare(const Scene& scene, const std::vector<std::si
     Item item;
     BAKE_ASSIGN_OR_RETURN(item.params, parseRevolution(material["extensions"][fmt::kExtension], package, where));
     const RevolutionParams& p = item.params;
-    BAKE_ASSIGN_OR_RETURN(const Box box, drawnBox(scene.primitive(instance), p, where));
+    BAKE_ASSIGN_OR_RETURN(const Box box, drawnBox(p, where));
     item.boxMin = box.lo;
     item.boxMax = box.hi;
     BAKE_ASSIGN_OR_RETURN(item.box, GpuPrimitive::upload(boxPrimitive(box), {{"POSITION", kPositionLocation}}));

@@ -357,6 +357,8 @@ class CliCase : public ::testing::TestWithParam<Case> {
       if (expected.value("gltfValid", false)) {
         const json answer = runNodeChecker("validate_gltf.mjs", {path.string()});
         EXPECT_EQ(answer.is_object() ? answer.value("numErrors", -1) : -1, 0) << path << ": " << answer.dump(2);
+        // Warnings only from the allow-list (tests/js/gltf_allowed_warnings.json, each with its reason).
+        EXPECT_EQ(answer.is_object() ? answer.value("numUnallowedWarnings", -1) : -1, 0) << path << ": " << answer.dump(2);
       }
     }
     if (spec_.value("noTemporaries", false) || inCorpus()) {

@@ -63,7 +63,12 @@ for name in "$@"; do
     }
     console.log(`GPU bytes ${a.gpuBytes} pruned vs ${b.gpuBytes} full; ${a.shaderVariants.length} vs ${b.shaderVariants.length} shader variants`);
   ' "$work/pruned.render.json" "$work/full.render.json" || fail "$name: the pruned package costs the runtime more"
-  echo "$name: same image, $pruned bytes pruned vs $full full"
+  # Every package of the scene, per object and assembled, pruned and full, passes the Khronos
+  # glTF-Validator: no errors, warnings only from tests/js/gltf_allowed_warnings.json.
+  mapfile -t packages < <(find "$work/pruned" "$work/full" -name '*.glb' | sort)
+  node "$source/tests/js/validate_packages.mjs" -q "${packages[@]}" >"$work/validator.log" ||
+    { cat "$work/validator.log"; fail "$name: a package fails the glTF-Validator"; }
+  echo "$name: same image, $pruned bytes pruned vs $full full; ${#packages[@]} packages pass the glTF-Validator"
 done
 
 # Touching one input re-runs only its dependents: the ring's profile re-bakes the ring, re-assembles

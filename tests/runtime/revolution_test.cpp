@@ -750,7 +750,8 @@ TEST(RevolutionBaked, VaseSilhouetteMatchesItsProfileWithinTheReportedError) {
   settings.resolution = 512;
   settings.common.quiet = true;
   Diagnostics quiet("revolbake", true);
-  ASSERT_TRUE(revolution::run(settings, quiet).isOk());
+  const Status baked = revolution::run(settings, quiet);
+  ASSERT_TRUE(baked.isOk()) << baked.describe();
   auto package = glb::read(settings.output);
   ASSERT_TRUE(package.isOk()) << package.status().describe();
   const double reported =
