@@ -43,7 +43,8 @@ else
   # Mesa allocates for the life of the process inside its llvmpipe driver and unloads the driver at
   # eglTerminate, leaving leak reports with no symbols to suppress by; so the GL tests run with
   # AddressSanitizer and UBSan but without LeakSanitizer, and everything else with all three.
-  # The million-triangle accuracy tests only repeat, ten times slower, what the plain run checks.
+  # The million-triangle accuracy tests only repeat, ten times slower, what the plain run checks, as
+  # does example_packages_gltf_valid (the example bakes again, for the glTF-Validator).
   # CgalPeer and AgreesWithCgal tests run CGAL's own solvers (the peers we measure against, never
   # linked into a tool; the exact geodesics on the real meshes take minutes under ASan);
   # CGAL 5.5's Heat_method_3 swaps an uninitialised bool (CGAL::Eigen_sparse_matrix::swap), which
@@ -52,7 +53,7 @@ else
   # grows its vertex arrays by realloc, which ASan always copies, and one headless view takes minutes
   # there instead of a second. The bakers run under ASan in examples_bake, bakeplay's paintstrokes in the
   # GL tests.
-  ctest --output-on-failure --parallel "$(nproc)" -LE gl -E 'MillionTriangle|CgalPeer|AgreesWithCgal' "$@"
+  ctest --output-on-failure --parallel "$(nproc)" -LE gl -E 'MillionTriangle|CgalPeer|AgreesWithCgal|example_packages_gltf_valid' "$@"
   ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --output-on-failure --parallel "$(nproc)" -L gl \
     -E makefile_examples "$@"
 fi
