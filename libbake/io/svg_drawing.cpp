@@ -56,17 +56,25 @@ Status elementError(const Document& doc, xmlNode* node, const std::string& messa
   return invalidInput(describeElement(node) + ": " + message, {doc.file, doc.where});
 }
 
-// A number, optionally followed by "px" (user units); other units need a viewBox to mean anything.
-std::optional<double> userLength(const std::string& text) {
+// A length of the root: a number with an optional absolute unit.
+std::optional<Length> rootLength(const std::string& text) {
   if (text.empty()) return std::nullopt;
   const char* begin = text.c_str();
   char* end = nullptr;
   const double value = std::strtod(begin, &end);
   if (end == begin || !std::isfinite(value)) return std::nullopt;
-  std::string rest(end);
-  while (!rest.empty() && std::isspace(static_cast<unsigned char>(rest.back()))) rest.pop_back();
-  if (!rest.empty() && rest != "px") return std::nullopt;
-  return value;
+  std::string unit(end);
+  while (!unit.empty() && std::isspace(static_cast<unsigned char>(unit.back()))) unit.pop_back();
+  for (const char* known : {"", "px", "mm", "cm", "in", "pt", "pc"})
+    if (unit == known) return Length{value, unit};
+  return std::nullopt;
+}
+
+// A number, optionally followed by "px" (user units); other units need a viewBox to mean anything.
+std::optional<double> userLength(const std::string& text) {
+  const std::optional<Length> length = rootLength(text);
+  if (!length || !(length->unit.empty() || length->unit == "px")) return std::nullopt;
+  return length->value;
 }
 
 Result<double> lengthAttribute(const Document& doc, xmlNode* node, const char* name, double fallback) {
@@ -281,20 +289,6 @@ Status walk(const Document& doc, xmlNode* parent, const Affine& parentMatrix, st
     }
   }
   return Status::ok();
-}
-
-// A length of the root: a number with an optional absolute unit.
-std::optional<Length> rootLength(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  const double value = std::strtod(begin, &end);
-  if (end == begin || !std::isfinite(value)) return std::nullopt;
-  std::string unit(end);
-  while (!unit.empty() && std::isspace(static_cast<unsigned char>(unit.back()))) unit.pop_back();
-  for (const char* known : {"", "px", "mm", "cm", "in", "pt", "pc"})
-    if (unit == known) return Length{value, unit};
-  return std::nullopt;
 }
 
 Result<Frame> frameOf(const Document& doc, xmlNode* root) {

@@ -257,12 +257,10 @@ FieldCheck checkField(const Profile& profile, const ShapeGrid& grid, const std::
     sum += localSum;
     nearSum += localNearSum;
     total.nearMaxError = std::max(total.nearMaxError, local.nearMaxError);
-    if (local.maxError > total.maxError || total.worstI < 0) {
-      total.maxError = std::max(total.maxError, local.maxError);
-      if (local.maxError >= total.maxError) {
-        total.worstI = local.worstI;
-        total.worstJ = local.worstJ;
-      }
+    if (local.worstI >= 0 && (total.worstI < 0 || local.maxError > total.maxError)) {
+      total.maxError = local.maxError;
+      total.worstI = local.worstI;
+      total.worstJ = local.worstJ;
     }
   }, 1);
   if (total.texels) total.meanError = sum / double(total.texels);
