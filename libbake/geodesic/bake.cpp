@@ -76,7 +76,9 @@ Status bake(const Settings& settings, BakeSession& session) {
   TriangleMesh mesh;
   {
     StageTimer timer(&report, "read");
-    BAKE_ASSIGN_OR_RETURN(mesh, readMesh(settings.input));
+    MeshReadOptions options;
+    options.nearOrigin = true;  // a mesh far from the origin keeps its precision (origin in the node)
+    BAKE_ASSIGN_OR_RETURN(mesh, readMesh(settings.input, options));
     BAKE_RETURN_IF_ERROR(validateMesh(mesh, settings.input));
   }
   SurfaceBuild build;

@@ -1,5 +1,6 @@
 // Writing the package (formats/geodesic.md): the input mesh as read (positions, normals, texture
-// coordinates, triangles), one SCALAR attribute `_GEODESIC_k` per field, normalised to [0, 1] by the
+// coordinates, triangles; a mesh far from the origin relative to its centre, which the node's
+// translation holds), one SCALAR attribute `_GEODESIC_k` per field, normalised to [0, 1] by the
 // farthest reached vertex (seed 003, 5.2.2) or by the farthest over all fields, and the BAKE_geodesic
 // description with the divisor of every field so the distances can be recovered in model units.
 #include <algorithm>
@@ -132,6 +133,7 @@ glb::Package buildPackage(const TriangleMesh& mesh, const SurfaceBuild& build,
   glb::Node node;
   node.name = "geodesic";
   node.mesh = 0;
+  node.translation = mesh.origin;  // a far-off mesh: float positions relative to it (io/mesh_place.h)
   package.nodes.push_back(node);
   const bool asFloat = settings.encoding == Encoding::Float;
   package.extensions[fmt::kExtension] = {

@@ -121,13 +121,14 @@ Status resolveOne(const SourceSpec& spec, const TriangleMesh& mesh, const Surfac
     field.snapDistances.push_back(0.0);
     return {};
   }
-  Vec3d target = spec.point;
+  Vec3d target = spec.point;  // world coordinates, as the surface's origin is
   if (spec.kind == SourceSpec::Kind::Node) {
     const NamedPoint* found = nullptr;
     for (const NamedPoint& named : mesh.namedPoints)
       if (named.name == spec.node) found = &named;
     if (!found) return invalidInput("no node named \"" + spec.node + "\" in the input", {file, spec.origin});
-    target = {found->position[0], found->position[1], found->position[2]};
+    // Named points are relative to the mesh's origin, like its positions.
+    for (int k = 0; k < 3; ++k) target[k] = mesh.origin[k] + double(found->position[k]);
   }
   const SnappedPoint snapped = snapToSurface(surface, target);
   field.points.push_back(snapped.point);

@@ -174,7 +174,8 @@ SurfaceBuild buildSurface(const TriangleMesh& mesh, double weldTolerance) {
   s.positions.reserve(positionsOnly.positions.size());
   for (const Vec3f& p : positionsOnly.positions)
     s.positions.push_back({double(p[0]) - centre[0], double(p[1]) - centre[1], double(p[2]) - centre[2]});
-  s.origin = centre;
+  // The mesh's own origin (a far-off mesh read relative to its centre, io/mesh.h) makes it world space.
+  for (int k = 0; k < 3; ++k) s.origin[k] = mesh.origin[k] + centre[k];
 
   // Repeated faces (same corner set) would make a clean edge look non-manifold.
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> seen;

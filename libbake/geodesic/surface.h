@@ -23,7 +23,7 @@ inline constexpr double kUnreachable = std::numeric_limits<double>::infinity();
 
 struct Surface {
   // Positions relative to `origin` (the input's bounding-box centre, so far-off models keep their
-  // precision): input coordinates = positions + origin.
+  // precision), the mesh's own origin included: world coordinates = positions + origin.
   std::vector<Vec3d> positions;
   Vec3d origin{0.0, 0.0, 0.0};
   std::vector<std::array<std::uint32_t, 3>> triangles;

@@ -9,6 +9,8 @@
 
 namespace bake {
 
-Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats = nullptr);
+// `nearOrigin`: see MeshReadOptions::nearOrigin (world positions are computed in double either way).
+Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats = nullptr,
+                                  bool nearOrigin = false);
 
 }  // namespace bake

@@ -10,17 +10,21 @@
 #include "io/glb.h"
 #include "io/glb_scene.h"
 #include "io/gltf.h"
+#include "io/mesh_place.h"
 
 namespace bake {
 namespace {
 
 using Matrix = std::array<double, 16>;  // column-major
 
-Vec3f transformPoint(const Matrix& m, const float* p) {
-  Vec3f out{};
-  for (int r = 0; r < 3; ++r) out[r] = float(m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r]);
+// In double: a node's translation may be far larger than its mesh (io/mesh_place.h).
+Vec3d transformPoint(const Matrix& m, const float* p) {
+  Vec3d out{};
+  for (int r = 0; r < 3; ++r) out[r] = m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r];
   return out;
 }
+
+Vec3f toFloat(const Vec3d& p) { return {float(p[0]), float(p[1]), float(p[2])}; }
 
 // Normals transform by the inverse transpose of the upper 3x3 (cofactor matrix; the scale of the
 // determinant does not matter since the result is normalised).
@@ -89,6 +93,7 @@ struct Flattener {
   const glb::Package& package;
   const std::string& name;
   TriangleMesh mesh;
+  WorldPositions worldPositions;  // the positions and named points in double
   bool allHaveNormals = true;
   bool allHaveTexcoords = true;
   bool firstPrimitive = true;
@@ -135,7 +140,8 @@ struct Flattener {
     const std::uint32_t base = std::uint32_t(mesh.positions.size());
     appendExtras(primitive, world);
     for (std::size_t v = 0; v < position->count(); ++v) {
-      mesh.positions.push_back(transformPoint(world, &p[3 * v]));
+      worldPositions.vertices.push_back(transformPoint(world, &p[3 * v]));
+      mesh.positions.push_back(toFloat(worldPositions.vertices.back()));
       mesh.normals.push_back(normal ? transformNormal(world, &n[3 * v]) : Vec3f{});
       mesh.texcoords.push_back(texcoord ? Vec2f{t[2 * v], t[2 * v + 1]} : Vec2f{});
     }
@@ -146,7 +152,10 @@ struct Flattener {
   }
 
   void visit(const glb::Node& node, const Matrix& world) {
-    if (!node.name.empty()) mesh.namedPoints.push_back({node.name, {float(world[12]), float(world[13]), float(world[14])}});
+    if (!node.name.empty()) {
+      worldPositions.namedPoints.push_back({world[12], world[13], world[14]});
+      mesh.namedPoints.push_back({node.name, toFloat(worldPositions.namedPoints.back())});
+    }
     if (node.mesh >= 0) {
       for (const glb::Primitive& primitive : package.meshes[std::size_t(node.mesh)].primitives) appendPrimitive(primitive, world);
     }
@@ -157,7 +166,7 @@ constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 }  // namespace
 
-Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats) {
+Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats, bool nearOrigin) {
   BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::read(path));
   Flattener flattener{package, path.string(), {}};
   if (package.nodes.empty()) {
@@ -169,6 +178,7 @@ Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadSta
                                           [&](const glb::Node& node, const Matrix& world) { flattener.visit(node, world); }));
   }
   TriangleMesh mesh = std::move(flattener.mesh);
+  if (nearOrigin) placeNearOrigin(flattener.worldPositions, mesh);
   if (!flattener.allHaveNormals || mesh.positions.empty()) mesh.normals.clear();
   if (!flattener.allHaveTexcoords || mesh.positions.empty()) mesh.texcoords.clear();
   if (stats) stats->nonTrianglePrimitivesSkipped += flattener.skipped;

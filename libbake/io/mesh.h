@@ -19,6 +19,7 @@ namespace bake {
 
 using Vec2f = std::array<float, 2>;
 using Vec3f = std::array<float, 3>;
+using Vec3d = std::array<double, 3>;
 using Triangle = std::array<std::uint32_t, 3>;
 
 // A point with a name, e.g. a named glTF node, usable as a geodesic source.
@@ -28,7 +29,10 @@ struct NamedPoint {
 };
 
 struct TriangleMesh {
+  // Positions (and named points) are relative to `origin`: world = origin + position. The origin is
+  // zero unless the reader was asked to keep a far-off mesh precise (MeshReadOptions::nearOrigin).
   std::vector<Vec3f> positions;
+  Vec3d origin{};
   std::vector<Triangle> triangles;
   std::vector<Vec3f> normals;    // empty, or one per vertex
   std::vector<Vec2f> texcoords;  // empty, or one per vertex
@@ -48,6 +52,12 @@ struct MeshReadOptions {
   // to merge.
   bool weld = false;
   double weldTolerance = 0.0;
+  // Keep a mesh that lies far from the world origin precise: the coordinates are read in double
+  // (OBJ, OFF and ASCII PLY text, glTF node transforms) and, when the mesh's centre is farther from
+  // the origin than its bounding-box diagonal, stored as floats relative to that centre
+  // (TriangleMesh::origin), so that float rounding is relative to the mesh's size, not to its
+  // distance from the origin. A reader that sets this must add the origin back to what it writes.
+  bool nearOrigin = false;
 };
 
 // Counts of what reading changed, for warnings and the report.

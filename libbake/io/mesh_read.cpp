@@ -45,6 +45,7 @@
 #include "core/path.h"
 #include "core/private_copy.h"
 #include "io/gltf.h"
+#include "io/mesh_place.h"
 #include "io/mesh_scan.h"
 #include "mesh/weld.h"
 
@@ -73,6 +74,7 @@ struct Corner {
 
 struct PolygonSoup {
   std::vector<Vec3f> positions;
+  std::vector<Vec3d> precisePositions;     // the same in double, as precise as the parser gave them
   std::vector<Corner> corners;
   std::vector<std::size_t> polygonStarts;  // into corners; a polygon ends where the next starts
   std::size_t facesOffered = 0;            // every face the reader passed, kept or not
@@ -103,16 +105,16 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
   const std::optional<std::string>& problem() const { return problem_; }
 
   VertexHandle add_vertex(const OpenMesh::Vec3f& point) override {
-    soup_.positions.push_back({point[0], point[1], point[2]});
-    vertexAttributes_.emplace_back();
-    return VertexHandle(int(soup_.positions.size() - 1));
+    return addVertex({point[0], point[1], point[2]}, {point[0], point[1], point[2]});
   }
   VertexHandle add_vertex(const OpenMesh::Vec3d& point) override {
-    return add_vertex(OpenMesh::Vec3f(float(point[0]), float(point[1]), float(point[2])));
+    return addVertex({float(point[0]), float(point[1]), float(point[2])}, {point[0], point[1], point[2]});
   }
-  VertexHandle add_vertex() override { return add_vertex(OpenMesh::Vec3f(0.0f, 0.0f, 0.0f)); }
+  VertexHandle add_vertex() override { return addVertex({}, {}); }
   void set_point(VertexHandle vertex, const OpenMesh::Vec3f& point) override {
-    if (isValid(vertex)) soup_.positions[vertex.idx()] = {point[0], point[1], point[2]};
+    if (!isValid(vertex)) return;
+    soup_.positions[vertex.idx()] = {point[0], point[1], point[2]};
+    soup_.precisePositions[vertex.idx()] = {point[0], point[1], point[2]};
   }
 
   void set_normal(VertexHandle vertex, const OpenMesh::Vec3f& normal) override {
@@ -129,6 +131,13 @@ class SoupImporter final : public OpenMesh::IO::BaseImporter {
       attributes->hasTexcoord = true;
       attributes->texcoord = {texcoord[0], texcoord[1]};
     }
+  }
+
+  VertexHandle addVertex(const Vec3f& point, const Vec3d& precise) {
+    soup_.positions.push_back(point);
+    soup_.precisePositions.push_back(precise);
+    vertexAttributes_.emplace_back();
+    return VertexHandle(int(soup_.positions.size() - 1));
   }
 
   FaceHandle add_face(const VHandles& indices) override {
@@ -325,8 +334,10 @@ bool sameBits(const T& a, const T& b) {
 
 // Gives each corner the index of a vertex with its position and attributes: the first attribute
 // combination seen for a position keeps the original vertex, later different ones get copies.
+// `world`: the double positions of mesh.positions, kept in step.
 std::vector<std::uint32_t> assignCornerVertices(const PolygonSoup& soup, bool withNormals, bool withTexcoords,
-                                                TriangleMesh& mesh, MeshReadStats& stats) {
+                                                TriangleMesh& mesh, std::vector<Vec3d>& world,
+                                                MeshReadStats& stats) {
   std::vector<std::uint32_t> cornerVertex(soup.corners.size());
   if (!withNormals && !withTexcoords) {
     for (std::size_t c = 0; c < soup.corners.size(); ++c) cornerVertex[c] = soup.corners[c].vertex;
@@ -361,6 +372,7 @@ std::vector<std::uint32_t> assignCornerVertices(const PolygonSoup& soup, bool wi
       const std::uint32_t vertex = firstUse ? corner.vertex : std::uint32_t(mesh.positions.size());
       if (!firstUse) {
         mesh.positions.push_back(soup.positions[corner.vertex]);
+        world.push_back(soup.precisePositions[corner.vertex]);
         if (withNormals) mesh.normals.emplace_back();
         if (withTexcoords) mesh.texcoords.emplace_back();
         ++stats.verticesSplit;
@@ -386,16 +398,18 @@ bool attributeIsComplete(const PolygonSoup& soup, bool Corner::*present, MeshRea
   return count > 0 && count == soup.corners.size();
 }
 
-Result<TriangleMesh> triangulate(PolygonSoup&& soup, const fs::path& path, MeshReadStats& stats) {
+Result<TriangleMesh> triangulate(PolygonSoup&& soup, const fs::path& path, std::vector<Vec3d>& world,
+                                 MeshReadStats& stats) {
   if (soup.positions.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
     return unsupported("too many vertices for 32-bit indices", {path.string(), ""});
   }
   TriangleMesh mesh;
   mesh.positions = soup.positions;
+  world = soup.precisePositions;
   const bool withNormals = attributeIsComplete(soup, &Corner::hasNormal, stats);
   const bool withTexcoords = attributeIsComplete(soup, &Corner::hasTexcoord, stats);
   const std::vector<std::uint32_t> cornerVertex =
-      assignCornerVertices(soup, withNormals, withTexcoords, mesh, stats);
+      assignCornerVertices(soup, withNormals, withTexcoords, mesh, world, stats);
   // Fan from each polygon's first corner.
   for (std::size_t p = 0; p < soup.polygonStarts.size(); ++p) {
     const std::size_t begin = soup.polygonStarts[p];
@@ -446,7 +460,23 @@ Status checkDeclaredCounts(const Prescan& scan, const PolygonSoup& soup, const f
   return {};
 }
 
-Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, MeshReadStats& stats) {
+// The text's own coordinates, in double, replace OpenMesh's floats where they are what it rounded (a
+// homogeneous OBJ "v x y z w" or anything else it changed keeps its float).
+void adoptTextCoordinates(const std::vector<std::array<double, 3>>& text, PolygonSoup& soup) {
+  if (text.size() != soup.positions.size()) return;
+  auto sameFloat = [](double precise, float rounded) {  // within one float step (strtof vs strtod)
+    const float nearest = float(precise);
+    return nearest == rounded || std::nextafter(nearest, rounded) == rounded;
+  };
+  for (std::size_t v = 0; v < text.size(); ++v) {
+    bool same = true;
+    for (int k = 0; k < 3; ++k) same = same && sameFloat(text[v][k], soup.positions[v][k]);
+    if (same) soup.precisePositions[v] = text[v];
+  }
+}
+
+Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, bool nearOrigin,
+                                      MeshReadStats& stats) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   if (bytes.empty()) return invalidInput("the file is empty", {path.string(), ""});
   std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
@@ -470,7 +500,12 @@ Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, M
   if (scan.stlTriangles) {
     stats.degenerateFacesRemoved += *scan.stlTriangles - std::min(*scan.stlTriangles, soup.facesOffered);
   }
-  return triangulate(std::move(soup), path, stats);
+  WorldPositions world;
+  if (!nearOrigin) return triangulate(std::move(soup), path, world.vertices, stats);
+  adoptTextCoordinates(scan.positions, soup);
+  BAKE_ASSIGN_OR_RETURN(TriangleMesh mesh, triangulate(std::move(soup), path, world.vertices, stats));
+  placeNearOrigin(world, mesh);
+  return mesh;
 }
 
 Status checkFinite(const float* values, int count, const std::string& name, std::size_t vertex,
@@ -535,9 +570,9 @@ Result<TriangleMesh> readMesh(const fs::path& path, const MeshReadOptions& optio
 
   TriangleMesh mesh;
   if (format == MeshFormat::Gltf) {
-    BAKE_ASSIGN_OR_RETURN(mesh, readGltfMesh(path, &counts));
+    BAKE_ASSIGN_OR_RETURN(mesh, readGltfMesh(path, &counts, options.nearOrigin));
   } else {
-    BAKE_ASSIGN_OR_RETURN(mesh, readWithOpenMesh(path, format, counts));
+    BAKE_ASSIGN_OR_RETURN(mesh, readWithOpenMesh(path, format, options.nearOrigin, counts));
   }
   if (mesh.triangles.empty()) {
     return invalidInput(counts.degenerateFacesRemoved

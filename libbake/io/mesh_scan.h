@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -29,6 +30,9 @@ struct Prescan {
   // STL: triangles in the file; OpenMesh drops those with two equal corners before the importer.
   std::optional<std::size_t> stlTriangles;
   std::size_t objFaces = 0;  // OBJ face lines (each one triangle or more)
+  // Vertex coordinates as the text gives them, in double (OBJ, OFF and PLY in ASCII; empty otherwise),
+  // in file order: OpenMesh's parsers read them as float.
+  std::vector<std::array<double, 3>> positions;
 };
 
 // The per-format scans; `text` is the whole file. Each returns the first problem as an error naming
@@ -103,5 +107,8 @@ Status lineUnsupported(const std::filesystem::path& path, std::size_t line, std:
 Status checkNumbers(const std::filesystem::path& path, const TextLine& line,
                     const std::vector<std::string_view>& words, std::size_t first, std::size_t count,
                     std::size_t finiteCount, const char* what);
+
+// The three numbers at `words[first..first+2]` in double, for words checkNumbers has accepted.
+std::array<double, 3> coordinatesAt(const std::vector<std::string_view>& words, std::size_t first);
 
 }  // namespace bake::meshscan

@@ -148,6 +148,7 @@ Result<Prescan> prescanObj(std::string_view text, const fs::path& path) {
       // x y z, optionally w (homogeneous) and/or an r g b colour.
       BAKE_RETURN_IF_ERROR(checkObjValueCount(path, line, values, {3, 4, 6, 7}, "3 coordinates (x y z)"));
       BAKE_RETURN_IF_ERROR(checkNumbers(path, line, words, 1, values, 3, "vertex coordinate"));
+      scan.positions.push_back(coordinatesAt(words, 1));
       ++soFar.positions;
     } else if (keyword == "vt") {
       if (values == 1) {

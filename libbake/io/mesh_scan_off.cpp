@@ -56,7 +56,8 @@ Result<OffHeader> parseOffHeader(const TextLine& line, const fs::path& path) {
   return header;
 }
 
-Status scanOffVertex(const fs::path& path, const TextLine& line, const OffHeader& header) {
+Status scanOffVertex(const fs::path& path, const TextLine& line, const OffHeader& header,
+                     std::vector<std::array<double, 3>>& positions) {
   const std::vector<std::string_view> words = splitWords(line.text);
   const std::size_t base = 3 + (header.normals ? 3 : 0) + (header.texcoords ? 2 : 0);
   // A colour is an index or 3-4 components; OpenMesh tells them apart by their count.
@@ -73,6 +74,7 @@ Status scanOffVertex(const fs::path& path, const TextLine& line, const OffHeader
   if (header.texcoords) {
     BAKE_RETURN_IF_ERROR(checkNumbers(path, line, words, words.size() - 2, 2, 2, "texture coordinate"));
   }
+  positions.push_back(coordinatesAt(words, 0));
   return {};
 }
 
@@ -191,10 +193,11 @@ Result<Prescan> prescanOff(std::string_view text, const fs::path& path) {
                          " but the file ends after " + std::to_string(found));
   };
 
+  Prescan scan;
   for (std::size_t v = 0; v < counts.vertices; ++v) {
     if (!nextDataLine(line)) return endsEarly("vertices", v, counts.vertices);
     BAKE_RETURN_IF_ERROR(rejectComment(line));
-    BAKE_RETURN_IF_ERROR(scanOffVertex(path, line, header));
+    BAKE_RETURN_IF_ERROR(scanOffVertex(path, line, header, scan.positions));
   }
   for (std::size_t f = 0; f < counts.faces; ++f) {
     if (!nextDataLine(line)) return endsEarly("faces", f, counts.faces);
@@ -206,7 +209,6 @@ Result<Prescan> prescanOff(std::string_view text, const fs::path& path) {
                      "data after the " + std::to_string(counts.faces) + " faces the header declares (line " +
                          std::to_string(countsLine) + ")");
   }
-  Prescan scan;
   scan.declaredVertices = counts.vertices;
   scan.declaredFaces = counts.faces;
   scan.verticesWhere = scan.facesWhere = "line " + std::to_string(countsLine);

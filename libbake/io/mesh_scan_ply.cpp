@@ -224,8 +224,9 @@ Result<PlyHeader> parsePlyHeader(std::string_view text, const fs::path& path) {
 
 // One ASCII element line against its properties: value counts, numbers, finiteness of geometry, and
 // for faces the vertex count and index range.
+// `xyz`, when given, receives the line's x, y and z in double.
 Status scanPlyLine(const fs::path& path, const TextLine& line, const PlyElement& element, bool isFaceElement,
-                   std::size_t vertexCount) {
+                   std::size_t vertexCount, std::array<double, 3>* xyz) {
   const std::vector<std::string_view> words = splitWords(line.text);
   std::size_t at = 0;
   auto tooFew = [&]() {
@@ -239,6 +240,8 @@ Status scanPlyLine(const fs::path& path, const TextLine& line, const PlyElement&
       const bool mustBeFinite = element.name == "vertex" && isPlyGeometryProperty(property.name);
       const std::string what = inQuotes(property.name) + " value";
       BAKE_RETURN_IF_ERROR(checkNumbers(path, line, words, at, 1, mustBeFinite ? 1 : 0, what.c_str()));
+      const std::size_t axis = property.name == "x" ? 0 : property.name == "y" ? 1 : property.name == "z" ? 2 : 3;
+      if (xyz && axis < 3) (*xyz)[axis] = std::strtod(std::string(words[at]).c_str(), nullptr);
       ++at;
       continue;
     }
@@ -275,7 +278,8 @@ Status scanPlyLine(const fs::path& path, const TextLine& line, const PlyElement&
   return {};
 }
 
-Status scanPlyAsciiBody(std::string_view text, const PlyHeader& header, const fs::path& path) {
+Status scanPlyAsciiBody(std::string_view text, const PlyHeader& header, const fs::path& path,
+                        std::vector<std::array<double, 3>>& positions) {
   LineCursor lines(text.substr(header.dataOffset), header.headerLines);
   TextLine line;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
@@ -286,8 +290,11 @@ Status scanPlyAsciiBody(std::string_view text, const PlyHeader& header, const fs
                          "the header declares " + std::to_string(element.count) + " " + element.name +
                              " elements but the file ends after " + std::to_string(i));
       }
-      BAKE_RETURN_IF_ERROR(
-          scanPlyLine(path, line, element, e == header.faceElement, header.vertices().count));
+      const bool isVertex = e == header.vertexElement;
+      std::array<double, 3> xyz{};
+      BAKE_RETURN_IF_ERROR(scanPlyLine(path, line, element, e == header.faceElement, header.vertices().count,
+                                       isVertex ? &xyz : nullptr));
+      if (isVertex) positions.push_back(xyz);
     }
   }
   if (lines.nextContent(line, false)) {
@@ -364,8 +371,9 @@ Status scanPlyBinaryBody(std::string_view text, const PlyHeader& header, const f
 
 Result<Prescan> prescanPly(std::string_view text, const fs::path& path) {
   BAKE_ASSIGN_OR_RETURN(const PlyHeader header, parsePlyHeader(text, path));
+  Prescan scan;
   if (header.ascii) {
-    BAKE_RETURN_IF_ERROR(scanPlyAsciiBody(text, header, path));
+    BAKE_RETURN_IF_ERROR(scanPlyAsciiBody(text, header, path, scan.positions));
   } else {
     std::uint64_t minimum = 0;
     for (const PlyElement& element : header.elements) minimum += minimumPlyElementBytes(element);
@@ -378,7 +386,6 @@ Result<Prescan> prescanPly(std::string_view text, const fs::path& path) {
     }
     BAKE_RETURN_IF_ERROR(scanPlyBinaryBody(text, header, path));
   }
-  Prescan scan;
   scan.declaredVertices = header.vertices().count;
   scan.declaredFaces = header.faceElement ? header.elements[*header.faceElement].count : 0;
   scan.verticesWhere = "line " + std::to_string(header.vertices().headerLine);
