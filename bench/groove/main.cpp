@@ -8,7 +8,8 @@
 // a few more times for timing alone, see kMinReferenceCpu). The criterion of the
 // method is an RMSE within 3x that floor at 50x less cost per pixel. The method runs as the runtime
 // shader computes it (exact trapezoid footprint density, grooves straightened at the footprint except
-// for curved sections on tight arcs; --straight-arcs leaves those out) and, for comparison, as the
+// for curved sections on tight arcs; --straight-arcs leaves those out; past kMaxFoundPerFootprint
+// primitives under a footprint, the far level) and, for comparison, as the
 // seed publishes it (uniform footprint segment, straight arcs): its RMSE is the seed_rmse column. Writes groove.csv (one row per view) and, with
 // --images, EXR images of the method and the reference; progress on stderr.
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <bake_formats/grooves.h>
 #include <nlohmann/json.hpp>
 
 #include "groove/grid.h"
@@ -207,6 +209,8 @@ int main(int argc, char** argv) {
 
     SeedSettings ours;
     ours.curvedSections = !o.straightArcs;
+    // As the shader holds it: a footprint over more primitives is shaded from the far level.
+    ours.foundCap = bake::format::grooves::kMaxFoundPerFootprint;
     SeedSettings published;
     published.density = FootprintDensity::SeedSegment;
     published.curvedSections = false;

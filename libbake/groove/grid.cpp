@@ -318,6 +318,7 @@ Result<GrooveGrid> grid_detail::buildGrooveGridTimed(const GrooveScene& scene, c
       },
       recordCellStart, recordCells);
   BAKE_RETURN_IF_ERROR(buildCsr(grid.cellCount(), recordCellStart, recordCells, "record", threads, grid.recordStart, grid.recordRefs));
+  grid.far = buildFarLevel(scene, grid.cells);
   times.records = secondsSince(recordsStart);
   return grid;
 }

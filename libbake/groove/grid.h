@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/status.h"
+#include "groove/far_level.h"
 #include "groove/scene.h"
 
 namespace bake::groove {
@@ -64,6 +65,8 @@ struct GrooveGrid {
   // Every primitive's joint lines, as the grid was built with them (found once here rather than at
   // every pixel); empty for a grid read back from a package, where they are found when needed.
   std::vector<PrimitiveJoints> joints;
+  // For footprints over more primitives than the runtime holds (far_level.h).
+  FarLevel far;
 
   std::uint64_t cellCount() const { return std::uint64_t(cells[0]) * cells[1]; }
   // Primitives / records of the cells that meet the box [lower, upper] (wrapping with the domain when

@@ -327,6 +327,15 @@ Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& gro
   return sum;
 }
 
+Rgb shadeStraightGroove(const GrooveScene& scene, const LocalGroove& groove, const Footprint& footprint,
+                        const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings) {
+  thread_local std::vector<LocalGroove> alone;
+  alone.assign(1, groove);
+  SeedSettings straight = settings;
+  straight.curvedSections = false;
+  return shadeClass(scene, alone, {0}, footprint, toViewer, lighting, straight);
+}
+
 Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                const Vec3& toViewer, const Lighting& lighting) {
   return lineSampleWith(scene, grooves, footprint, toViewer, lighting, SeedSettings{});

@@ -150,4 +150,9 @@ Rgb mirrorBounces(const GrooveScene& scene, const CrossSection& section, const F
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                    const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings);
 
+// One straight groove alone on its cross-section (no curved section, whatever the primitive), under
+// `footprint`: the far level's per-class radiance (far_shade.cpp).
+Rgb shadeStraightGroove(const GrooveScene& scene, const LocalGroove& groove, const Footprint& footprint,
+                        const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings);
+
 }  // namespace bake::groove

@@ -179,6 +179,21 @@ glb::Mesh previewPlane(const GrooveScene& scene) {
   return mesh;
 }
 
+std::vector<fmt::FarClass> packFarClasses(const FarLevel& far) {
+  std::vector<fmt::FarClass> out;
+  for (const FarClass& c : far.classes) {
+    fmt::FarClass packed{};
+    packed.info[0] = c.profile;
+    packed.info[1] = c.material;
+    packed.info[2] = c.representative;
+    packed.direction[0] = float(c.direction.u);
+    packed.direction[1] = float(c.direction.v);
+    packed.direction[2] = float(c.halfWidth);
+    out.push_back(packed);
+  }
+  return out;
+}
+
 json namesOf(const auto& items) {
   json names = json::array();
   for (const auto& item : items) names.push_back(item.name);
@@ -215,6 +230,9 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
   package.blobs.push_back(blobOf(profiles));
   package.blobs.push_back(blobOf(points));
   package.blobs.push_back(blobOf(materials));
+  const std::vector<fmt::FarClass> farClasses = packFarClasses(grid.far);
+  package.blobs.push_back(blobOf(farClasses));
+  package.blobs.push_back(blobOf(grid.far.table));
   json views = json::object();
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[fmt::kArrayKeys[k]] = k;
   json extension = {
@@ -236,14 +254,19 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
                   {"grooves", grooves.size()},
                   {"profiles", profiles.size()},
                   {"profilePoints", points.size() / 2},
-                  {"materials", materials.size()}}},
+                  {"materials", materials.size()},
+                  {fmt::kFarClasses, farClasses.size()},
+                  {fmt::kFarTable, grid.far.table.size()}}},
       {"strides", {{"records", sizeof(fmt::Record)},
                    {"primitives", sizeof(fmt::Primitive)},
                    {"grooves", sizeof(fmt::Groove)},
                    {"profiles", sizeof(fmt::Profile)},
                    {"profilePoints", fmt::kProfilePointSize},
-                   {"materials", sizeof(fmt::Material)}}},
+                   {"materials", sizeof(fmt::Material)},
+                   {fmt::kFarClasses, sizeof(fmt::FarClass)},
+                   {fmt::kFarTable, fmt::kFarTableEntrySize}}},
       {fmt::kBufferViews, views},
+      {fmt::kFar, {{"cells", {grid.far.cells[0], grid.far.cells[1]}}, {"cellSize", {grid.far.cellSize.u, grid.far.cellSize.v}}}},
       {"profileNames", namesOf(scene.profiles)},
       {"materialNames", namesOf(scene.materials)}};
   if (!scene.units.empty()) extension["units"] = scene.units;

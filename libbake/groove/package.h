@@ -29,6 +29,9 @@ struct GroovePackageHeader {
   double wmax = 0, hmax = 0, dmax = 0;
   std::uint32_t baseMaterial = 0;
   std::vector<std::string> profileNames, materialNames;
+  // The far level's grid (version 2; zero cells in a version 1 package, which has none).
+  std::uint32_t farCells[2] = {0, 0};
+  double farCellSize[2] = {0, 0};
 };
 
 // The decoded arrays, exactly as stored.
@@ -41,6 +44,8 @@ struct GroovePackage {
   std::vector<format::grooves::Profile> profiles;
   std::vector<float> profilePoints;  // b, h pairs
   std::vector<format::grooves::Material> materials;
+  std::vector<format::grooves::FarClass> farClasses;  // empty in a version 1 package
+  std::vector<double> farTable;
 
   // A stored cell-local point back in domain coordinates (double).
   Vec2 position(const std::int32_t anchor[2], float u, float v) const;

@@ -61,9 +61,9 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
   const json& e = reader.extension;
   if (!e.contains("version") || !e["version"].is_number_integer()) return reader.fail("version", "missing integer version");
   header.version = e["version"].get<int>();
-  if (header.version != fmt::kVersion)
+  if (header.version < fmt::kOldestReadableVersion || header.version > fmt::kVersion)
     return unsupported(std::string(fmt::kExtension) + ": version " + std::to_string(header.version) + " (this reader knows " +
-                           std::to_string(fmt::kVersion) + ")",
+                           std::to_string(fmt::kOldestReadableVersion) + " to " + std::to_string(fmt::kVersion) + ")",
                        {reader.name, "version"});
   header.units = jsonStringOr(e, "units", "");
   const json &domain = jsonMember(e, "domain"), &grid = jsonMember(e, "grid");
@@ -98,6 +98,18 @@ Status readHeader(const Reader& reader, GroovePackageHeader& header) {
     if (!list.is_array()) return reader.fail(key, "expected a list of names");
     for (const json& n : list) names->push_back(n.is_string() ? n.get<std::string>() : "");
   }
+  if (header.version >= 2) {
+    const json& far = jsonMember(e, fmt::kFar);
+    const json &farCells = jsonMember(far, "cells"), &farSize = jsonMember(far, "cellSize");
+    if (!farCells.is_array() || farCells.size() != 2 || !farSize.is_array() || farSize.size() != 2)
+      return reader.fail("far", "expected cells and cellSize pairs");
+    for (int k = 0; k < 2; ++k) {
+      if (!isIndex(farCells[k]) || farCells[k].get<std::uint64_t>() < 1 || farCells[k].get<std::uint64_t>() > UINT32_MAX)
+        return reader.fail("far/cells", "expected a count >= 1");
+      header.farCells[k] = farCells[k].get<std::uint32_t>();
+      BAKE_ASSIGN_OR_RETURN(header.farCellSize[k], reader.positive(farSize[k], "far/cellSize"));
+    }
+  }
   return {};
 }
 
@@ -125,6 +137,16 @@ Status readArrays(const Reader& reader, bool cellLists, GroovePackage& out) {
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kProfiles, profiles, sizeof(fmt::Profile), out.profiles));
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kProfilePoints, points, fmt::kProfilePointSize, out.profilePoints));
   BAKE_RETURN_IF_ERROR(reader.array(fmt::kMaterials, materials, sizeof(fmt::Material), out.materials));
+  if (out.header.version >= 2) {
+    BAKE_ASSIGN_OR_RETURN(const std::uint64_t farClasses, reader.count(fmt::kFarClasses));
+    BAKE_ASSIGN_OR_RETURN(const std::uint64_t farTable, reader.count(fmt::kFarTable));
+    const std::uint64_t nodes = std::uint64_t(out.header.farCells[0] + 1ull) * (out.header.farCells[1] + 1ull);
+    if (farClasses > 0 && farTable / farClasses != nodes)
+      return reader.fail("counts/farTable", "expected (columns + 1) x (rows + 1) nodes per far class");
+    if (farClasses == 0 && farTable != 0) return reader.fail("counts/farTable", "a table without classes");
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kFarClasses, farClasses, sizeof(fmt::FarClass), out.farClasses));
+    BAKE_RETURN_IF_ERROR(reader.array(fmt::kFarTable, farTable, fmt::kFarTableEntrySize, out.farTable));
+  }
   return {};
 }
 
@@ -171,6 +193,14 @@ Status checkIndices(const Reader& reader, bool cellLists, const GroovePackage& p
     if (std::uint64_t(p.profiles[k].points[0]) + p.profiles[k].points[1] > p.profilePoints.size() / 2 || p.profiles[k].points[1] < 2)
       return reader.fail("profiles/" + std::to_string(k), "bad point range");
   if (p.header.baseMaterial >= p.materials.size()) return reader.fail("baseMaterial", "out of range");
+  for (std::size_t c = 0; c < p.farClasses.size(); ++c) {
+    const fmt::FarClass& farClass = p.farClasses[c];
+    if (farClass.info[0] >= p.profiles.size() || farClass.info[1] >= p.materials.size() ||
+        farClass.info[2] >= p.primitives.size() || !finite(farClass.direction, 3) || !(farClass.direction[2] >= 0))
+      return reader.fail("farClasses/" + std::to_string(c), "bad profile, material, primitive or direction");
+  }
+  for (std::size_t k = 0; k < p.farTable.size(); ++k)
+    if (!std::isfinite(p.farTable[k])) return reader.fail("farTable/" + std::to_string(k), "not finite");
   return {};
 }
 

@@ -204,6 +204,10 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   const std::vector<std::uint32_t>& found = gatherPrimitives(grid_, serial_, box);
   if (stats) *stats = {false, std::uint32_t(found.size())};
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
+  if (settings_.foundCap > 0 && found.size() > settings_.foundCap && !grid_.far.empty()) {
+    if (stats) stats->far = true;
+    return shadeFromFarLevel(scene_, grid_, footprint, toViewer, lighting, settings_);
+  }
 
   // The primitives found, straightened at the footprint centred at `centre`.
   const bool jointsKnown = grid_.joints.size() == scene_.primitives.size();

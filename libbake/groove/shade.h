@@ -27,11 +27,16 @@ struct SeedSettings {
   // shadeSection), and a footprint near an arc's centre is split in sub-footprints (shade.cpp
   // nearArcCentre). The shader does the same.
   bool curvedSections = true;
+  // 0: every primitive found under a footprint is shaded (the seed's method). n > 0: as the runtime
+  // shader, which holds bake_formats/grooves.h kMaxFoundPerFootprint: a footprint with more than n
+  // primitives under its box is shaded from the grid's far level (shadeFromFarLevel).
+  std::size_t foundCap = 0;
 };
 
 struct ShadeStats {
   bool special = false;       // area sampling was used
   std::uint32_t primitives = 0;  // primitives found under the enlarged box
+  bool far = false;           // shaded from the far level (SeedSettings::foundCap)
 };
 
 class SeedShader {
@@ -47,6 +52,10 @@ class SeedShader {
   SeedSettings settings_;
   std::uint64_t serial_;  // unique per shader made: the key of the per-thread gather memos
 };
+
+// A footprint shaded from the grid's far level (groove/far_level.h; far_shade.cpp).
+Rgb shadeFromFarLevel(const GrooveScene& scene, const GrooveGrid& grid, const Footprint& footprint,
+                      const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings = {});
 
 Image renderSeed(const GrooveScene& scene, const GrooveGrid& grid, const View& view, const Lighting& lighting,
                     int threads, const SeedSettings& settings = {});

@@ -1,5 +1,5 @@
 // Assembly rules for groove objects (formats/grooves.md). The material's BAKE_grooves object names
-// its ten arrays by bufferView ("bufferViews") and gives their item counts ("counts"); each array
+// its arrays (ten, twelve from version 2 with the far level) by bufferView ("bufferViews") and gives their item counts ("counts"); each array
 // starts at a multiple of 256 bytes. When the scene's material does not read special cases, the
 // record arrays become empty as the format stores them: `records` and `recordRefs` one zeroed item
 // with count 0, `recordStart` all zero (cells + 1 of them), so every cell lists no record and the
@@ -56,13 +56,15 @@ Status adaptGrooves(glb::Package& package, const ObjectInput& input) {
 ExtensionReferences grooveReferences(const json& extension) {
   ExtensionReferences references;
   const json& views = extension.value(fmt::kBufferViews, json::object());
-  for (const char* key : fmt::kArrayKeys) references.blobs.push_back(indexAt(views, key));
+  for (const char* key : fmt::kArrayKeys)
+    if (views.contains(key)) references.blobs.push_back(indexAt(views, key));
   return references;
 }
 
 void renumberGrooves(json& extension, const Renumbering& renumbering) {
   json& views = extension[fmt::kBufferViews];
-  for (const char* key : fmt::kArrayKeys) views[key] = Renumbering::at(renumbering.blobs, indexAt(views, key));
+  for (const char* key : fmt::kArrayKeys)
+    if (views.contains(key)) views[key] = Renumbering::at(renumbering.blobs, indexAt(views, key));
 }
 
 }  // namespace

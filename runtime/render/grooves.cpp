@@ -24,14 +24,17 @@ namespace fmt = format::grooves;
 
 constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2;
 constexpr GLuint kHeaderBinding = 0;
-// Primitives kept per footprint (the shader's fixed arrays; more under one footprint are dropped).
-constexpr std::size_t kMaxFound = 24;
+// Primitives kept per footprint (the shader's fixed arrays; a footprint over more is shaded from the
+// package's far level, or counted as truncated in a version 1 package that has none).
+constexpr std::size_t kMaxFound = fmt::kMaxFoundPerFootprint;
+// The per-frame counts of far_level.glsl: far, truncated, classes dropped.
+constexpr std::size_t kFrameCounts = 3;
 // The area sampling arena of shaders/grooves/area_polygon.glsl (packages with special cases only):
 // kAreaSlots flags, then kAreaSlots x kAreaSlotFloats floats (40 MiB) that the shader cuts into as
 // many slots as fit (one invocation's cells, pieces and polygons: about 32,800 floats with 24
 // primitives found and 8-point profiles, so about 320 slots). A pixel sampled by area while every
 // slot is taken is line sampled instead.
-constexpr GLuint kAreaScratchBinding = 10;
+constexpr GLuint kAreaScratchBinding = fmt::kAreaScratchBinding;
 constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // After the slot flags, the shader's areaCounts: special-case fragments sampled by area, line sampled
 // for want of a slot, line sampled because a driver's loop cap cut the area sample short.
@@ -41,7 +44,7 @@ constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kA
 // lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short by
 // a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
 // again by quarters of their footprint, four draws each.
-constexpr GLuint kAreaRetryBinding = 11;
+constexpr GLuint kAreaRetryBinding = fmt::kAreaRetryBinding;
 constexpr std::size_t kRetryList = 4096;
 constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
 constexpr std::size_t kRetryListOffset = kRetryCountsOffset + 2 * sizeof(std::uint32_t);
@@ -54,8 +57,10 @@ struct HeaderBlock {
   float bounds[4];
   std::int32_t cells[4];
   std::int32_t counts[4];
+  float farCell[4];          // the far level's cell size u, v; 0, 0
+  std::int32_t farCells[4];  // its columns, rows, classes (0: no far level), 0
 };
-static_assert(sizeof(HeaderBlock) == 80);
+static_assert(sizeof(HeaderBlock) == 112);
 
 HeaderBlock headerBlock(const groove::GroovePackage& package) {
   const groove::GroovePackageHeader& h = package.header;
@@ -75,14 +80,21 @@ HeaderBlock headerBlock(const groove::GroovePackage& package) {
   block.cells[1] = std::int32_t(h.cells[1]);
   block.cells[2] = h.wrapRepeat ? 1 : 0;
   block.cells[3] = std::int32_t(h.baseMaterial);
+  block.farCell[0] = float(h.farCellSize[0]);
+  block.farCell[1] = float(h.farCellSize[1]);
+  block.farCells[0] = std::int32_t(h.farCells[0]);
+  block.farCells[1] = std::int32_t(h.farCells[1]);
+  block.farCells[2] = std::int32_t(package.farClasses.size());
   return block;
 }
 
 // The bufferView index of each array, in the order of fmt::kArrayKeys (decodeGroovePackage has
-// checked that they exist).
-std::array<std::size_t, fmt::kArrayCount> viewIndices(const nlohmann::json& extension) {
-  std::array<std::size_t, fmt::kArrayCount> views{};
-  for (std::size_t k = 0; k < fmt::kArrayCount; ++k) views[k] = extension[fmt::kBufferViews][fmt::kArrayKeys[k]].get<std::size_t>();
+// checked that they exist); -1 for the far level's arrays of a version 1 package.
+std::array<long long, fmt::kArrayCount> viewIndices(const nlohmann::json& extension) {
+  std::array<long long, fmt::kArrayCount> views{};
+  const nlohmann::json& named = extension[fmt::kBufferViews];
+  for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
+    views[k] = named.contains(fmt::kArrayKeys[k]) ? named[fmt::kArrayKeys[k]].get<long long>() : -1;
   return views;
 }
 
@@ -105,6 +117,7 @@ std::vector<std::string> packageDefines(const groove::GroovePackage& p, bool are
   // A footprint never finds more primitives than the package holds: small packages get small arrays.
   const std::size_t found = std::clamp<std::size_t>(p.primitives.size(), 1, kMaxFound);
   defines.push_back("MAX_FOUND " + std::to_string(found));
+  defines.push_back("MAX_CLASSES " + std::to_string(fmt::kMaxClassesPerFootprint));
   defines.push_back("MAX_REACH " + std::to_string(fmt::kMaxReach));
   return defines;
 }
@@ -122,6 +135,7 @@ GroovesRenderer::~GroovesRenderer() {
   }
   if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
   if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
+  if (frameCounts_ != 0) glDeleteBuffers(1, &frameCounts_);
 }
 
 // The arena, zeroed (every slot free), made once for all packages with special cases.
@@ -176,14 +190,16 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       const auto views = viewIndices(extension);
       Upload upload;
       std::size_t total = 0;
+      // An array the package lacks (no far level) is bound to 16 zero bytes.
       for (std::size_t k = 0; k < fmt::kArrayCount; ++k) {
         upload.offset[k] = total;
-        upload.size[k] = package.blobs[views[k]].bytes.size();
+        upload.size[k] = views[k] >= 0 ? package.blobs[std::size_t(views[k])].bytes.size() : 16;
         total = alignUp(total + upload.size[k], alignment);
       }
       std::vector<std::uint8_t> bytes(total, 0);
       for (std::size_t k = 0; k < fmt::kArrayCount; ++k)
-        std::memcpy(bytes.data() + upload.offset[k], package.blobs[views[k]].bytes.data(), upload.size[k]);
+        if (views[k] >= 0)
+          std::memcpy(bytes.data() + upload.offset[k], package.blobs[std::size_t(views[k])].bytes.data(), upload.size[k]);
       glCreateBuffers(1, &upload.storage);
       glNamedBufferStorage(upload.storage, GLsizeiptr(bytes.size()), bytes.data(), 0);
       const HeaderBlock header = headerBlock(decoded);
@@ -193,6 +209,11 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       uploadOfPackage[key] = uploads_.size();
       definesOfPackage[key] = packageDefines(decoded, options_.areaSampling);
       if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
+      if (frameCounts_ == 0) {
+        glCreateBuffers(1, &frameCounts_);
+        glNamedBufferStorage(frameCounts_, kFrameCounts * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        bytes_ += kFrameCounts * sizeof(std::uint32_t);
+      }
       uploads_.push_back(upload);
     }
 
@@ -243,6 +264,7 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, areaRetry_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, fmt::kFrameCountsBinding, frameCounts_);
   item.mesh.draw();
 }
 
@@ -297,6 +319,10 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
 
 void GroovesRenderer::draw(const FrameContext& frame) {
   retryPasses_ = 0;
+  if (frameCounts_ != 0) {
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(frameCounts_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  }
   if (areaScratch_ != 0) {  // the counts and marks are the frame's own
     const std::uint32_t zero = 0;
     glClearNamedBufferSubData(areaScratch_, GL_R32UI, GLintptr(kAreaCountsOffset), kAreaCounts * sizeof(std::uint32_t),
@@ -308,32 +334,54 @@ void GroovesRenderer::draw(const FrameContext& frame) {
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
   if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, fmt::kFrameCountsBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
 }
 
 nlohmann::json GroovesRenderer::statistics() const {
-  if (areaScratch_ == 0) return nullptr;  // no package with special cases, or area sampling off
+  if (frameCounts_ == 0) return nullptr;  // nothing drawn
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t frame[kFrameCounts] = {};
+  glGetNamedBufferSubData(frameCounts_, 0, sizeof frame, frame);
+  nlohmann::json s = {{"grooveFarFragments", frame[0]},
+                      {"grooveTruncatedFragments", frame[1]},
+                      {"grooveClassesDroppedFragments", frame[2]}};
+  if (areaScratch_ == 0) return s;  // no package with special cases, or area sampling off
   std::uint32_t counts[kAreaCounts] = {};
   glGetNamedBufferSubData(areaScratch_, GLintptr(kAreaCountsOffset), sizeof counts, counts);
-  return {{"grooveAreaFragments", counts[0] + counts[1] + counts[2]},
-          {"grooveAreaLineSampledNoSlot", counts[1]},
-          {"grooveAreaLineSampledLoopCap", counts[2]},
-          {"grooveAreaRetried", counts[3]},
-          {"grooveAreaRetryPasses", retryPasses_}};
+  s["grooveAreaFragments"] = counts[0] + counts[1] + counts[2];
+  s["grooveAreaLineSampledNoSlot"] = counts[1];
+  s["grooveAreaLineSampledLoopCap"] = counts[2];
+  s["grooveAreaRetried"] = counts[3];
+  s["grooveAreaRetryPasses"] = retryPasses_;
+  return s;
 }
 
 std::vector<std::string> GroovesRenderer::warnings() const {
   const nlohmann::json s = statistics();
   if (s.is_null()) return {};
+  std::vector<std::string> out;
+  const auto truncated = s["grooveTruncatedFragments"].get<std::uint32_t>();
+  if (truncated > 0)
+    out.push_back("grooves: " + std::to_string(truncated) + " fragments of the last frame had more than " +
+                  std::to_string(kMaxFound) +
+                  " primitives under their footprint and the package has no far level (BAKE_grooves version 1): "
+                  "the grooves past that were dropped; bake it again with this groovebake");
+  const auto dropped = s["grooveClassesDroppedFragments"].get<std::uint32_t>();
+  if (dropped > 0)
+    out.push_back("grooves: " + std::to_string(dropped) + " fragments of the last frame had grooves in more than " +
+                  std::to_string(fmt::kMaxClassesPerFootprint) +
+                  " directions under their footprint: the directions past that were dropped");
+  if (!s.contains("grooveAreaFragments")) return out;
   const auto noSlot = s["grooveAreaLineSampledNoSlot"].get<std::uint32_t>();
   const auto loopCap = s["grooveAreaLineSampledLoopCap"].get<std::uint32_t>();
-  if (noSlot + loopCap == 0) return {};
-  return {"grooves: " + std::to_string(noSlot + loopCap) + " of " + s["grooveAreaFragments"].dump() +
-          " special-case fragments of the last frame were line sampled instead of sampled by area (" +
-          std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
-          " were cut short by the driver's cap on loop iterations, as llvmpipe has, and not finished by the "
-          "retry passes)"};
+  if (noSlot + loopCap == 0) return out;
+  out.push_back("grooves: " + std::to_string(noSlot + loopCap) + " of " + s["grooveAreaFragments"].dump() +
+                " special-case fragments of the last frame were line sampled instead of sampled by area (" +
+                std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
+                " were cut short by the driver's cap on loop iterations, as llvmpipe has, and not finished by the "
+                "retry passes)");
+  return out;
 }
 
 std::size_t GroovesRenderer::gpuBytes() const {

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <bake_formats/grooves.h>
+
 #include "io/glb.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -47,7 +49,8 @@ class GroovesRenderer : public TechniqueRenderer {
                  gl::ShaderLibrary& shaders) override;
   void draw(const FrameContext& frame) override;
   std::size_t gpuBytes() const override;
-  // Of the last frame: special-case fragments sampled by area and those line sampled instead.
+  // Of the last frame: fragments shaded from the far level or truncated, special-case fragments
+  // sampled by area and those line sampled instead.
   nlohmann::json statistics() const override;
   std::vector<std::string> warnings() const override;
 
@@ -58,10 +61,14 @@ class GroovesRenderer : public TechniqueRenderer {
   unsigned areaRetry_ = 0;  // retry lists, sums and per-pixel marks (shaders/grooves/area_retry.glsl)
   std::size_t retryBytes_ = 0;
   std::uint32_t retryPasses_ = 0;  // of the last frame
+  // The shader's per-frame counts (far_level.glsl): fragments shaded from the far level, over more
+  // primitives than it holds without a far level (a version 1 package: the rest dropped), and with
+  // more classes of grooves than it keeps (the rest dropped).
+  unsigned frameCounts_ = 0;
   // One uploaded package: the buffer of its bufferViews and their ranges, and the header block.
   struct Upload {
     unsigned storage = 0, header = 0;
-    std::array<std::size_t, 10> offset{}, size{};
+    std::array<std::size_t, format::grooves::kArrayCount> offset{}, size{};
   };
   struct Item {
     GpuPrimitive mesh;

@@ -28,7 +28,7 @@
 #define AREA_POLY (1 + 2 * AREA_MAX_VERTICES)  // count, then the vertices
 #define AREA_EDGES (3 * AREA_MAX_VERTICES)     // the half-planes of a polygon's edges
 
-layout(std430, binding = 10) coherent buffer AreaScratch {
+layout(std430, binding = 12) coherent buffer AreaScratch {
   uint areaBusy[AREA_SLOTS];
   // Fragments of the frame over special cases: sampled by area, line sampled for want of a free slot,
   // line sampled because a driver's loop cap cut the area sample short, and cut short in the first

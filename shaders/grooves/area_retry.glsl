@@ -16,7 +16,7 @@
 #error "AREA_RETRY_LIST comes from the renderer (runtime/render/grooves.cpp kRetryList)"
 #endif
 
-layout(std430, binding = 11) coherent buffer AreaRetry {
+layout(std430, binding = 13) coherent buffer AreaRetry {
   vec4 retrySums[AREA_RETRY_LIST];  // per pixel of the second list: the quarters' sum, w: one was cut
   uint retryListCount[2];           // pixels listed: [0] to shade again whole, [1] by quarters
   uint retryList[2 * AREA_RETRY_LIST];  // (y << 16) | x; list k from k * AREA_RETRY_LIST

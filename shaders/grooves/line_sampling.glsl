@@ -15,6 +15,7 @@
 #ifndef BAKE_GROOVES_LINE_SAMPLING_GLSL
 #define BAKE_GROOVES_LINE_SAMPLING_GLSL
 
+#include "far_level.glsl"
 #include "occlusion.glsl"
 
 #ifndef MAX_CLASSES
@@ -26,6 +27,10 @@ const float kDriftFraction = 1e-3;
 
 bool gSpecialCase;
 int gClassOf[MAX_FOUND];  // -1: not kept
+// The footprint is shaded from the far level (far_level.glsl): lineSample runs the package's classes
+// instead of the grooves found.
+bool gFarMode = false;
+bool gClassesDropped = false;  // more directions under the footprint than MAX_CLASSES: some dropped
 
 // foot - F, reduced to the nearest copy when the scene repeats.
 vec2 offsetFromCentre(vec2 foot) {
@@ -114,25 +119,45 @@ vec3 lineSample(vec2 axis1, vec2 axis2, vec3 toViewer, vec3 flatBase) {
   float reach = 0.5 * (length(axis1) + length(axis2)) + uBounds.x + uBounds.y + uBounds.z;
   int fronts[MAX_CLASSES];
   int classes = 0;
-  for (int i = 0; i < gGrooveCount; ++i) {
-    gClassOf[i] = -1;
-    if (!reachesFootprint(gGrooves[i], axis1, axis2)) continue;
-    int cls = 0;
-    while (cls < classes && !parallelGrooves(gGrooves[fronts[cls]], gGrooves[i], reach)) ++cls;
-    if (cls == classes) {
-      if (classes == MAX_CLASSES) continue;  // more directions than the shader keeps: dropped
-      fronts[classes++] = i;
+  if (gFarMode) {
+    classes = farClassCount();
+  } else {
+    for (int i = 0; i < gGrooveCount; ++i) {
+      gClassOf[i] = -1;
+      if (!reachesFootprint(gGrooves[i], axis1, axis2)) continue;
+      int cls = 0;
+      while (cls < classes && !parallelGrooves(gGrooves[fronts[cls]], gGrooves[i], reach)) ++cls;
+      if (cls == classes) {
+        if (classes == MAX_CLASSES) {  // more directions than the shader keeps: dropped, and counted
+          gClassesDropped = true;
+          continue;
+        }
+        fronts[classes++] = i;
+      }
+      gClassOf[i] = cls;
     }
-    gClassOf[i] = cls;
   }
   if (classes == 0) return flatBase;
-  // One call of shadeClass, so that the compiler inlines it once.
+  // One call of shadeClass, so that the compiler inlines it once; the far level's classes go through
+  // it too, each as its groove alone across its band, weighted by its share of the footprint.
   vec3 sum = flatBase, value = flatBase;
   for (int c = 0; c < classes; ++c) {
-    value = shadeClass(c, fronts[c], axis1, axis2, toViewer);
-    sum += value - flatBase;
+    int cls = c, front = 0;
+    vec2 a1 = axis1, a2 = axis2;
+    float weight = 1.0;
+    if (gFarMode) {
+      weight = farCover(c);
+      if (!(weight > 0.0)) continue;
+      prepareFarGroove(c, a1, a2);
+      gClassOf[0] = 0;
+      cls = 0;
+    } else {
+      front = fronts[c];
+    }
+    value = shadeClass(cls, front, a1, a2, toViewer);
+    sum += weight * (value - flatBase);
   }
-  return classes == 1 ? value : max(sum, vec3(0.0));
+  return classes == 1 && !gFarMode ? value : max(sum, vec3(0.0));
 }
 
 // shade.cpp nearArcCentre: a footprint whose centre lies within kNearCentre half-extents of an arc's
@@ -198,22 +223,35 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   queryBox(axis1, axis2, toViewer, gLightDir, uBounds.x, lower, upper);
   gatherPrimitives(lower, upper);
   if (gFoundCount == 0) return flatBase;
-  gGrooveCount = gFoundCount;
-  straightenFound(centre);
+  // More primitives under the box than the shader holds: the far level, when the package has one
+  // (libbake's SeedSettings::foundCap does the same on the CPU); else those past MAX_FOUND are
+  // dropped, and counted.
+  gFarMode = gFoundOverflow && hasFarLevel();
+  if (gFoundOverflow) countFragment(gFarMode ? kCountFar : kCountTruncated);
+  if (gFarMode) {
+    setFarBox(centre, axis1, axis2);  // no special case is looked for: the far level averages them away
+  } else {
+    gGrooveCount = gFoundCount;
+    straightenFound(centre);
+  }
   // Line sampled before the area branch, not after: Mesa's llvmpipe stops every loop of a SIMD group
   // once the group has run 65,535 loop iterations in all (drivers of real GPUs have no such cap), and
   // area sampling can use them up; a loop run after it would then do nothing for the whole group.
   vec3 radiance = vec3(0.0);
   bool sampled = false;
 #ifdef HAS_SPECIAL_CASES
-  vec2 recordLower, recordUpper;
-  queryBox(axis1, axis2, toViewer, gLightDir, 0.0, recordLower, recordUpper);
-  gSpecialCase = specialCaseUnder(recordLower, recordUpper);
+  if (!gFarMode) {
+    vec2 recordLower, recordUpper;
+    queryBox(axis1, axis2, toViewer, gLightDir, 0.0, recordLower, recordUpper);
+    gSpecialCase = specialCaseUnder(recordLower, recordUpper);
+  }
 #endif
   // A special case's line sample only stands in for a failed area sample: it is not split (the
   // split's loops would leave the area sample fewer iterations under such a cap).
-  bool split = !gSpecialCase && nearArcCentre(axis1, axis2);
+  bool split = !gFarMode && !gSpecialCase && nearArcCentre(axis1, axis2);
+  gClassesDropped = false;
   vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, split);
+  if (gClassesDropped) countFragment(kCountClassesDropped);
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;

@@ -39,7 +39,7 @@ struct LocalGroove {
 
 LocalGroove gGrooves[MAX_FOUND];
 int gGrooveCount;
-bool gFoundOverflow;  // more primitives under the box than MAX_FOUND: the furthest in index are dropped
+bool gFoundOverflow;  // more primitives under the box than MAX_FOUND: shaded from the far level (far_level.glsl)
 
 // |d_uv| / d_w, capped at kMaxReach: how far a line along d travels over the base plane per unit of
 // height (line_sampling.glsl curvatureShows uses it too).
@@ -127,11 +127,16 @@ void insertFound(uint primitive) {
   }
 }
 
+// Once more primitives than MAX_FOUND are found and the package has a far level, the footprint is
+// shaded from that level (far_level.glsl), so the gather stops: a far pixel over thousands of grooves
+// costs what its first MAX_FOUND + 1 cost (and stays under a driver's cap on loop iterations).
+bool gatherDone() { return gFoundOverflow && uFarCells.z > 0; }
+
 void gatherCells(vec2 lower, vec2 upper) {
   ivec2 first, last;
   if (!cellRange(lower, upper, first, last)) return;
-  for (int j = first.y; j <= last.y; ++j)
-    for (int i = first.x; i <= last.x; ++i) {
+  for (int j = first.y; j <= last.y && !gatherDone(); ++j)
+    for (int i = first.x; i <= last.x && !gatherDone(); ++i) {
       int cell = storedCell(ivec2(i, j));
       for (uint k = cellStart[cell]; k < cellStart[cell + 1]; ++k) insertFound(primitiveRefs[k]);
     }

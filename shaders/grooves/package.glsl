@@ -35,6 +35,10 @@ struct GrooveMaterial {
   vec4 specular;       // rgb, has mirror
   vec4 mirror;         // rgb
 };
+struct FarClass {
+  uvec4 info;          // profile, material, representative primitive, 0
+  vec4 direction;      // unit tangent u, v; the profile's wmax; 0
+};
 
 layout(std430, binding = 0) readonly buffer CellStart { uint cellStart[]; };
 layout(std430, binding = 1) readonly buffer PrimitiveRefs { uint primitiveRefs[]; };
@@ -46,6 +50,9 @@ layout(std430, binding = 6) readonly buffer Grooves { GrooveInfo grooves[]; };
 layout(std430, binding = 7) readonly buffer Profiles { GrooveProfile profiles[]; };
 layout(std430, binding = 8) readonly buffer ProfilePoints { vec2 profilePoints[]; };
 layout(std430, binding = 9) readonly buffer Materials { GrooveMaterial materials[]; };
+// The far level (far_level.glsl; version 2 packages, else 16 zero bytes and uFarCells.z = 0).
+layout(std430, binding = 10) readonly buffer FarClasses { FarClass farClasses[]; };
+layout(std430, binding = 11) readonly buffer FarTable { double farTable[]; };
 
 layout(std140, binding = 0) uniform GrooveHeader {
   vec4 uDomainCell;    // domain U, V; cell size u, v
@@ -53,6 +60,8 @@ layout(std140, binding = 0) uniform GrooveHeader {
   vec4 uBounds;        // wmax, hmax, dmax, 0
   ivec4 uCells;        // columns, rows, wrap (0/1), base material
   ivec4 uCounts;       // primitives, records, 0, 0
+  vec4 uFarCell;       // far level cell size u, v; 0, 0
+  ivec4 uFarCells;     // far level columns, rows, classes (0: none), 0
 };
 
 const float kPi = 3.14159265358979;

@@ -191,7 +191,10 @@ TEST(GroovePackage, ReaderRefusesDamagedPackages) {
     ASSERT_FALSE(r.isOk()) << fragment;
     EXPECT_NE(r.status().describe().find(fragment), std::string::npos) << r.status().describe();
   };
-  expectRefused([](json& e) { e["version"] = 2; }, "version 2");
+  expectRefused([](json& e) { e["version"] = fmt::kVersion + 1; }, ("version " + std::to_string(fmt::kVersion + 1)).c_str());
+  expectRefused([](json& e) { e["version"] = 0; }, "version 0");
+  expectRefused([](json& e) { e["far"]["cells"] = {0, 4}; }, "far/cells");
+  expectRefused([](json& e) { e["counts"]["farTable"] = 5; }, "farTable");
   expectRefused([](json& e) { e["counts"]["primitives"] = 1000000; }, "fewer than");
   expectRefused([](json& e) { e["bufferViews"]["records"] = 99; }, "does not exist");
   expectRefused([](json& e) { e["grid"]["cells"][0] = 3; }, "does not match");

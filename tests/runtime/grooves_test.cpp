@@ -21,6 +21,7 @@
 
 #include "groove/grid.h"
 #include "groove/package.h"
+#include "groove/reference.h"
 #include "groove/scene.h"
 #include "groove/shade.h"
 #include "io/glb.h"
@@ -141,6 +142,11 @@ struct OracleFigures {
   // pixels that test the shader's curved sections).
   std::size_t curvedShows = 0;
   std::size_t nearArcCentre = 0;  // line-sampled pixels near a watched arc centre (arcCentres_)
+  std::size_t far = 0;            // pixels the CPU shaded from the far level (over kMaxFoundPerFootprint)
+  // Those pixels against the seed's method with every primitive found (no cap): what the far level
+  // stands in for.
+  int farToExactMaxLevels = 0;
+  double farToExactRmse = 0;
 };
 
 int quantised(double x) { return int(std::lround(255.0 * std::clamp(x, 0.0, 1.0))); }
@@ -186,10 +192,15 @@ class GroovesOracle : public test::GlTest {
     figures.radiance = radiance;
     figures.statistics = renderer.statistics();
 
-    const groove::SeedShader oracle(baked.scene, baked.grid);
-    groove::SeedSettings straightArcs;
+    // The CPU holds what the shader holds: a footprint over more primitives goes to the far level.
+    groove::SeedSettings asRuntime;
+    asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
+    const groove::SeedShader oracle(baked.scene, baked.grid, asRuntime);
+    groove::SeedSettings straightArcs = asRuntime;
     straightArcs.curvedSections = false;
     const groove::SeedShader straight(baked.scene, baked.grid, straightArcs);
+    const groove::SeedShader uncapped(baked.scene, baked.grid);
+    double farSquared = 0;
     double squared = 0, sum = 0, specialSquared = 0;
     for (std::size_t p = 0; p < std::size_t(kSize) * kSize; ++p) {
       const float* a = &in0[p * 4];
@@ -203,6 +214,15 @@ class GroovesOracle : public test::GlTest {
       light3.maxBounces = maxBounces;
       groove::ShadeStats stats;
       const groove::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
+      figures.far += stats.far ? 1 : 0;
+      if (stats.far) {
+        const groove::Rgb exact = uncapped.shade(footprint, toViewer, light3);
+        for (int k = 0; k < 3; ++k) {
+          const double got = radiance[p * 4 + std::size_t(k)], want = exact[std::size_t(k)];
+          farSquared += (got - want) * (got - want);
+          figures.farToExactMaxLevels = std::max(figures.farToExactMaxLevels, std::abs(quantised(got) - quantised(want)));
+        }
+      }
       const bool shaderSpecial = radiance[p * 4 + 3] > 1.5f;
       figures.shaderSpecial += shaderSpecial ? 1 : 0;
       const float flag = radiance[p * 4 + 3];
@@ -259,6 +279,7 @@ class GroovesOracle : public test::GlTest {
       figures.rmse = std::sqrt(squared / (3.0 * double(figures.pixels)));
       figures.meanRadiance = sum / (3.0 * double(figures.pixels));
     }
+    if (figures.far > 0) figures.farToExactRmse = std::sqrt(farSquared / (3.0 * double(figures.far)));
     if (figures.special > 0) figures.specialRmse = std::sqrt(specialSquared / (3.0 * double(figures.special)));
     return figures;
   }
@@ -325,26 +346,164 @@ TEST_F(GroovesOracle, ParallelSetFarAway) {
 }
 
 // Very far away (footprints of tens of groove widths): more grooves under a footprint than the
-// shader's fixed arrays hold (MAX_FOUND) are dropped, so the image is only measured; it must stay
-// finite and within the range of the material.
-TEST_F(GroovesOracle, ParallelSetVeryFarIsFiniteAndMeasured) {
+// shader's fixed arrays hold (MAX_FOUND) are shaded from the package's far level, on the GPU as on
+// the CPU, and every such fragment is counted in the frame's statistics.
+// 2,000 fine grooves 0.002 apart over a 4 x 4 plate: seen from where ParallelSetFarAway looks, a
+// pixel covers up to 70 of them.
+std::string veryFarScene() {
   std::vector<double> vs;
-  for (int k = 0; k < 200; ++k) vs.push_back(0.01 + 0.02 * k);
-  const Baked baked = bake(sceneJson(4, R"("fine": {"points": [[-0.006, 0], [0, -0.008], [0.006, 0]]})", kGrey, "grey",
-                                     linesAlongU(vs, 4, "fine")),
-                           "parallel_very_far");
+  for (int k = 0; k < 2000; ++k) vs.push_back(0.001 + 0.002 * k);
+  return sceneJson(4, R"("fine": {"points": [[-0.0006, 0], [0, -0.0008], [0.0006, 0]]})", kGrey, "grey",
+                   linesAlongU(vs, 4, "fine"));
+}
+
+TEST_F(GroovesOracle, ParallelSetVeryFarUsesTheFarLevel) {
+  const Baked baked = bake(veryFarScene(), "parallel_very_far");
   ASSERT_FALSE(baked.file.empty());
-  const OracleFigures f = compare(baked, {2.0f, -30.0f, 40.0f}, {2.0f, 2.0f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
-  std::printf("[ grooves ] parallel_very_far: %zu pixels, RMSE %.3g, max %d/255 (grooves past MAX_FOUND dropped)\n",
-              f.pixels, f.rmse, f.maxLevels);
-  RecordProperty("parallel_very_far_rmse", std::to_string(f.rmse));
-  RecordProperty("parallel_very_far_max_levels", f.maxLevels);
-  EXPECT_GT(f.pixels, 0u);
-  for (float x : f.radiance) {
-    ASSERT_TRUE(std::isfinite(x));
-    ASSERT_GE(x, 0.0f);
-    ASSERT_LE(x, 1.0f);
+  const OracleFigures f = compare(baked, {2.0f, -2.0f, 3.0f}, {2.0f, 2.0f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
+  std::printf("[ grooves ] parallel_very_far: %zu of %zu pixels from the far level; against every groove shaded "
+              "(no cap): RMSE %.3g, max %d/255\n", f.far, f.pixels, f.farToExactRmse, f.farToExactMaxLevels);
+  RecordProperty("parallel_very_far_to_exact_rmse", std::to_string(f.farToExactRmse));
+  RecordProperty("parallel_very_far_to_exact_max_levels", f.farToExactMaxLevels);
+  expectWithinTwoLevels(f, "parallel_very_far");
+  EXPECT_GT(f.far, f.pixels / 4) << "the view should put many footprints over the cap";
+  // What the far level stands in for: every groove shaded (the seed's method without the cap). Its
+  // error is the coverage of a footprint's bounding box read from a table two grooves per cell.
+  EXPECT_LE(f.farToExactRmse, 1.0 / 255);
+  EXPECT_LE(f.farToExactMaxLevels, 4);
+  ASSERT_TRUE(f.statistics.is_object());
+  // Up to footprints whose count of primitives sits on the cap within rounding of their boxes.
+  const auto shaderFar = f.statistics["grooveFarFragments"].get<std::size_t>();
+  EXPECT_LE(std::max(shaderFar, f.far) - std::min(shaderFar, f.far), f.pixels / 100 + 1) << "shader " << shaderFar << ", CPU " << f.far << ": " << f.statistics.dump();
+  EXPECT_EQ(f.statistics["grooveTruncatedFragments"], 0);
+}
+
+// A version 1 package has no far level: the footprints over the shader's cap keep MAX_FOUND
+// primitives and drop the rest, and the frame's statistics count every one of them.
+TEST_F(GroovesOracle, VersionOnePackageCountsTruncatedFootprints) {
+  Baked baked = bake(veryFarScene(), "parallel_version_one");
+  ASSERT_FALSE(baked.file.empty());
+  Result<glb::Package> package = glb::read(baked.file);
+  ASSERT_TRUE(package.isOk());
+  nlohmann::json& extension = package->materials[0]["extensions"][format::grooves::kExtension];
+  extension["version"] = 1;
+  extension.erase(format::grooves::kFar);
+  for (const char* key : {format::grooves::kFarClasses, format::grooves::kFarTable}) {
+    extension[format::grooves::kBufferViews].erase(key);
+    extension[format::grooves::kCounts].erase(key);
+    extension["strides"].erase(key);
   }
+  baked.file = baked.file.parent_path() / "version_one.glb";
+  ASSERT_TRUE(glb::write(baked.file, *package).isOk());
+  const OracleFigures f = compare(baked, {2.0f, -2.0f, 3.0f}, {2.0f, 2.0f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
+  ASSERT_TRUE(f.statistics.is_object());
+  EXPECT_EQ(f.statistics["grooveFarFragments"], 0);
+  const auto truncated = f.statistics["grooveTruncatedFragments"].get<std::size_t>();
+  EXPECT_LE(std::max(truncated, f.far) - std::min(truncated, f.far), f.pixels / 100 + 1)
+      << "shader " << truncated << ", CPU over the cap " << f.far;
+  EXPECT_GT(truncated, f.pixels / 4);
+}
+
+// bench/groove's dense-parallel views (bench/groove/cases.json: 1,001 V-grooves, footprint / width
+// from 0.1 to 1000), drawn by the runtime's renderer through an oblique orthographic projection whose
+// pixels are exactly the bench's footprints (render.h windowView), against the ray-traced reference
+// (groove/reference.h): within 3x the reference's own noise floor (two renders with other seeds) at
+// every footprint (half an 8-bit level where the reference has no noise). Past MAX_FOUND primitives
+// under a footprint the far level shades it.
+TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {
+  const fs::path source = fs::path(BAKE_SOURCE_DIR) / "bench" / "groove";
+  auto scene = groove::readGrooveScene((source / "scenes" / "parallel-1000.json").string());
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  auto grid = groove::buildGrooveGrid(*scene, {});
+  ASSERT_TRUE(grid.isOk()) << grid.status().describe();
+  auto package = groove::buildGroovePackage(*scene, *grid);
+  ASSERT_TRUE(package.isOk()) << package.status().describe();
+  const fs::path file = test::freshTempDir("grooves_dense_parallel") / "dense.glb";
+  ASSERT_TRUE(glb::write(file, *package).isOk());
+  Diagnostics diagnostics("bakeplay", true);
+  auto loaded = loadScene({file}, diagnostics, [](const std::string&) { return true; });
+  ASSERT_TRUE(loaded.isOk()) << loaded.status().describe();
+  gl::ShaderLibrary shaders;
+  GroovesRenderer renderer({0, false, false, 0});
+  ASSERT_TRUE(renderer.prepare(*loaded, {0}, shaders).isOk());
+
+  std::ifstream casesFile(source / "cases.json");
+  const nlohmann::json cases = nlohmann::json::parse(casesFile);
+  int views = 0;
+  std::size_t farFragments = 0;
+  double worstRatio = 0;
+  for (const nlohmann::json& c : cases["cases"]) {
+    if (c["name"] != "dense-parallel") continue;
+    const groove::Vec2 lower{c["window"][0][0].get<double>(), c["window"][0][1].get<double>()};
+    const groove::Vec2 upper{c["window"][1][0].get<double>(), c["window"][1][1].get<double>()};
+    for (const nlohmann::json& theta : c["view"]["theta"]) {
+      const double radians = 3.14159265358979323846 / 180;
+      const groove::View view = groove::windowView(lower, upper, c["width"].get<int>(), theta.get<double>() * radians,
+                                                   c["view"]["phi"].get<double>() * radians);
+      groove::Lighting lighting;
+      lighting.toLight = groove::directionFromAngles(c["light"]["theta"].get<double>() * radians,
+                                                     c["light"]["phi"].get<double>() * radians);
+      ASSERT_LE(view.width, kSize);
+      ASSERT_LE(view.height, kSize);
+      // x = u, y = v of the plane onto the view's pixels (GL row r is the view's row height - 1 - r).
+      const double pixel = view.axisX.u, w = pixel * view.width, h = pixel * view.height, bottom = upper.v - h;
+      Mat4 projection{};
+      projection[0] = float(2 / w);
+      projection[5] = float(2 / h);
+      projection[12] = float(-1 - 2 * lower.u / w);
+      projection[13] = float(-1 - 2 * bottom / h);
+      projection[15] = 1;
+      const Vec3 centre{float(lower.u + 0.5 * w), float(bottom + 0.5 * h), 0};
+      const double far = 1e7;  // the camera along E, so far that every pixel sees the plane along E
+      const Camera camera{{float(centre[0] + far * view.toViewer.u), float(centre[1] + far * view.toViewer.v),
+                           float(far * view.toViewer.w)},
+                          centre, {0, 1, 0}, 0.7f, 0.01f, 100.0f};
+      const Light light{{float(lighting.toLight.u), float(lighting.toLight.v), float(lighting.toLight.w)}, {1, 1, 1}};
+      const FrameContext frame{*loaded, camera, light, identity(), projection, view.width, view.height};
+      FloatTarget target;
+      target.bindAndClear();
+      glViewport(0, 0, view.width, view.height);
+      glDisable(GL_DEPTH_TEST);
+      renderer.draw(frame);
+      glFinish();
+      const std::vector<float> rendered = target.read(0);
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      farFragments += renderer.statistics()["grooveFarFragments"].get<std::size_t>();
+
+      groove::ReferenceSettings reference;
+      reference.samplesPerPixel = 256;
+      const Image truth = groove::renderReference(*scene, view, lighting, reference);
+      reference.seed = 2;
+      const Image second = groove::renderReference(*scene, view, lighting, reference);
+      double squared = 0, floorSquared = 0;
+      for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x)
+          for (int k = 0; k < 3; ++k) {
+            const double got = rendered[(std::size_t(view.height - 1 - y) * kSize + std::size_t(x)) * 4 + std::size_t(k)];
+            squared += (got - truth.at(x, y, k)) * (got - truth.at(x, y, k));
+            floorSquared += (second.at(x, y, k) - truth.at(x, y, k)) * (second.at(x, y, k) - truth.at(x, y, k));
+          }
+      const double values = 3.0 * view.width * view.height;
+      const double rmse = std::sqrt(squared / values), floor = std::sqrt(floorSquared / values);
+      // A footprint inside one facet gives every reference sample the same value: no noise floor;
+      // there the bound is half an 8-bit level of the output.
+      const double ratio = floor > 0 ? rmse / floor : 0;
+      worstRatio = std::max(worstRatio, ratio);
+      const double footprintOverWidth = pixel / (2 * scene->wmax);
+      std::printf("[ grooves ] dense-parallel footprint/width %7.1f, theta %2.0f: %2dx%d px, RMSE %.3g, noise floor %.3g, "
+                  "ratio %.2f\n",
+                  footprintOverWidth, theta.get<double>(), view.width, view.height, rmse, floor, ratio);
+      RecordProperty("dense_parallel_" + std::to_string(int(std::lround(footprintOverWidth))) + "_" +
+                         std::to_string(theta.get<int>()) + "_ratio",
+                     std::to_string(ratio));
+      EXPECT_LE(rmse, floor > 0 ? 3 * floor : 0.5 / 255) << "footprint/width " << footprintOverWidth << ", theta " << theta;
+      ++views;
+    }
+  }
+  std::printf("[ grooves ] dense-parallel: %d views, worst RMSE / noise floor %.2f, %zu fragments from the far level\n",
+              views, worstRatio, farFragments);
+  EXPECT_EQ(views, 10);
+  EXPECT_GT(farFragments, 0u) << "the widest footprints should be over the shader's cap";
 }
 
 TEST_F(GroovesOracle, RidgesCastShadows) {

@@ -10,7 +10,10 @@
 namespace bake::format::grooves {
 
 inline constexpr const char* kExtension = "BAKE_grooves";
-inline constexpr int kVersion = 1;
+inline constexpr int kVersion = 2;
+// Version 1 packages (no far level) are still read; the runtime counts their footprints over more
+// primitives than it holds as truncated.
+inline constexpr int kOldestReadableVersion = 1;
 
 // The shading's reach (the CPU method in libbake/groove and the runtime shader, passed as MAX_REACH):
 // the footprint box is enlarged along a direction d by at most this many heights, |d_uv| / d_w capped
@@ -32,9 +35,23 @@ inline constexpr const char* kGrooves = "grooves";              // Groove
 inline constexpr const char* kProfiles = "profiles";            // Profile
 inline constexpr const char* kProfilePoints = "profilePoints";  // float b, h
 inline constexpr const char* kMaterials = "materials";          // Material
-inline constexpr const char* kArrayKeys[] = {kCellStart, kPrimitiveRefs, kRecordStart, kRecordRefs, kRecords,
-                                             kPrimitives, kGrooves,    kProfiles,    kProfilePoints, kMaterials};
+inline constexpr const char* kFarClasses = "farClasses";        // FarClass (version 2)
+inline constexpr const char* kFarTable = "farTable";            // float64 (version 2)
+inline constexpr const char* kArrayKeys[] = {kCellStart, kPrimitiveRefs, kRecordStart,   kRecordRefs, kRecords,  kPrimitives,
+                                             kGrooves,   kProfiles,     kProfilePoints, kMaterials,  kFarClasses, kFarTable};
 inline constexpr std::size_t kArrayCount = sizeof(kArrayKeys) / sizeof(kArrayKeys[0]);
+// The arrays a version 1 package has: the first ten.
+inline constexpr std::size_t kVersion1ArrayCount = 10;
+// Storage-buffer binding points of the runtime shader: array k of kArrayKeys at binding k, then these.
+inline constexpr std::uint32_t kAreaScratchBinding = 12;
+inline constexpr std::uint32_t kAreaRetryBinding = 13;
+inline constexpr std::uint32_t kFrameCountsBinding = 14;
+
+// What one footprint's shading holds in the runtime shader (its fixed arrays): primitives found
+// under the footprint's box, and classes of parallel grooves among them. A footprint over more
+// primitives is shaded from the far level; more classes than the shader keeps are dropped and counted.
+inline constexpr std::size_t kMaxFoundPerFootprint = 24;
+inline constexpr std::size_t kMaxClassesPerFootprint = 4;
 
 inline constexpr const char* kWrapNone = "none";
 inline constexpr const char* kWrapRepeat = "repeat";
@@ -104,6 +121,17 @@ struct alignas(16) Material {
   float mirror[4];                // r, g, b, 0
 };
 static_assert(sizeof(Material) == 48);
+
+// The far level (version 2; libbake/groove/far_level.h): per class of grooves (profile, material,
+// direction), a summed-area table of band area over a uniform grid of the domain, float64 nodes
+// (columns + 1) x (rows + 1) per class, u fastest. The extension's "far" object gives the grid.
+struct alignas(16) FarClass {
+  std::uint32_t info[4];          // profile, material, representative primitive, 0
+  float direction[4];             // unit tangent u, v; the profile's wmax; 0
+};
+static_assert(sizeof(FarClass) == 32);
+inline constexpr std::size_t kFarTableEntrySize = 8;
+inline constexpr const char* kFar = "far";  // {"cells": [columns, rows], "cellSize": [u, v]}
 
 // Keys of the extension object: the bufferView of each array (by kArrayKeys) and the item count of
 // each (by the same keys, plus "cells").
