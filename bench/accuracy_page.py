@@ -299,7 +299,12 @@ def groove(d, run):
         "twice with different seeds: the RMSE between the two is its noise floor, and errors are quoted "
         "as RMSE / floor (criterion ≤ 3) next to the cost ratio reference / method (criterion ≥ 50).\n\n"
         "**Peers in this run:** the method as the seed publishes it (uniform footprint segment), against "
-        "the same reference; the reference itself for cost.")
+        "the same reference; the reference itself for cost. Where the run drew the views with the runtime too "
+        "(`--runtime`: bakeplay's grooves renderer on a headless GL context, an oblique orthographic projection "
+        "whose pixels are the views' footprints), its RMSE / floor is given beside the CPU port's, and how "
+        "many fragments it shaded from the far level (footprints over more primitives than the shader holds, "
+        "`formats/grooves.md`).")
+    has_runtime = rows and "runtime_rmse_over_floor" in rows[0] and any(num(r["runtime_rmse"]) >= 0 for r in rows)
     cases = list(dict.fromkeys(r["case"] for r in rows))
     body = []
     meets = 0
@@ -316,8 +321,13 @@ def groove(d, run):
         meets += ok
         within_floor += worst <= 3
         cheap += cost >= 50
-        body.append([c, len(rs), fmt(worst), fmt(seed), fmt(method_ns), fmt(ref_ns), fmt(cost),
-                     "yes" if ok else "no"])
+        line = [c, len(rs), fmt(worst), fmt(seed)]
+        if has_runtime:
+            runtime_worst = max(num(r["runtime_rmse_over_floor"]) for r in rs)
+            within_floor_runtime = runtime_worst <= 3
+            ok = ok and within_floor_runtime
+            line += [fmt(runtime_worst), fmt(sum(num(r["runtime_far_fragments"]) for r in rs))]
+        body.append(line + [fmt(method_ns), fmt(ref_ns), fmt(cost), "yes" if ok else "no"])
     note = ""
     if spp and int(spp) != 256:
         note = (f" The cost criterion is stated against the reference at 256 samples per pixel; this run's "
@@ -326,8 +336,10 @@ def groove(d, run):
     out.append(f"Per case (worst view; {len(rows)} views in all): {within_floor} of {len(cases)} cases are "
                f"within 3× the noise floor, {cheap} of {len(cases)} at least 50× cheaper than the "
                f"reference, {meets} meet both.{note}")
-    out.append(table(["case", "views", "RMSE / floor", "seed's variant RMSE / floor", "method CPU ns/px (median)",
-                      "reference CPU ns/px (median)", "smallest cost ratio", "both criteria"], body))
+    runtime_columns = ["runtime RMSE / floor", "runtime far fragments"] if has_runtime else []
+    out.append(table(["case", "views", "RMSE / floor", "seed's variant RMSE / floor"] + runtime_columns +
+                     ["method CPU ns/px (median)", "reference CPU ns/px (median)", "smallest cost ratio",
+                      "both criteria"], body))
     return "\n\n".join(out), ["groove.png"]
 
 

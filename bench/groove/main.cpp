@@ -32,6 +32,7 @@
 #include "groove/render.h"
 #include "groove/scene.h"
 #include "groove/shade.h"
+#include "runtime_view.h"
 
 namespace {
 
@@ -59,6 +60,7 @@ struct Options {
   int threads = 1;
   bool quick = false;  // first view of every case, 64 spp
   bool straightArcs = false;  // the method without curved sections on tight arcs
+  bool runtime = false;       // also the runtime's GL image of every view (runtime_view.h)
 };
 
 // One rendering to measure: a scene, a window of it, a pixel count across, a view, a light.
@@ -164,6 +166,8 @@ int main(int argc, char** argv) {
   app.add_option("--threads", o.threads, "threads for both renderers (default 1: CPU time of the shading alone)");
   app.add_flag("--quick", o.quick, "one view per case at 64 samples per pixel");
   app.add_flag("--straight-arcs", o.straightArcs, "the method without its curved sections on tight arcs (as the seed)");
+  app.add_flag("--runtime", o.runtime,
+               "also draw every view with bakeplay's grooves renderer (headless GL) and measure it against the reference");
   CLI11_PARSE(app, argc, argv);
   if (o.quick) o.spp = std::min(o.spp, 64);
 
@@ -179,7 +183,17 @@ int main(int argc, char** argv) {
   std::ofstream csv(std::filesystem::path(o.out) / "groove.csv");
   csv << "case,scene,width,pixels,view_theta,view_phi,light_theta,light_phi,bounces,footprint_over_width,"
          "special_fraction,method_frame_s,method_ns_per_pixel,reference_frame_s,reference_ns_per_pixel,"
-         "cost_ratio,rmse,relative_mse,p99,max,noise_floor,rmse_over_floor,seed_rmse,seed_rmse_over_floor\n";
+         "cost_ratio,rmse,relative_mse,p99,max,noise_floor,rmse_over_floor,seed_rmse,seed_rmse_over_floor,"
+         "runtime_rmse,runtime_rmse_over_floor,runtime_far_fragments\n";
+  std::unique_ptr<RuntimeViews> runtime;
+  if (o.runtime) {
+    auto created = RuntimeViews::create();
+    if (!created.isOk()) {
+      std::fprintf(stderr, "bench-groove: --runtime: %s\n", created.status().describe().c_str());
+      return 3;
+    }
+    runtime = std::move(created).value();
+  }
 
   LoadedScene loaded;
   std::size_t index = 0;
@@ -201,6 +215,13 @@ int main(int argc, char** argv) {
       }
       loaded.grid = std::move(grid.value());
       loaded.file = job.sceneFile;
+      if (runtime) {
+        const bake::Status status = runtime->load(loaded.scene, loaded.grid, std::filesystem::path(o.out) / "runtime");
+        if (!status.isOk()) {
+          std::fprintf(stderr, "bench-groove: --runtime: %s\n", status.describe().c_str());
+          return 3;
+        }
+      }
     }
     const View view = windowView(job.lower, job.upper, job.width, radians(job.viewTheta), radians(job.viewPhi));
     Lighting lighting;
@@ -277,25 +298,39 @@ int main(int argc, char** argv) {
     const ImageError error = imageError(method, truth);
     const ImageError floor = imageError(second, truth);
     const ImageError seedError = imageError(seedMethod, truth);
+    // The runtime's own image of the view (-1 without --runtime).
+    double runtimeRmse = -1, runtimeRatio = -1;
+    std::size_t farFragments = 0;
+    if (runtime) {
+      auto drawn = runtime->render(view, lighting, &farFragments);
+      if (!drawn.isOk()) {
+        std::fprintf(stderr, "bench-groove: --runtime: %s\n", drawn.status().describe().c_str());
+        return 3;
+      }
+      runtimeRmse = imageError(*drawn, truth).rmse;
+      runtimeRatio = floor.rmse > 0 ? runtimeRmse / floor.rmse : 0;
+    }
     const double pixels = double(view.width) * view.height;
     const double footprint = std::hypot(view.axisX.u, view.axisX.v);
     const double grooveWidth = 2 * loaded.scene.wmax;
     const std::string sceneName = std::filesystem::path(job.sceneFile).stem().string();
     char row[1024];
     std::snprintf(row, sizeof row,
-                  "%s,%s,%d,%.0f,%g,%g,%g,%g,%d,%.6g,%.4f,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.4g\n",
+                  "%s,%s,%d,%.0f,%g,%g,%g,%g,%d,%.6g,%.4f,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%.6g,%.4g,"
+                  "%.6g,%.4g,%zu\n",
                   job.caseName.c_str(), sceneName.c_str(), job.width, pixels, job.viewTheta, job.viewPhi,
                   job.lightTheta, job.lightPhi, job.bounces, grooveWidth > 0 ? footprint / grooveWidth : 0,
                   special / pixels, methodSeconds, 1e9 * methodCpu / pixels, referenceSeconds,
                   1e9 * referenceCpu / pixels, referenceCpu / methodCpu, error.rmse, error.relativeMse,
                   error.p99, error.max, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0, seedError.rmse,
-                  floor.rmse > 0 ? seedError.rmse / floor.rmse : 0);
+                  floor.rmse > 0 ? seedError.rmse / floor.rmse : 0, runtimeRmse, runtimeRatio, farFragments);
     csv << row << std::flush;
     std::fprintf(stderr,
-                 "[%zu/%zu] %s %s view %g/%g light %g/%g b%d: rmse %.3g (floor %.3g, x%.2f; seed's x%.2f), %.0f ns/px vs %.0f ns/px\n",
+                 "[%zu/%zu] %s %s view %g/%g light %g/%g b%d: rmse %.3g (floor %.3g, x%.2f; seed's x%.2f; runtime x%.2f), "
+                 "%.0f ns/px vs %.0f ns/px\n",
                  index, jobs.size(), job.caseName.c_str(), sceneName.c_str(), job.viewTheta, job.viewPhi, job.lightTheta,
                  job.lightPhi, job.bounces, error.rmse, floor.rmse, floor.rmse > 0 ? error.rmse / floor.rmse : 0.0,
-                 floor.rmse > 0 ? seedError.rmse / floor.rmse : 0.0, 1e9 * methodCpu / pixels,
+                 floor.rmse > 0 ? seedError.rmse / floor.rmse : 0.0, runtimeRatio, 1e9 * methodCpu / pixels,
                  1e9 * referenceCpu / pixels);
     if (!o.images.empty()) {
       char stem[256];

@@ -778,10 +778,11 @@ TEST(GroovesPackage, ValidateAcceptsAGoodPackageAndRejectsDamage) {
   EXPECT_TRUE(checkPackageStructure(*package, "good.glb").isOk());
 
   glb::Package wrongVersion = *package;
-  wrongVersion.materials[0]["extensions"][format::grooves::kExtension]["version"] = 2;
+  wrongVersion.materials[0]["extensions"][format::grooves::kExtension]["version"] = format::grooves::kVersion + 1;
   const Status version = checkPackageStructure(wrongVersion, "version.glb");
   ASSERT_FALSE(version.isOk());
-  EXPECT_NE(version.describe().find("version 2"), std::string::npos) << version.describe();
+  EXPECT_NE(version.describe().find("version " + std::to_string(format::grooves::kVersion + 1)), std::string::npos)
+      << version.describe();
 
   glb::Package badIndex = *package;
   const std::size_t refs = (*package).materials[0]["extensions"][format::grooves::kExtension]["bufferViews"]

@@ -1,0 +1,34 @@
+// bench-groove's runtime renderer: a view of bench/groove/cases.json drawn by bakeplay's grooves
+// renderer (runtime/render/grooves.h, the shaders in shaders/grooves) on a headless GL context,
+// through an oblique orthographic projection whose pixels are exactly the view's footprints
+// (groove/render.h windowView), so that its image compares with the reference pixel for pixel.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include "core/status.h"
+#include "groove/grid.h"
+#include "groove/render.h"
+#include "groove/scene.h"
+#include "io/image.h"
+
+namespace bake::groove {
+
+class RuntimeViews {
+ public:
+  static Result<std::unique_ptr<RuntimeViews>> create();
+  ~RuntimeViews();
+  // Bakes the scene's package into `folder` and loads it.
+  Status load(const GrooveScene& scene, const GrooveGrid& grid, const std::filesystem::path& folder);
+  // The view as the runtime draws it (linear RGB, rows as the view's), and how many of its fragments
+  // went to the far level.
+  Result<Image> render(const View& view, const Lighting& lighting, std::size_t* farFragments = nullptr);
+
+ private:
+  struct State;
+  explicit RuntimeViews(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace bake::groove
