@@ -204,7 +204,13 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   const std::vector<std::uint32_t>& found = gatherPrimitives(grid_, serial_, box);
   if (stats) *stats = {false, std::uint32_t(found.size())};
   if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
-  if (settings_.foundCap > 0 && found.size() > settings_.foundCap && !grid_.far.empty()) {
+  // A footprint wider than the period of a repeating pattern: the grooves, straightened at their copy
+  // nearest F, would each be counted once; the far level counts every copy (whole periods exactly).
+  const bool beyondPeriod =
+      scene_.wrapRepeat && (std::abs(footprint.axis1.u) + std::abs(footprint.axis2.u) > scene_.domain[0] ||
+                            std::abs(footprint.axis1.v) + std::abs(footprint.axis2.v) > scene_.domain[1]);
+  const bool overCap = settings_.foundCap > 0 && found.size() > settings_.foundCap;
+  if ((beyondPeriod || overCap) && !grid_.far.empty()) {
     if (stats) stats->far = true;
     return shadeFromFarLevel(scene_, grid_, footprint, toViewer, lighting, settings_);
   }

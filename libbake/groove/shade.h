@@ -29,7 +29,9 @@ struct SeedSettings {
   bool curvedSections = true;
   // 0: every primitive found under a footprint is shaded (the seed's method). n > 0: as the runtime
   // shader, which holds bake_formats/grooves.h kMaxFoundPerFootprint: a footprint with more than n
-  // primitives under its box is shaded from the grid's far level (shadeFromFarLevel).
+  // primitives under its box is shaded from the grid's far level (shadeFromFarLevel). Either way, a
+  // footprint wider than the period of a repeating pattern is shaded from the far level (the seed's
+  // method straightens each groove at one copy, so it would count the groove once).
   std::size_t foundCap = 0;
 };
 

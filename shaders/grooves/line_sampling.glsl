@@ -223,11 +223,12 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   queryBox(axis1, axis2, toViewer, gLightDir, uBounds.x, lower, upper);
   gatherPrimitives(lower, upper);
   if (gFoundCount == 0) return flatBase;
-  // More primitives under the box than the shader holds: the far level, when the package has one
-  // (libbake's SeedSettings::foundCap does the same on the CPU); else those past MAX_FOUND are
-  // dropped, and counted.
-  gFarMode = gFoundOverflow && hasFarLevel();
-  if (gFoundOverflow) countFragment(gFarMode ? kCountFar : kCountTruncated);
+  // More primitives under the box than the shader holds, or a footprint wider than the period of a
+  // repeating pattern (each groove straightened at its copy nearest F would count once): the far
+  // level, when the package has one, as libbake's SeedShader does; else the rest is dropped, counted.
+  bool beyondPeriod = wrapRepeat() && any(greaterThan(abs(axis1) + abs(axis2), domainSize()));
+  gFarMode = (gFoundOverflow || beyondPeriod) && hasFarLevel();
+  if (gFoundOverflow || beyondPeriod) countFragment(gFarMode ? kCountFar : kCountTruncated);
   if (gFarMode) {
     setFarBox(centre, axis1, axis2);  // no special case is looked for: the far level averages them away
   } else {

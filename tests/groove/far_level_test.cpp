@@ -129,5 +129,24 @@ TEST(FarLevel, WholeBandsShadeAsEveryGrooveShaded) {
   }
 }
 
+TEST(FarLevel, RepeatingPatternWiderThanItsPeriodIsItsAreaAverage) {
+  // Footprints over 3 and 40 periods of the repeating set against the set without wrap under a
+  // footprint exactly one period wide, its edges in the gaps between bands, shaded with every groove:
+  // the same area average. Before, each groove was counted once however many periods lay under it.
+  const GrooveScene repeating = sceneOf(parallelScene(true)), single = sceneOf(parallelScene(false));
+  const GrooveGrid repeatingGrid = buildGridOk(repeating), singleGrid = buildGridOk(single);
+  const Lighting light = lightTowards({0.6, 0.1, 0.8});
+  for (const Vec3 toViewer : {Vec3{0, 0, 1}, Vec3{0.5, 0.0, std::sqrt(0.75)}}) {
+    const Rgb onePeriod = SeedShader(single, singleGrid).shade({{0.5, 0.5}, {1.0, 0}, {0, 0.6}}, toViewer, light);
+    for (double periods : {3.0, 40.0}) {
+      ShadeStats stats;
+      const Rgb wide = SeedShader(repeating, repeatingGrid).shade({{0.5, 0.3}, {periods, 0}, {0, periods}}, toViewer,
+                                                                  light, &stats);
+      EXPECT_TRUE(stats.far);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(wide[k], onePeriod[k], 1e-6) << periods << " periods, channel " << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bake::groove

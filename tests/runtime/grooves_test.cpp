@@ -48,7 +48,10 @@ struct Baked {
 
 // `node`: place the preview plane with this node (a rotation, to test the tangent frame); default:
 // the writer's node with no transform.
-Baked bake(const std::string& json, const std::string& name, std::optional<glb::Node> node = std::nullopt) {
+// `uvScale`: the preview plane's TEXCOORD_0 multiplied by it (a repeating pattern tiled that many
+// times across the plane).
+Baked bake(const std::string& json, const std::string& name, std::optional<glb::Node> node = std::nullopt,
+           float uvScale = 1) {
   Baked out;
   auto scene = groove::parseGrooveScene(json, name + ".json");
   EXPECT_TRUE(scene.isOk()) << scene.status().describe();
@@ -62,6 +65,14 @@ Baked bake(const std::string& json, const std::string& name, std::optional<glb::
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   if (!package.isOk()) return out;
   if (node) package->nodes.push_back(*node);
+  if (uvScale != 1) {
+    for (glb::Attribute& attribute : package->meshes[0].primitives[0].attributes) {
+      if (attribute.name != "TEXCOORD_0") continue;
+      std::vector<float> uv = attribute.toFloats();
+      for (float& x : uv) x *= uvScale;
+      attribute = glb::Attribute::fromFloats("TEXCOORD_0", 2, uv);
+    }
+  }
   out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
   const Status written = glb::write(out.file, *package);
   EXPECT_TRUE(written.isOk()) << written.describe();
@@ -376,6 +387,29 @@ TEST_F(GroovesOracle, ParallelSetVeryFarUsesTheFarLevel) {
   const auto shaderFar = f.statistics["grooveFarFragments"].get<std::size_t>();
   EXPECT_LE(std::max(shaderFar, f.far) - std::min(shaderFar, f.far), f.pixels / 100 + 1) << "shader " << shaderFar << ", CPU " << f.far << ": " << f.statistics.dump();
   EXPECT_EQ(f.statistics["grooveTruncatedFragments"], 0);
+}
+
+// A repeating tile of 20 grooves, tiled 200 times across the plate by its texture coordinates: far
+// pixels cover many periods with fewer primitives than the cap under them, and the far level counts
+// every copy (the seed's method, straightening each groove at one copy, would count each once).
+TEST_F(GroovesOracle, RepeatingTileFarAwayUsesTheFarLevel) {
+  std::string grooves;
+  for (int k = 0; k < 20; ++k)
+    grooves += std::string(k ? ", " : "") + R"({"profile": "vee", "path": {"line": [[)" + std::to_string(0.025 + 0.05 * k) +
+               ", 0], [" + std::to_string(0.025 + 0.05 * k) + ", 1]]}}";
+  const std::string json = R"({"version": 1, "domain": {"size": [1, 1]}, "wrap": "repeat",
+      "profiles": {"vee": {"points": [[-0.02, 0], [0, -0.02], [0.02, 0]]}}, "materials": {)" + kGrey +
+                           R"(}, "base": "grey", "grooves": [)" + grooves + "]}";
+  const Baked baked = bake(json, "repeating_tile", std::nullopt, 200);
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.5f, -0.8f, 1.2f}, {0.5f, 0.5f, 0.0f}, {0.1f, 0.5f, 0.8f}, 0);
+  std::printf("[ grooves ] repeating_tile: %zu of %zu pixels from the far level\n", f.far, f.pixels);
+  expectWithinTwoLevels(f, "repeating_tile");
+  EXPECT_GT(f.far, f.pixels / 2);
+  ASSERT_TRUE(f.statistics.is_object());
+  const auto shaderFar = f.statistics["grooveFarFragments"].get<std::size_t>();
+  EXPECT_LE(std::max(shaderFar, f.far) - std::min(shaderFar, f.far), f.pixels / 100 + 1)
+      << "shader " << shaderFar << ", CPU " << f.far;
 }
 
 // A version 1 package has no far level: the footprints over the shader's cap keep MAX_FOUND
