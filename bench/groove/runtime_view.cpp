@@ -52,7 +52,7 @@ Result<Image> RuntimeViews::render(const View& view, const Lighting& lighting, s
   if (!state_->scene) return internalError("bench-groove: no scene loaded for the runtime");
   play::GroovesRenderer renderer({lighting.maxBounces, false, true, 0});
   BAKE_RETURN_IF_ERROR(renderer.prepare(*state_->scene, {0}, *state_->shaders));
-  BAKE_ASSIGN_OR_RETURN(play::OffscreenTarget target, play::OffscreenTarget::create(view.width, view.height));
+  BAKE_ASSIGN_OR_RETURN(play::OffscreenTarget target, play::OffscreenTarget::create(view.width, view.height, play::ColourPrecision::Float32));
   const double pixel = view.axisX.u, w = pixel * view.width, h = pixel * view.height;
   const double left = view.origin.u, bottom = view.origin.v - h;
   play::Mat4 projection{};

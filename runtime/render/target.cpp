@@ -8,7 +8,7 @@
 
 namespace bake::play {
 
-Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
+Result<OffscreenTarget> OffscreenTarget::create(int width, int height, ColourPrecision precision) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384) {
     return usageError("frame size " + std::to_string(width) + "x" + std::to_string(height) + " is out of range (1 to 16384)");
   }
@@ -16,7 +16,7 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height) {
   target.width_ = width;
   target.height_ = height;
   glCreateTextures(GL_TEXTURE_2D, 1, &target.colour_);  // a texture, so a window can present it
-  glTextureStorage2D(target.colour_, 1, GL_RGBA16F, width, height);
+  glTextureStorage2D(target.colour_, 1, precision == ColourPrecision::Float32 ? GL_RGBA32F : GL_RGBA16F, width, height);
   glTextureParameteri(target.colour_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(target.colour_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glCreateRenderbuffers(1, &target.depth_);

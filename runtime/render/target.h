@@ -1,5 +1,5 @@
-// An offscreen render target: a framebuffer object with a 16-bit float colour buffer (linear light,
-// so EXR output keeps the full range) and a 24-bit depth buffer, read back as a top-row-first image.
+// An offscreen render target: a framebuffer object with a 16-bit (or 32-bit) float colour buffer (linear
+// light, so EXR output keeps the full range) and a 24-bit depth buffer, read back as a top-row-first image.
 #pragma once
 
 #include "core/status.h"
@@ -7,9 +7,13 @@
 
 namespace bake::play {
 
+// Half floats are what EXR output keeps; full floats for measurements below half a half-float step
+// (bench-groove compares with a reference whose noise floor can be 2e-5).
+enum class ColourPrecision { Float16, Float32 };
+
 class OffscreenTarget {
  public:
-  static Result<OffscreenTarget> create(int width, int height);
+  static Result<OffscreenTarget> create(int width, int height, ColourPrecision precision = ColourPrecision::Float16);
   OffscreenTarget() = default;
   OffscreenTarget(OffscreenTarget&& other) noexcept;
   OffscreenTarget& operator=(OffscreenTarget&& other) noexcept;
