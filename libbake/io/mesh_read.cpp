@@ -334,9 +334,9 @@ bool sameBits(const T& a, const T& b) {
 
 // Gives each corner the index of a vertex with its position and attributes: the first attribute
 // combination seen for a position keeps the original vertex, later different ones get copies.
-// `world`: the double positions of mesh.positions, kept in step.
+// `world` (when wanted): the double positions of mesh.positions, kept in step.
 std::vector<std::uint32_t> assignCornerVertices(const PolygonSoup& soup, bool withNormals, bool withTexcoords,
-                                                TriangleMesh& mesh, std::vector<Vec3d>& world,
+                                                TriangleMesh& mesh, std::vector<Vec3d>* world,
                                                 MeshReadStats& stats) {
   std::vector<std::uint32_t> cornerVertex(soup.corners.size());
   if (!withNormals && !withTexcoords) {
@@ -372,7 +372,7 @@ std::vector<std::uint32_t> assignCornerVertices(const PolygonSoup& soup, bool wi
       const std::uint32_t vertex = firstUse ? corner.vertex : std::uint32_t(mesh.positions.size());
       if (!firstUse) {
         mesh.positions.push_back(soup.positions[corner.vertex]);
-        world.push_back(soup.precisePositions[corner.vertex]);
+        if (world) world->push_back(soup.precisePositions[corner.vertex]);
         if (withNormals) mesh.normals.emplace_back();
         if (withTexcoords) mesh.texcoords.emplace_back();
         ++stats.verticesSplit;
@@ -398,14 +398,14 @@ bool attributeIsComplete(const PolygonSoup& soup, bool Corner::*present, MeshRea
   return count > 0 && count == soup.corners.size();
 }
 
-Result<TriangleMesh> triangulate(PolygonSoup&& soup, const fs::path& path, std::vector<Vec3d>& world,
+Result<TriangleMesh> triangulate(PolygonSoup&& soup, const fs::path& path, std::vector<Vec3d>* world,
                                  MeshReadStats& stats) {
   if (soup.positions.size() > std::numeric_limits<std::uint32_t>::max() / 2) {
     return unsupported("too many vertices for 32-bit indices", {path.string(), ""});
   }
   TriangleMesh mesh;
   mesh.positions = soup.positions;
-  world = soup.precisePositions;
+  if (world) *world = soup.precisePositions;
   const bool withNormals = attributeIsComplete(soup, &Corner::hasNormal, stats);
   const bool withTexcoords = attributeIsComplete(soup, &Corner::hasTexcoord, stats);
   const std::vector<std::uint32_t> cornerVertex =
@@ -500,10 +500,10 @@ Result<TriangleMesh> readWithOpenMesh(const fs::path& path, MeshFormat format, b
   if (scan.stlTriangles) {
     stats.degenerateFacesRemoved += *scan.stlTriangles - std::min(*scan.stlTriangles, soup.facesOffered);
   }
-  WorldPositions world;
-  if (!nearOrigin) return triangulate(std::move(soup), path, world.vertices, stats);
+  if (!nearOrigin) return triangulate(std::move(soup), path, nullptr, stats);
   adoptTextCoordinates(scan.positions, soup);
-  BAKE_ASSIGN_OR_RETURN(TriangleMesh mesh, triangulate(std::move(soup), path, world.vertices, stats));
+  WorldPositions world;
+  BAKE_ASSIGN_OR_RETURN(TriangleMesh mesh, triangulate(std::move(soup), path, &world.vertices, stats));
   placeNearOrigin(world, mesh);
   return mesh;
 }
