@@ -379,7 +379,7 @@ TEST_F(GroovesOracle, ParallelSetVeryFarUsesTheFarLevel) {
   expectWithinTwoLevels(f, "parallel_very_far");
   EXPECT_GT(f.far, f.pixels / 4) << "the view should put many footprints over the cap";
   // What the far level stands in for: every groove shaded (the seed's method without the cap). Its
-  // error is the coverage of a footprint's bounding box read from a table two grooves per cell.
+  // error is the coverage of a footprint's bounding box read from a table of about eight grooves per cell.
   EXPECT_LE(f.farToExactRmse, 1.0 / 255);
   EXPECT_LE(f.farToExactMaxLevels, 4);
   ASSERT_TRUE(f.statistics.is_object());
