@@ -108,7 +108,8 @@ Status checkNumbers(const std::filesystem::path& path, const TextLine& line,
                     const std::vector<std::string_view>& words, std::size_t first, std::size_t count,
                     std::size_t finiteCount, const char* what);
 
-// The three numbers at `words[first..first+2]` in double, for words checkNumbers has accepted.
+// The number at `words[at]` in double, and the three from `first`, for words checkNumbers accepted.
+double realAt(const std::vector<std::string_view>& words, std::size_t at);
 std::array<double, 3> coordinatesAt(const std::vector<std::string_view>& words, std::size_t first);
 
 }  // namespace bake::meshscan

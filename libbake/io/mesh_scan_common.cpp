@@ -89,10 +89,10 @@ Status checkNumbers(const fs::path& path, const TextLine& line, const std::vecto
   return {};
 }
 
+double realAt(const std::vector<std::string_view>& words, std::size_t at) { return parseReal(words[at]).value_or(0.0); }
+
 std::array<double, 3> coordinatesAt(const std::vector<std::string_view>& words, std::size_t first) {
-  std::array<double, 3> xyz{};
-  for (std::size_t k = 0; k < 3; ++k) xyz[k] = parseReal(words[first + k]).value_or(0.0);
-  return xyz;
+  return {realAt(words, first), realAt(words, first + 1), realAt(words, first + 2)};
 }
 
 }  // namespace bake::meshscan

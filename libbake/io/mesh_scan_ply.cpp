@@ -241,7 +241,7 @@ Status scanPlyLine(const fs::path& path, const TextLine& line, const PlyElement&
       const std::string what = inQuotes(property.name) + " value";
       BAKE_RETURN_IF_ERROR(checkNumbers(path, line, words, at, 1, mustBeFinite ? 1 : 0, what.c_str()));
       const std::size_t axis = property.name == "x" ? 0 : property.name == "y" ? 1 : property.name == "z" ? 2 : 3;
-      if (xyz && axis < 3) (*xyz)[axis] = std::strtod(std::string(words[at]).c_str(), nullptr);
+      if (xyz && axis < 3) (*xyz)[axis] = realAt(words, at);
       ++at;
       continue;
     }
