@@ -43,6 +43,7 @@ set title 'dense parallel grooves: error against footprint / width (an exact 0 i
 set logscale xy
 set xlabel 'footprint / groove width'
 plot rows('dense-parallel') using 10:($22 > 0 ? $22 : 1e-3) with points pt 7 title 'method (trapezoid density)', \
-     rows('dense-parallel') using 10:($24 > 0 ? $24 : 1e-3) with points pt 6 title "seed's segment"
+     rows('dense-parallel') using 10:($24 > 0 ? $24 : 1e-3) with points pt 6 title "seed's segment", \
+     rows('dense-parallel') using 10:($26 > 0 ? $26 : 1e-3) with points pt 2 ps 1.5 title 'runtime (bakeplay, far level past 24 primitives)'
 unset arrow 1
 unset multiplot
