@@ -1,10 +1,16 @@
 #!/usr/bin/env bash
-# The test command: installs what is missing, builds, and runs the whole test suite with CTest.
-#   scripts/test.sh              normal build (build/)
-#   scripts/test.sh --sanitize   ASan + UBSan build with clang (build-sanitize/)
+# The test command: installs what is missing, builds, and runs the tests with CTest.
+#   scripts/test.sh              the default tier (unit, cli, stiff, gl; about two minutes of tests on
+#                                2 cores): everything not labelled slow, normal build (build/)
+#   scripts/test.sh --slow       the slow tier: shared-data, million-triangle, example pipelines,
+#                                hostile matrix (about ten minutes)
+#   scripts/test.sh --all        both tiers
+#   scripts/test.sh --sanitize   ASan + UBSan build with clang (build-sanitize/): the default tier, the
+#                                hostile matrix and the example bakes
 #   scripts/test.sh --fuzz       clang libFuzzer targets (build-fuzz/), each run briefly: ctest -L fuzz
 #                                (BAKE_FUZZ_SECONDS=600 scripts/test.sh --fuzz: ten minutes each)
-#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli cli-gl gl stiff data pipeline hostile)
+#   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli gl stiff data pipeline
+#                                hostile peer million slow)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
@@ -20,6 +26,11 @@ if [[ "${1:-}" == "--fuzz" ]]; then
   cd "$BUILD_DIR"
   exec ctest --output-on-failure --parallel "$(nproc)" -L fuzz "$@"
 fi
+tier=(-LE slow)
+case "${1:-}" in
+  --slow) shift; tier=(-L slow) ;;
+  --all) shift; tier=() ;;
+esac
 cmake_args=()
 if [[ "${1:-}" == "--sanitize" ]]; then
   shift
@@ -37,23 +48,38 @@ if [[ "${1:-}" == "--sanitize" ]]; then
 fi
 "$here/scripts/build.sh" "${cmake_args[@]}"
 cd "$BUILD_DIR"
+
+# What this run left out, so that nobody takes the default tier for the whole suite.
+summary() {
+  local slow data
+  slow=$(ctest -N -L slow | sed -n 's/^Total Tests: //p')
+  data=$(sed -n 's/^# .*: \([0-9]*\) tests, labels .*data.*/\1/p' tests/*_suites.cmake | awk '{s+=$1} END{print s+0}')
+  if [[ " ${tier[*]-} " == *" -LE slow "* ]]; then
+    echo "test.sh: the slow tier (${slow} entries: shared data, million-triangle meshes, example pipelines," \
+         "hostile matrix) did not run; scripts/test.sh --slow runs it."
+  fi
+  local data_dir="${BAKE_DATA_DIR:-$here/../shared/data}"
+  if [[ ! -d "$data_dir" ]]; then
+    echo "test.sh: ${data} data tests skip without the shared mesh set (looked in $data_dir);" \
+         "set BAKE_DATA_DIR to its folder and run scripts/test.sh --slow."
+  fi
+}
+trap summary EXIT
+
 if [[ ${#cmake_args[@]} -eq 0 ]]; then
-  ctest --output-on-failure --parallel "$(nproc)" "$@"
+  ctest --output-on-failure --parallel "$(nproc)" "${tier[@]}" "$@"
 else
+  # The sanitizer stage runs the default tier, the hostile matrix and the example bakes (the bakers on
+  # every example with LeakSanitizer on); the shared-data meshes and the example pipelines only repeat,
+  # many times slower, what the plain stage checks.
   # Mesa allocates for the life of the process inside its llvmpipe driver and unloads the driver at
   # eglTerminate, leaving leak reports with no symbols to suppress by; so the GL tests run with
   # AddressSanitizer and UBSan but without LeakSanitizer, and everything else with all three.
-  # The million-triangle accuracy tests only repeat, ten times slower, what the plain run checks, as
-  # does example_packages_gltf_valid (the example bakes again, for the glTF-Validator).
-  # CgalPeer and AgreesWithCgal tests run CGAL's own solvers (the peers we measure against, never
-  # linked into a tool; the exact geodesics on the real meshes take minutes under ASan);
-  # CGAL 5.5's Heat_method_3 swaps an uninitialised bool (CGAL::Eigen_sparse_matrix::swap), which
-  # UBSan stops on inside CGAL's headers, so they run in the plain stage only.
-  # makefile_examples (plain stage only) validates the 9,000-stroke fur example: llvmpipe's tessellation
-  # grows its vertex arrays by realloc, which ASan always copies, and one headless view takes minutes
-  # there instead of a second. The bakers run under ASan in examples_bake, bakeplay's paintstrokes in the
-  # GL tests.
-  ctest --output-on-failure --parallel "$(nproc)" -LE gl -E 'MillionTriangle|CgalPeer|AgreesWithCgal|example_packages_gltf_valid' "$@"
-  ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --output-on-failure --parallel "$(nproc)" -L gl \
-    -E makefile_examples "$@"
+  # CGAL's own solvers (label peer: the peers we measure against, never linked into a tool) run in the
+  # plain stage only: CGAL 5.5's Heat_method_3 swaps an uninitialised bool
+  # (CGAL::Eigen_sparse_matrix::swap), which UBSan stops on inside CGAL's headers.
+  tier=()
+  ctest --output-on-failure --parallel "$(nproc)" -LE 'gl|data|peer|million|pipeline' \
+    -E 'killed_mid_write|example_packages_gltf_valid' "$@"
+  ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --output-on-failure --parallel "$(nproc)" -L gl -LE 'slow' "$@"
 fi

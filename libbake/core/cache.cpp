@@ -25,18 +25,14 @@ constexpr const char* kEntrySchema = "bake-cache-entry";
 constexpr int kEntryVersion = 1;
 
 // Options that never change what a run writes.
-bool leftOut(const CLI::Option& option) {
-  for (const char* name : {"--report", "--depfile", "--cache-dir", "--quiet", "--threads", "--print-inputs", "--budget", "--help",
-                           "--version"}) {
-    if (option.check_name(name)) return true;
+bool leftOut(const GivenOption& option) {
+  for (const char* name : {"report", "depfile", "cache-dir", "quiet", "threads", "print-inputs", "budget", "help",
+                           "version"}) {
+    for (const std::string& longName : option.longNames) {
+      if (longName == name) return true;
+    }
   }
   return false;
-}
-
-bool isNumeric(const CLI::Option& option) {
-  const std::string type = option.get_type_name();
-  const std::string base = type.substr(0, type.find(':'));
-  return base == "FLOAT" || base == "INT" || base == "UINT" || base == "NUMBER";
 }
 
 // "0.50" and "0.5" are the same number; anything that is not a whole number text stays as it is.
@@ -52,25 +48,21 @@ std::string canonicalNumber(const std::string& text) {
 
 std::string normalPath(const std::string& path) { return fs::path(path).lexically_normal().string(); }
 
-void collectOptions(const CLI::App& app, const std::map<std::string, json>& inputs,
+void collectOptions(const GivenOptions& given, const std::map<std::string, json>& inputs,
                     const std::map<std::string, std::string>& outputs, json& out) {
-  for (const CLI::Option* option : app.get_options()) {
-    if (option->count() == 0 || leftOut(*option)) continue;
+  for (const GivenOption& option : given) {
+    if (leftOut(option)) continue;
     json values = json::array();
-    for (const std::string& value : option->results()) {
+    for (const std::string& value : option.values) {
       if (const auto input = inputs.find(normalPath(value)); input != inputs.end()) {
         values.push_back(input->second);
       } else if (const auto output = outputs.find(normalPath(value)); output != outputs.end()) {
         values.push_back({{"output", output->second}});
       } else {
-        values.push_back(isNumeric(*option) ? canonicalNumber(value) : value);
+        values.push_back(option.numeric ? canonicalNumber(value) : value);
       }
     }
-    out[option->get_single_name()] = values;
-  }
-  // Option groups are nameless subcommands.
-  for (const CLI::App* group : app.get_subcommands([](const CLI::App* sub) { return sub->get_name().empty(); })) {
-    collectOptions(*group, inputs, outputs, out);
+    out[option.name] = values;
   }
 }
 
@@ -105,14 +97,14 @@ Result<json> readManifest(const fs::path& path) {
 
 }  // namespace
 
-Result<json> normalisedOptions(const CLI::App& app, const RunFiles& files) {
+Result<json> normalisedOptions(const GivenOptions& given, const RunFiles& files) {
   BAKE_ASSIGN_OR_RETURN(const auto inputs, hashInputs(files));
   json out = json::object();
-  collectOptions(app, inputs, outputExtensions(files), out);
+  collectOptions(given, inputs, outputExtensions(files), out);
   return out;
 }
 
-Result<json> describeRun(const std::string& tool, const std::string& toolVersion, const CLI::App& app,
+Result<json> describeRun(const std::string& tool, const std::string& toolVersion, const GivenOptions& given,
                          const RunFiles& files) {
   for (const std::string& input : files.inputs) {
     if (lowercase(fs::path(input).extension().string()) == ".gltf") {
@@ -122,7 +114,7 @@ Result<json> describeRun(const std::string& tool, const std::string& toolVersion
   }
   BAKE_ASSIGN_OR_RETURN(const auto inputs, hashInputs(files));
   json options = json::object();
-  collectOptions(app, inputs, outputExtensions(files), options);
+  collectOptions(given, inputs, outputExtensions(files), options);
   json inputList = json::array();
   for (const std::string& input : files.inputs) inputList.push_back(inputs.at(normalPath(input)));
   json outputList = json::array();

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/options.h"
 #include "core/status.h"
 
 namespace bake {
@@ -30,12 +30,12 @@ struct RunFiles {
 // {"file": file name, "hash": content hash}; one naming an output, its extension. --report, --depfile,
 // --cache-dir, --quiet, --threads, --print-inputs, --help and --version never change the outputs and
 // are left out, so `-j1` and `-j2` share an entry.
-Result<nlohmann::json> normalisedOptions(const CLI::App& app, const RunFiles& files);
+Result<nlohmann::json> normalisedOptions(const GivenOptions& given, const RunFiles& files);
 
 // What the key is the hash of: {"tool", "toolVersion", "options", "inputs": [{"file", "hash"}],
 // "outputs": [extension]}. Fails when an input cannot be read, or when an input may pull in files the
 // run does not declare (a .gltf's external buffers): such a run is not cached.
-Result<nlohmann::json> describeRun(const std::string& tool, const std::string& toolVersion, const CLI::App& app,
+Result<nlohmann::json> describeRun(const std::string& tool, const std::string& toolVersion, const GivenOptions& given,
                                    const RunFiles& files);
 
 // 32 hex digits: XXH3-128 of the description's canonical JSON text.

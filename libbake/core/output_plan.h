@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "core/cache.h"
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/status.h"
 
 namespace bake {

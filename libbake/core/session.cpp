@@ -146,7 +146,7 @@ Status BakeSession::finishFromCache(const RunFiles& files, const CacheEntry& ent
   return finish(outcome);
 }
 
-Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions& common, Diagnostics& diagnostics,
+Status runCachedBake(const std::string& tool, const GivenOptions& given, CommonOptions& common, Diagnostics& diagnostics,
                const std::function<Result<RunFiles>()>& files, const std::function<Status()>& bake) {
   if (common.printInputs) {
     BAKE_ASSIGN_OR_RETURN(const RunFiles run, files());
@@ -167,7 +167,7 @@ Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions
   }
   if (common.cacheDir.empty()) return bake();
   // A run whose key cannot be known is baked without the cache: the bake reports any error.
-  Result<nlohmann::json> description = describeRun(tool, toolkitVersion(), app, *run);
+  Result<nlohmann::json> description = describeRun(tool, toolkitVersion(), given, *run);
   if (!description.isOk()) return bake();
   const std::string key = cacheKey(*description);
   if (std::optional<CacheEntry> entry = Cache(common.cacheDir).load(key);

@@ -14,7 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/cache.h"
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/report.h"
 
@@ -57,10 +57,10 @@ class BakeSession {
 
 // One bake with the conventions around it. `files` is the tool's one "files of this run" function:
 // --print-inputs prints its inputs and returns; with --cache-dir, a verified entry for the run's key
-// (tool, version, normalised options of `app`, input contents) becomes the outputs without any work;
+// (tool, version, normalised `given` options, input contents) becomes the outputs without any work;
 // otherwise `bake` runs (a session made from `common` then stores what it commits). Without either
 // option, `files` is not called.
-Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions& common, Diagnostics& diagnostics,
+Status runCachedBake(const std::string& tool, const GivenOptions& given, CommonOptions& common, Diagnostics& diagnostics,
                const std::function<Result<RunFiles>()>& files, const std::function<Status()>& bake);
 
 }  // namespace bake

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 

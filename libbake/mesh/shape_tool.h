@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "mesh/shapes.h"
 

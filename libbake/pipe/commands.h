@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 

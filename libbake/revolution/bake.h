@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bake_formats/revolution.h"
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 #include "revolution/projection.h"

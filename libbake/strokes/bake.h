@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 #include "strokes/generators.h"

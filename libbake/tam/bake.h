@@ -8,7 +8,7 @@
 #include <string>
 
 #include "bake_formats/tam.h"
-#include "core/cli.h"
+#include "core/options.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "core/cache.h"
-#include "core/cli.h"
+#include "common/cli.h"
 #include "core/session.h"
 #include "support/golden.h"
 
@@ -37,7 +37,7 @@ std::string keyOf(const std::vector<std::string>& args) {
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   app.parse(reversed);
   const RunFiles files{{command.input}, {command.output}};
-  Result<nlohmann::json> description = describeRun("testbake", "1.0", app, files);
+  Result<nlohmann::json> description = describeRun("testbake", "1.0", givenOptions(app), files);
   EXPECT_TRUE(description.isOk()) << description.status().describe();
   return description.isOk() ? cacheKey(*description) : "";
 }
@@ -105,7 +105,7 @@ TEST_F(CacheKey, UnreadableInputHasNoKey) {
   CLI::App app{"test baker", "testbake"};
   app.add_option("input", command.input);
   app.parse(std::vector<std::string>{(dir_ / "missing.txt").string()});
-  EXPECT_FALSE(describeRun("testbake", "1.0", app, {{command.input}, {}}).isOk());
+  EXPECT_FALSE(describeRun("testbake", "1.0", givenOptions(app), {{command.input}, {}}).isOk());
 }
 
 CacheEntry sampleEntry() {

@@ -1,7 +1,7 @@
 // bakeinfo: describes packages (.glb/.gltf with BAKE_* extensions, .ktx2) as text or JSON.
 #include <cstdio>
 
-#include "core/cli.h"
+#include "common/cli.h"
 #include "info/bakeinfo.h"
 
 int main(int argc, char** argv) {

@@ -1,7 +1,7 @@
 // bakepipe: bakes only what a scene needs (formats/scene.md). `plan` prints the bake steps and what
 // they leave out, `ninja` writes them as a Ninja file, `assemble` merges the baked packages into one
 // scene package, `validate` runs bakeplay validate on it.
-#include "core/cli.h"
+#include "common/cli.h"
 #include "pipe/commands.h"
 
 namespace {

@@ -1,6 +1,6 @@
 // bakeplay: the reference runtime. `render` draws a scene headless to PNG/EXR, `validate` checks
 // packages, `view` opens a window (also what bakeplay does with no command).
-#include "core/cli.h"
+#include "common/cli.h"
 #include "play/render.h"
 #include "play/validate.h"
 #include "play/view.h"

@@ -1,4 +1,5 @@
 // bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
+#include "common/cli.h"
 #include "core/session.h"
 #include "mesh/patterns.h"
 #include "mesh/shape_tool.h"

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "common/cli.h"
 #include "core/session.h"
 #include "geodesic/bake.h"
 

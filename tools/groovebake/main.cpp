@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/cli.h"
 #include "core/huge_pages.h"
 #include "core/session.h"
 #include "groove/bake.h"

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 
+#include "common/cli.h"
 #include "core/session.h"
 #include "revolution/bake.h"
 

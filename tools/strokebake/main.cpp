@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/cli.h"
 #include "core/session.h"
 #include "strokes/bake.h"
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/cli.h"
 #include "core/session.h"
 #include "tam/bake.h"
 #include "tam/style.h"

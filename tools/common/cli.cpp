@@ -1,4 +1,4 @@
-#include "core/cli.h"
+#include "common/cli.h"
 
 #include <cerrno>
 #include <cmath>
@@ -13,8 +13,6 @@
 #include "core/version.h"
 
 namespace bake {
-
-const char* toolkitVersion() { return kToolkitVersion; }
 
 void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet which) {
   if (which.version) app.set_version_flag("--version", std::string(app.get_name()) + " " + kToolkitVersion);
@@ -132,7 +130,30 @@ Status checkOptionValues(const CLI::App& app) {
   return {};
 }
 
+bool isNumeric(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  const std::string base = type.substr(0, type.find(':'));
+  return base == "FLOAT" || base == "INT" || base == "UINT" || base == "NUMBER";
+}
+
+void collectGiven(const CLI::App& app, GivenOptions& out) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0) continue;
+    out.push_back({option->get_single_name(), option->get_lnames(), option->results(), isNumeric(*option)});
+  }
+  // Option groups are nameless subcommands.
+  for (const CLI::App* group : app.get_subcommands([](const CLI::App* sub) { return sub->get_name().empty(); })) {
+    collectGiven(*group, out);
+  }
+}
+
 }  // namespace
+
+GivenOptions givenOptions(const CLI::App& app) {
+  GivenOptions out;
+  collectGiven(app, out);
+  return out;
+}
 
 int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
             const std::function<Status()>& body) {

@@ -1,0 +1,50 @@
+// Command-line plumbing shared by every tool, the one layer that knows the parser (CLI11): the common
+// option group (--quiet, --report, --depfile, --threads, --print-inputs, --cache-dir, --budget),
+// --version, one range check of every numeric option, and one fatal path that maps CLI11's own errors
+// onto ExitCode::Usage and a failed Status onto its exit code with a "TOOL: error: ..." line. The
+// library sees only what it needs of a command line (core/options.h).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/diagnostics.h"
+#include "core/options.h"
+#include "core/session.h"
+#include "core/status.h"
+
+namespace bake {
+
+// Which of the common options a tool offers.
+struct CommonOptionSet {
+  bool version = true;  // false for subcommands: --version belongs to the main command
+  bool report = true;
+  bool depfile = true;
+  bool threads = true;
+  bool printInputs = true;
+  bool cacheDir = false;  // bakers that run through runCachedBake (core/session.h) turn it on
+};
+
+void addCommonOptions(CLI::App& app, CommonOptions& options, CommonOptionSet which = {});
+
+// Parses argv with `app` and then runs `body`. Help and version exit 0; CLI11 parse errors print
+// "TOOL: error: ..." and exit 1; a failed Status from body prints its message and exits with its code;
+// an escaped exception is an internal error (exit 4).
+int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
+            const std::function<Status()>& body);
+
+// The options given on the parsed command line (option groups included, subcommands not), for the
+// cache key.
+GivenOptions givenOptions(const CLI::App& app);
+
+// runCachedBake (core/session.h) with the options given to `app`.
+inline Status runCachedBake(const std::string& tool, const CLI::App& app, CommonOptions& common,
+                            Diagnostics& diagnostics, const std::function<Result<RunFiles>()>& files,
+                            const std::function<Status()>& bake) {
+  return runCachedBake(tool, givenOptions(app), common, diagnostics, files, bake);
+}
+
+}  // namespace bake
