@@ -64,6 +64,11 @@ Result<GroovePackage> decodeGrooveExtension(const glb::Package& package, const n
                                             const std::string& name, bool cellLists = true);
 Result<GroovePackage> readGroovePackage(const std::filesystem::path& path);
 
+// Loader checks of BAKE_grooves (package_check.cpp; `bakeplay validate`, bakeinfo): every material
+// that carries the extension decodes (version, header, array sizes against counts and strides, CSR
+// prefix sums, every index), and the mesh drawn with it has TEXCOORD_0.
+Status checkGroovesPackage(const glb::Package& package, const std::string& name);
+
 // Largest distance between the stored fp32 geometry, rebuilt in double, and the scene's geometry:
 // positions (end points, centres, joint points, record points and boxes) and the arcs' end points
 // rebuilt from centre, radius and angles.

@@ -14,7 +14,7 @@
 #include "core/atomic_file.h"
 #include "io/glb.h"
 #include "io/ktx2.h"
-#include "strokes/package.h"
+#include "techniques/registry.h"
 
 namespace bake::info {
 namespace {
@@ -174,22 +174,13 @@ json describeKtx2(const ktx2::Texture& texture, const ktx2::Header& header) {
               {"metadata", metadata}};
 }
 
-// A BAKE_paintstrokes material, decoded through the package reader (so a damaged one is reported).
-Result<json> describePaintstrokes(const glb::Package& package, const std::string& name) {
-  BAKE_ASSIGN_OR_RETURN(const strokes::PaintstrokePackage p, strokes::decodePaintstrokePackage(package, name));
-  return json{{"strokes", p.strokes.size()},
-              {"controlPoints", p.points.size()},
-              {"styles", p.styleNames},
-              {"shadowDirections", p.shadowDirections},
-              {"bounds", {{"min", p.boundsMin}, {"max", p.boundsMax}}}};
-}
-
-bool hasMaterialExtension(const glb::Package& package, const char* name) {
-  for (const json& material : package.materials)
-    if (material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
-        material["extensions"].contains(name))
-      return true;
-  return false;
+// What each technique the package uses says of its data (the registry's describers).
+Status describeTechniques(const glb::Package& package, const std::string& name, json& description) {
+  for (const techniques::Technique& technique : techniques::all()) {
+    if (!technique.describe || !techniques::usedBy(technique, package)) continue;
+    BAKE_ASSIGN_OR_RETURN(description[technique.name], technique.describe(package, name));
+  }
+  return {};
 }
 
 }  // namespace
@@ -201,17 +192,13 @@ Result<json> describeFile(const fs::path& path) {
     case FileKind::Glb: {
       BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::decode(bytes, path.string()));
       description = describeGlb(package, "glb");
-      if (hasMaterialExtension(package, format::paintstrokes::kExtension)) {
-        BAKE_ASSIGN_OR_RETURN(description["paintstrokes"], describePaintstrokes(package, path.string()));
-      }
+      BAKE_RETURN_IF_ERROR(describeTechniques(package, path.string(), description));
       break;
     }
     case FileKind::GltfText: {
       BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::decodeFile(bytes, path));
       description = describeGlb(package, "gltf");
-      if (hasMaterialExtension(package, format::paintstrokes::kExtension)) {
-        BAKE_ASSIGN_OR_RETURN(description["paintstrokes"], describePaintstrokes(package, path.string()));
-      }
+      BAKE_RETURN_IF_ERROR(describeTechniques(package, path.string(), description));
       break;
     }
     case FileKind::Ktx2: {
@@ -230,24 +217,6 @@ Result<json> describeFile(const fs::path& path) {
 }
 
 namespace {
-
-std::string number(const json& value) {
-  if (value.is_null()) return "-";
-  std::ostringstream out;
-  out.precision(6);
-  out << value.get<double>();
-  return out.str();
-}
-
-std::string vector(const json& values) {
-  std::string text = "(";
-  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + number(values[i]);
-  return text + ")";
-}
-
-std::string plural(std::size_t n, const std::string& word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
 
 void formatGltf(const json& d, std::ostringstream& out) {
   out << d["file"].get<std::string>() << ": glTF 2.0 " << (d["container"] == "glb" ? "binary" : "text") << ", "
@@ -280,20 +249,14 @@ void formatGltf(const json& d, std::ostringstream& out) {
       for (const json& attribute : primitive["attributes"]) {
         out << "      " << attribute["name"].get<std::string>() << ": " << attribute["componentType"].get<std::string>()
             << " x" << attribute["components"] << (attribute["normalized"].get<bool>() ? " normalized" : "")
-            << ", min " << vector(attribute["range"]["min"]) << " max " << vector(attribute["range"]["max"])
+            << ", min " << vectorText(attribute["range"]["min"]) << " max " << vectorText(attribute["range"]["max"])
             << (attribute["range"]["nonFinite"].get<bool>() ? ", HAS NaN/Inf" : "") << "\n";
       }
     }
   }
   out << "  buffer views: " << d["bufferViews"] << " (" << d["bufferViewBytes"] << " bytes)\n";
-  if (d.contains("paintstrokes")) {
-    const json& p = d["paintstrokes"];
-    out << "  paintstrokes: " << plural(p["strokes"].get<std::size_t>(), "stroke") << ", "
-        << plural(p["controlPoints"].get<std::size_t>(), "control point") << ", " << plural(p["styles"].size(), "style") << ":";
-    for (const json& name : p["styles"]) out << " " << name.get<std::string>();
-    out << "\n    shadow directions: " << p["shadowDirections"].size();
-    for (const json& direction : p["shadowDirections"]) out << " " << vector(direction);
-    out << "\n    bounds " << vector(p["bounds"]["min"]) << " - " << vector(p["bounds"]["max"]) << "\n";
+  for (const techniques::Technique& technique : techniques::all()) {
+    if (technique.formatDescription && d.contains(technique.name)) out << technique.formatDescription(d[technique.name]);
   }
 }
 
@@ -313,6 +276,24 @@ void formatKtx2(const json& d, std::ostringstream& out) {
 }
 
 }  // namespace
+
+std::string numberText(const json& value) {
+  if (value.is_null()) return "-";
+  std::ostringstream out;
+  out.precision(6);
+  out << value.get<double>();
+  return out.str();
+}
+
+std::string vectorText(const json& values) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + numberText(values[i]);
+  return text + ")";
+}
+
+std::string plural(std::size_t n, const std::string& word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
 
 std::string formatText(const json& description) {
   std::ostringstream out;

@@ -59,4 +59,17 @@ Result<PaintstrokePackage> decodePaintstrokeExtension(const glb::Package& packag
 Result<PaintstrokePackage> decodePaintstrokePackage(const glb::Package& package, const std::string& name);
 Result<PaintstrokePackage> readPaintstrokePackage(const std::filesystem::path& path);
 
+// package_check.cpp
+// Reads one material's BAKE_paintstrokes object with the decoder (which checks version,
+// strides, counts, point ranges, style indices and limits) and adds the checks of what shaders read: finite
+// quantisation boxes and culling spheres, positive radius steps, style values in range, unit shadow
+// directions. `where` names the material.
+Result<PaintstrokePackage> readPaintstrokes(const glb::Package& package, const nlohmann::json& extension,
+                                              const Location& where);
+
+// Loader checks of BAKE_paintstrokes for `bakeplay validate`: every material that carries it reads,
+// and every primitive drawn with it is a LINES primitive (glTF mode 1) with one POSITION per control
+// point.
+Status checkPaintstrokePackage(const glb::Package& package, const std::string& name);
+
 }  // namespace bake::strokes

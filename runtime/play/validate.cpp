@@ -10,13 +10,10 @@
 #include "gl/context.h"
 #include "io/image.h"
 #include "render/geodesic.h"
-#include "render/grooves.h"
-#include "render/hatching.h"
-#include "render/paintstrokes.h"
 #include "render/renderer.h"
-#include "render/revolution.h"
 #include "render/target.h"
 #include "scene/scene.h"
+#include "techniques/registry.h"
 
 namespace bake::play {
 namespace {
@@ -209,11 +206,10 @@ Status checkPackageStructure(const glb::Package& package, const std::string& nam
   for (std::size_t i = 0; i < package.materials.size(); ++i) {
     BAKE_RETURN_IF_ERROR(checkVendorExtensions(package.materials[i], {name, "material " + std::to_string(i)}));
   }
-  BAKE_RETURN_IF_ERROR(checkGeodesicPackage(package, name));
-  BAKE_RETURN_IF_ERROR(checkRevolutionPackage(package, name));
-  BAKE_RETURN_IF_ERROR(checkHatchingPackage(package, name));
-  BAKE_RETURN_IF_ERROR(checkGroovesPackage(package, name));
-  BAKE_RETURN_IF_ERROR(checkPaintstrokePackage(package, name));
+  // Each technique's loader checks (libbake's package readers, through the registry).
+  for (const techniques::Technique& technique : techniques::all()) {
+    if (technique.checkPackage) BAKE_RETURN_IF_ERROR(technique.checkPackage(package, name));
+  }
   return {};
 }
 

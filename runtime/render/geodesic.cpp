@@ -14,12 +14,11 @@
 #include <cmath>
 #include <map>
 
-#include "render/geodesic_internal.h"
 
 namespace bake::play {
 namespace {
 
-using namespace geodesic_detail;
+using namespace geodesic::material_detail;
 namespace fmt = format::geodesic;
 
 constexpr int kPositionLocation = 0;
@@ -283,5 +282,7 @@ std::size_t GeodesicRenderer::gpuBytes() const {
   for (const Item& item : items_) total += item.gpu.uploadedBytes();
   return total;
 }
+
+std::unique_ptr<TechniqueRenderer> geodesicRenderer() { return std::make_unique<GeodesicRenderer>(); }
 
 }  // namespace bake::play

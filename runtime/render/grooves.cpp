@@ -390,4 +390,6 @@ std::size_t GroovesRenderer::gpuBytes() const {
   return total;
 }
 
+std::unique_ptr<TechniqueRenderer> groovesRenderer() { return std::make_unique<GroovesRenderer>(); }
+
 }  // namespace bake::play

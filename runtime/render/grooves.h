@@ -5,7 +5,7 @@
 // they are, one storage buffer holding every bufferView at its 256-byte aligned offset, each bound
 // with glBindBufferRange; the grid header goes into a small uniform block.
 //
-// grooves.cpp uploads and draws; grooves_validate.cpp holds the loader checks for `bakeplay validate`.
+// grooves.cpp uploads and draws; libbake's reader (groove/package.h) decodes and checks.
 #pragma once
 
 #include <array>
@@ -15,6 +15,7 @@
 
 #include <bake_formats/grooves.h>
 
+#include "groove/package.h"
 #include "io/glb.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -33,10 +34,8 @@ struct GroovesOptions {
   int forceRetries = 0;
 };
 
-// Loader checks of BAKE_grooves for `bakeplay validate`: every package whose material carries it
-// decodes (version, header, array sizes against counts and strides, CSR prefix sums, every index),
-// and the mesh drawn with it has TEXCOORD_0.
-Status checkGroovesPackage(const glb::Package& package, const std::string& name);
+// The loader checks are libbake's (groove/package.h).
+using groove::checkGroovesPackage;
 
 class GroovesRenderer : public TechniqueRenderer {
  public:

@@ -172,4 +172,6 @@ void HatchingRenderer::draw(const FrameContext& frame) {
 
 std::size_t HatchingRenderer::gpuBytes() const { return bytes_; }
 
+std::unique_ptr<TechniqueRenderer> hatchingRenderer() { return std::make_unique<HatchingRenderer>(); }
+
 }  // namespace bake::play

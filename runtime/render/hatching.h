@@ -8,7 +8,7 @@
 // stage picks the tone of each of the four triangles from its Lambert term, interpolates the two
 // nearest TAM layers and blends the four colours (§3.4 Algorithm 3).
 //
-// hatching_params.cpp reads and checks the material extension (also for `bakeplay validate`).
+// libbake's reader (tam/package_read.h) reads and checks the material extension.
 #pragma once
 
 #include <array>
@@ -21,6 +21,7 @@
 #include "io/glb.h"
 #include "io/ktx2.h"
 #include "render/renderer.h"
+#include "tam/package_read.h"
 
 namespace bake::play {
 
@@ -42,30 +43,11 @@ struct TriangleAdjacency {
 TriangleAdjacency buildTriangleAdjacency(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices);
 
 // ---------------------------------------------------------------------------------------------
-// hatching_params.cpp
-
-enum class HatchingOrientation { TowardLight, AcrossLight };
-
-// One material's BAKE_hatching object, with its TAM decoded.
-struct HatchingParams {
-  int tamImage = 0;
-  std::vector<float> tones;  // darkness per layer, strictly increasing in (0, 1)
-  float tilesPerUnit = 1;
-  float rotation = 0;                 // radians about N
-  std::array<float, 2> translation{0, 0};  // tiles along T and B
-  HatchingOrientation orientation = HatchingOrientation::TowardLight;
-  std::array<float, 3> baseColor{1, 1, 1};
-  ktx2::Texture tam;  // 2D array, layers == tones.size(), full mip chain, R8 or RGBA8
-};
-
-// Reads a material's BAKE_hatching object and checks it against the package: the fields and their
-// ranges, the embedded KTX2 image decodes and is a 2D array of `tones` layers with a full mip chain in
-// R8 or RGBA8. `where` names the material; messages name the field.
-Result<HatchingParams> parseHatching(const nlohmann::json& extension, const glb::Package& package,
-                                     const Location& where);
-
-// Loader checks of BAKE_hatching for `bakeplay validate`: every material that carries it parses.
-Status checkHatchingPackage(const glb::Package& package, const std::string& name);
+// The package's data as libbake's reader gives them (libbake/tam/package_read.h).
+using tam::HatchingOrientation;
+using tam::HatchingParams;
+using tam::parseHatching;
+using tam::checkHatchingPackage;
 
 // ---------------------------------------------------------------------------------------------
 // hatching.cpp

@@ -303,4 +303,6 @@ nlohmann::json PaintstrokesRenderer::statistics() const {
 
 std::size_t PaintstrokesRenderer::gpuBytes() const { return bytes_; }
 
+std::unique_ptr<TechniqueRenderer> paintstrokesRenderer() { return std::make_unique<PaintstrokesRenderer>(); }
+
 }  // namespace bake::play

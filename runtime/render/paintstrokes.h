@@ -11,8 +11,8 @@
 // The reference (--stroke-tubes SIDESxSTEPS) draws the same strokes as fixed tubes tessellated on the
 // CPU at load, shaded by the same formulas from the true surface normal.
 //
-// paintstrokes_params.cpp reads and checks the extension (also for `bakeplay validate`) and builds the
-// tubes; paintstrokes.cpp uploads and draws.
+// libbake reads and checks the extension (strokes/package.h); paintstrokes_tubes.cpp builds the tubes;
+// paintstrokes.cpp uploads and draws.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +28,7 @@
 namespace bake::play {
 
 // ---------------------------------------------------------------------------------------------
-// paintstrokes_params.cpp
+// paintstrokes_tubes.cpp
 
 struct PaintstrokeOptions {
   int quality = 1;           // 0, 1, 2: format::paintstrokes::kPolygonsAcross[quality] polygons across
@@ -45,17 +45,9 @@ struct PaintstrokeOptions {
 // 1..1024 (STEPS defaults to SIDES / 2, at least 1).
 Result<PaintstrokeOptions> makePaintstrokeOptions(int quality, double tolerance, const std::string& tubes);
 
-// Reads one material's BAKE_paintstrokes object with libbake's reader (which checks version,
-// strides, counts, point ranges, style indices and limits) and adds the runtime's own checks: finite
-// quantisation boxes and culling spheres, positive radius steps, style values in range, unit shadow
-// directions. `where` names the material.
-Result<strokes::PaintstrokePackage> readPaintstrokes(const glb::Package& package, const nlohmann::json& extension,
-                                                      const Location& where);
-
-// Loader checks of BAKE_paintstrokes for `bakeplay validate`: every material that carries it reads,
-// and every primitive drawn with it is a LINES primitive (glTF mode 1) with one POSITION per control
-// point.
-Status checkPaintstrokePackage(const glb::Package& package, const std::string& name);
+// The package is read and checked by libbake (strokes/package.h).
+using strokes::readPaintstrokes;
+using strokes::checkPaintstrokePackage;
 
 // Fixed tubes around every stroke: `sides` vertices around, `steps` rings per segment. Each vertex
 // is position, outward normal, unit tangent (model space), the parameter t in [0, 1] along its

@@ -1,19 +1,9 @@
 #include "render/renderer.h"
 
-#include <bake_formats/geodesic.h>
-#include <bake_formats/grooves.h>
-#include <bake_formats/paintstrokes.h>
-#include <bake_formats/revolution.h>
-#include <bake_formats/tam.h>
-
 #include <GL/glcorearb.h>
 
-#include "render/geodesic.h"
-#include "render/grooves.h"
-#include "render/hatching.h"
-#include "render/paintstrokes.h"
-#include "render/revolution.h"
 #include "render/standard.h"
+#include "techniques/registry.h"
 
 namespace bake::play {
 
@@ -21,12 +11,10 @@ const RendererRegistry& RendererRegistry::builtIn() {
   static const RendererRegistry registry = [] {
     RendererRegistry r;
     r.add("", [] { return std::make_unique<StandardRenderer>(); });
-    // Technique renderers register here: r.add("BAKE_<technique>", ...).
-    r.add(format::geodesic::kExtension, [] { return std::make_unique<GeodesicRenderer>(); });
-    r.add(format::revolution::kExtension, [] { return std::make_unique<RevolutionRenderer>(); });
-    r.add(format::tam::kExtension, [] { return std::make_unique<HatchingRenderer>(); });
-    r.add(format::grooves::kExtension, [] { return std::make_unique<GroovesRenderer>(); });
-    r.add(format::paintstrokes::kExtension, [] { return std::make_unique<PaintstrokesRenderer>(); });
+    // One renderer per technique of the registry (libbake/techniques/techniques.def).
+#define BAKE_TECHNIQUE(name) r.add(techniques::name##Technique().extension, &name##Renderer);
+#include "techniques/techniques.def"
+#undef BAKE_TECHNIQUE
     return r;
   }();
   return registry;

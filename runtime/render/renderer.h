@@ -1,4 +1,5 @@
-// The one registration point per technique. Each BAKE_<technique> extension has a renderer that
+// The renderers of the techniques in the registry (libbake/techniques/techniques.def): each
+// BAKE_<technique> extension has a renderer, made by <technique>Renderer(), that
 // prepares the instances whose material carries it (uploading only the data its shaders read and
 // compiling only the variants those instances need) and draws them each frame. Instances without a
 // technique are drawn by the standard renderer (Blinn-Phong).
@@ -44,6 +45,11 @@ class TechniqueRenderer {
 };
 
 using RendererFactory = std::function<std::unique_ptr<TechniqueRenderer>()>;
+
+// The renderer of each technique (defined beside it in render/<technique>*.cpp).
+#define BAKE_TECHNIQUE(name) std::unique_ptr<TechniqueRenderer> name##Renderer();
+#include "techniques/techniques.def"
+#undef BAKE_TECHNIQUE
 
 class RendererRegistry {
  public:

@@ -333,4 +333,6 @@ std::size_t RevolutionRenderer::gpuBytes() const {
   return total;
 }
 
+std::unique_ptr<TechniqueRenderer> revolutionRenderer() { return std::make_unique<RevolutionRenderer>(); }
+
 }  // namespace bake::play

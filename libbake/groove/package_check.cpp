@@ -5,9 +5,8 @@
 #include <bake_formats/grooves.h>
 
 #include "groove/package.h"
-#include "render/grooves.h"
 
-namespace bake::play {
+namespace bake::groove {
 
 Status checkGroovesPackage(const glb::Package& package, const std::string& name) {
   std::vector<bool> carries(package.materials.size(), false);
@@ -22,7 +21,7 @@ Status checkGroovesPackage(const glb::Package& package, const std::string& name)
   for (std::size_t m = 0; m < package.materials.size(); ++m)  // an assembled scene has several
     if (carries[m])
       BAKE_RETURN_IF_ERROR(
-          groove::decodeGrooveExtension(package, package.materials[m]["extensions"][format::grooves::kExtension], name).status());
+          decodeGrooveExtension(package, package.materials[m]["extensions"][format::grooves::kExtension], name).status());
   for (std::size_t mesh = 0; mesh < package.meshes.size(); ++mesh) {
     for (std::size_t p = 0; p < package.meshes[mesh].primitives.size(); ++p) {
       const glb::Primitive& primitive = package.meshes[mesh].primitives[p];
@@ -36,4 +35,4 @@ Status checkGroovesPackage(const glb::Package& package, const std::string& name)
   return {};
 }
 
-}  // namespace bake::play
+}  // namespace bake::groove

@@ -1,4 +1,4 @@
-// Reading and checking BAKE_hatching (formats/tam.md) for the renderer and for `bakeplay validate`.
+// Reading and checking BAKE_hatching (formats/tam.md; tam/package_read.h).
 // Packages are untrusted: every field is checked as formats/hatching.schema.json states it (all fields
 // but `threshold` required, no others), and a failure names the file, the material and the field. The
 // TAM must be an embedded KTX2 2D array (one layer per tone) with the full mip chain, in R8 or RGBA8;
@@ -11,9 +11,9 @@
 
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "render/hatching.h"
+#include "tam/package_read.h"
 
-namespace bake::play {
+namespace bake::tam {
 namespace {
 
 namespace fmt = format::tam;
@@ -203,4 +203,4 @@ Status checkHatchingPackage(const glb::Package& package, const std::string& name
   return {};
 }
 
-}  // namespace bake::play
+}  // namespace bake::tam

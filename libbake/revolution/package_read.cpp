@@ -1,17 +1,14 @@
 // Reading and checking a BAKE_revolution material (formats/revolution.md, constants in
-// bake_formats/revolution.h). The runtime trusts nothing it uploads: every bufferView must exist and
-// hold exactly width * height texels of its encoding, numbers must be finite and in range, proxy
-// bands well-formed and no more than the shader's array holds. Each error names the material and the
-// field at fault, so `bakeplay validate` says what is wrong, not just that something is.
+// bake_formats/revolution.h; revolution/package_read.h).
 #include <bake_formats/revolution.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "core/json_keys.h"
-#include "render/revolution.h"
+#include "revolution/package_read.h"
 
-namespace bake::play {
+namespace bake::revolution {
 namespace {
 
 namespace fmt = format::revolution;
@@ -88,8 +85,8 @@ Status checkBufferView(const Fields& in, const char* key, int index, const glb::
   return {};
 }
 
-std::size_t texelBytesOf(ShapeEncoding encoding) {
-  return encoding == ShapeEncoding::Float ? 16 : encoding == ShapeEncoding::Unorm16 ? 8 : 4;
+std::size_t texelBytesOf(DistanceEncoding encoding) {
+  return encoding == DistanceEncoding::Float ? 16 : encoding == DistanceEncoding::Unorm16 ? 8 : 4;
 }
 
 Status readShapeMap(const Fields& root, const glb::Package& package, RevolutionParams::ShapeMap& map) {
@@ -102,15 +99,15 @@ Status readShapeMap(const Fields& root, const glb::Package& package, RevolutionP
   map.hMin = float(hMin);
   BAKE_ASSIGN_OR_RETURN(const std::string encoding, in.string("encoding"));
   if (encoding == fmt::kEncodingFloat) {
-    map.encoding = ShapeEncoding::Float;
+    map.encoding = DistanceEncoding::Float;
   } else if (encoding == fmt::kEncodingUnorm16) {
-    map.encoding = ShapeEncoding::Unorm16;
+    map.encoding = DistanceEncoding::Unorm16;
   } else if (encoding == fmt::kEncodingSqrt8) {
-    map.encoding = ShapeEncoding::Sqrt8;
+    map.encoding = DistanceEncoding::Sqrt8;
   } else {
     return in.error("encoding", "is \"" + encoding + "\"; known: float, unorm16, sqrt8");
   }
-  if (map.encoding != ShapeEncoding::Float) {
+  if (map.encoding != DistanceEncoding::Float) {
     BAKE_ASSIGN_OR_RETURN(const double scale, in.positive("distanceScale"));
     map.distanceScale = float(scale);
   }
@@ -191,11 +188,11 @@ Status readProjection(const Fields& root, const glb::Package& package, Revolutio
     BAKE_ASSIGN_OR_RETURN(const Fields in, root.object("projection"));
     BAKE_ASSIGN_OR_RETURN(const std::string type, in.string("type"));
     if (type == fmt::kProjectionCylindrical) {
-      params.projection = RevolutionProjection::Cylindrical;
+      params.projection = Projection::Cylindrical;
     } else if (type == fmt::kProjectionSpherical) {
-      params.projection = RevolutionProjection::Spherical;
+      params.projection = Projection::Spherical;
     } else if (type == fmt::kProjectionArcLength) {
-      params.projection = RevolutionProjection::ArcLength;
+      params.projection = Projection::ArcLength;
     } else {
       return in.error("type", "is \"" + type + "\"; known: cylindrical, spherical, arc-length");
     }
@@ -221,31 +218,13 @@ Status readProjection(const Fields& root, const glb::Package& package, Revolutio
                                          "one R unorm16 per shape-map texel"));
     params.arcLengthBufferView = view;
   }
-  if (params.projection == RevolutionProjection::ArcLength && !params.arcLengthBufferView) {
+  if (params.projection == Projection::ArcLength && !params.arcLengthBufferView) {
     return root.error("arcLengthMap", "is missing; the arc-length projection reads it");
   }
   return {};
 }
 
 }  // namespace
-
-const char* shapeEncodingName(ShapeEncoding encoding) {
-  switch (encoding) {
-    case ShapeEncoding::Float: return fmt::kEncodingFloat;
-    case ShapeEncoding::Unorm16: return fmt::kEncodingUnorm16;
-    case ShapeEncoding::Sqrt8: return fmt::kEncodingSqrt8;
-  }
-  return "";
-}
-
-const char* revolutionProjectionName(RevolutionProjection projection) {
-  switch (projection) {
-    case RevolutionProjection::Cylindrical: return fmt::kProjectionCylindrical;
-    case RevolutionProjection::Spherical: return fmt::kProjectionSpherical;
-    case RevolutionProjection::ArcLength: return fmt::kProjectionArcLength;
-  }
-  return "";
-}
 
 Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const glb::Package& package,
                                          const Location& where) {
@@ -296,4 +275,4 @@ Status checkRevolutionPackage(const glb::Package& package, const std::string& na
   return {};
 }
 
-}  // namespace bake::play
+}  // namespace bake::revolution

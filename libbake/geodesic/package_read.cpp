@@ -1,17 +1,14 @@
-// GeoTextures material parameters and the loader checks of BAKE_geodesic (seed 003, sections
-// 5.2.3-5.3): presets and their defaults, parsing of a material's extension (every key optional, wrong
-// types are errors), which field attributes a material reads, and the package checks `bakeplay
-// validate` runs. No GL here (the GLB fuzz target links it); the renderer is geodesic.cpp.
+// GeoTextures material parameters and the loader checks of BAKE_geodesic (geodesic/package_read.h).
 #include <bake_formats/geodesic.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 
-#include "render/geodesic_internal.h"
+#include "geodesic/package_read.h"
 
-namespace bake::play {
-namespace geodesic_detail {
+namespace bake::geodesic {
+namespace material_detail {
 namespace {
 namespace fmt = format::geodesic;
 }  // namespace
@@ -35,11 +32,11 @@ const PresetInfo& infoOf(GeoPreset preset) {
 
 std::string attributeName(int field) { return fmt::kAttributePrefix + std::to_string(field); }
 
-}  // namespace geodesic_detail
+}  // namespace material_detail
 
 namespace {
 
-using namespace geodesic_detail;
+using namespace material_detail;
 namespace fmt = format::geodesic;
 
 // ---------------------------------------------------------------------------------------------
@@ -228,7 +225,7 @@ Status checkRootExtension(const glb::Package& package, const std::string& name) 
 
 }  // namespace
 
-namespace geodesic_detail {
+namespace material_detail {
 
 Result<std::vector<int>> resolveFields(const GeoTextureParams& params, const glb::Primitive& primitive,
                                        const Location& where) {
@@ -296,9 +293,9 @@ Status checkFieldAttribute(const glb::Attribute& a, const Location& where, bool 
   return {};
 }
 
-}  // namespace geodesic_detail
+}  // namespace material_detail
 
-using namespace geodesic_detail;
+using namespace material_detail;
 
 // ---------------------------------------------------------------------------------------------
 // Presets and parameters
@@ -442,4 +439,4 @@ Status checkGeodesicPackage(const glb::Package& package, const std::string& name
   return checkRootExtension(package, name);
 }
 
-}  // namespace bake::play
+}  // namespace bake::geodesic

@@ -1,0 +1,14 @@
+// The geodesic technique's row in the registry (techniques/registry.h): GeoTextures over the
+// per-vertex distance fields geobake writes.
+#include <bake_formats/geodesic.h>
+
+#include "geodesic/package_read.h"
+#include "techniques/registry.h"
+
+namespace bake::techniques {
+
+Technique geodesicTechnique() {
+  return {"geodesic", format::geodesic::kExtension, "geobake", geodesic::checkGeodesicPackage, {}};
+}
+
+}  // namespace bake::techniques

@@ -1,0 +1,13 @@
+// The revolution technique's row in the registry (techniques/registry.h): shape maps revolbake writes.
+#include <bake_formats/revolution.h>
+
+#include "revolution/package_read.h"
+#include "techniques/registry.h"
+
+namespace bake::techniques {
+
+Technique revolutionTechnique() {
+  return {"revolution", format::revolution::kExtension, "revolbake", revolution::checkRevolutionPackage, {}};
+}
+
+}  // namespace bake::techniques

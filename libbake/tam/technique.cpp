@@ -1,0 +1,14 @@
+// The hatching technique's row in the registry (techniques/registry.h): the tonal art maps tambake
+// writes, drawn by real-time hatching.
+#include <bake_formats/tam.h>
+
+#include "tam/package_read.h"
+#include "techniques/registry.h"
+
+namespace bake::techniques {
+
+Technique hatchingTechnique() {
+  return {"hatching", format::tam::kExtension, "tambake", tam::checkHatchingPackage, {}};
+}
+
+}  // namespace bake::techniques
