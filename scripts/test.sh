@@ -7,7 +7,7 @@
 #   scripts/test.sh --all        both tiers
 #   scripts/test.sh --sanitize   ASan + UBSan build with clang (build-sanitize/): the default tier, the
 #                                hostile matrix and the example bakes
-#   scripts/test.sh --fuzz       clang libFuzzer targets (build-fuzz/), each run briefly: ctest -L fuzz
+#   scripts/test.sh --fuzz       the libFuzzer targets (in build-sanitize/), each run briefly: ctest -L fuzz
 #                                (BAKE_FUZZ_SECONDS=600 scripts/test.sh --fuzz: ten minutes each)
 #   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli gl stiff data pipeline
 #                                hostile peer million slow)
@@ -16,13 +16,23 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
 
 export BUILD_DIR="${BUILD_DIR:-$here/build}"
+# The sanitizer stage and the fuzz targets share one clang build (build-sanitize/): ASan + UBSan,
+# coverage instrumentation for libFuzzer, -O1 with line tables (cmake/Fuzz.cmake), so that CI
+# compiles the library twice (g++ and clang), not three times.
+sanitize_build() {
+  BUILD_DIR="$here/build-sanitize"
+  export CC=clang CXX=clang++
+  # A build folder configured earlier with another compiler is configured afresh.
+  if [[ -f "$BUILD_DIR/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++' "$BUILD_DIR/CMakeCache.txt"; then
+    rm -rf "$BUILD_DIR/CMakeCache.txt" "$BUILD_DIR/CMakeFiles"
+  fi
+  # BAKE_FUZZ_SECONDS: how long each fuzz target runs (20 s by default; 600 for a ten-minute campaign).
+  "$here/scripts/build.sh" -DBAKE_SANITIZE=ON -DBAKE_FUZZ=ON -DBAKE_FUZZ_SECONDS="${BAKE_FUZZ_SECONDS:-20}"
+}
 if [[ "${1:-}" == "--fuzz" ]]; then
   # Only the fuzz targets (tests/fuzz) are built, with clang, ASan, UBSan and libFuzzer.
   shift
-  BUILD_DIR="$here/build-fuzz"
-  # BAKE_FUZZ_SECONDS: how long each target runs (20 s by default; 600 for a ten-minute campaign).
-  CC=clang CXX=clang++ BUILD_TARGETS=fuzz_targets "$here/scripts/build.sh" -DBAKE_FUZZ=ON \
-    -DBAKE_FUZZ_SECONDS="${BAKE_FUZZ_SECONDS:-20}"
+  BUILD_TARGETS=fuzz_targets sanitize_build
   cd "$BUILD_DIR"
   exec ctest --output-on-failure --parallel "$(nproc)" -L fuzz "$@"
 fi
@@ -31,22 +41,16 @@ case "${1:-}" in
   --slow) shift; tier=(-L slow) ;;
   --all) shift; tier=() ;;
 esac
-cmake_args=()
+sanitize=false
 if [[ "${1:-}" == "--sanitize" ]]; then
   shift
-  BUILD_DIR="$here/build-sanitize"
-  cmake_args+=(-DBAKE_SANITIZE=ON)
-  # clang, not the default g++: with ASan and UBSan it compiles this code base about three times
-  # faster (hatching_test.cpp: 24 s against 71 s), and the plain stage already covers g++.
-  export CC=clang CXX=clang++
-  # A build folder configured earlier with another compiler is configured afresh.
-  if [[ -f "$BUILD_DIR/CMakeCache.txt" ]] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++' "$BUILD_DIR/CMakeCache.txt"; then
-    rm -rf "$BUILD_DIR/CMakeCache.txt" "$BUILD_DIR/CMakeFiles"
-  fi
+  sanitize=true
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  sanitize_build
+else
+  "$here/scripts/build.sh"
 fi
-"$here/scripts/build.sh" "${cmake_args[@]}"
 cd "$BUILD_DIR"
 
 # What this run left out, so that nobody takes the default tier for the whole suite.
@@ -66,7 +70,7 @@ summary() {
 }
 trap summary EXIT
 
-if [[ ${#cmake_args[@]} -eq 0 ]]; then
+if ! $sanitize; then
   ctest --output-on-failure --parallel "$(nproc)" "${tier[@]}" "$@"
 else
   # The sanitizer stage runs the default tier, the hostile matrix and the example bakes (the bakers on
@@ -79,7 +83,7 @@ else
   # plain stage only: CGAL 5.5's Heat_method_3 swaps an uninitialised bool
   # (CGAL::Eigen_sparse_matrix::swap), which UBSan stops on inside CGAL's headers.
   tier=()
-  ctest --output-on-failure --parallel "$(nproc)" -LE 'gl|data|peer|million|pipeline' \
+  ctest --output-on-failure --parallel "$(nproc)" -LE 'gl|data|peer|million|pipeline|fuzz' \
     -E 'killed_mid_write|example_packages_gltf_valid' "$@"
   ASAN_OPTIONS="detect_leaks=0:abort_on_error=1" ctest --output-on-failure --parallel "$(nproc)" -L gl -LE 'slow' "$@"
 fi
