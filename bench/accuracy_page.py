@@ -289,12 +289,12 @@ def groove(d, run):
     out = []
     out.append(
         "**Measured:** the seed's groove shading as the runtime shader computes it (CPU port of "
-        "`libbake/groove/shade.h`: exact trapezoid footprint density), per view of "
+        "`libbake/groove/oracle/shade.h`: exact trapezoid footprint density), per view of "
         "`bench/groove/cases.json` on the scenes of `bench/groove/scenes/`: RMSE and cost per pixel "
         "(CPU time over the pixels, both renderers on one thread; small frames are rendered repeatedly per measurement; "
         "the method's measurements alternate with the reference's renders (two, more for timing alone where they "
         "take under 0.3 s together) and each side keeps its fastest).\n\n"
-        f"**Reference:** the independent ray tracer of `libbake/groove/reference.h` at "
+        f"**Reference:** the independent ray tracer of `libbake/groove/reference/reference.h` at "
         f"{spp + ' stratified samples per pixel' if spp else 'its default samples per pixel'}, rendered "
         "twice with different seeds: the RMSE between the two is its noise floor, and errors are quoted "
         "as RMSE / floor (criterion ≤ 3) next to the cost ratio reference / method (criterion ≥ 50).\n\n"

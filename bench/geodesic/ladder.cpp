@@ -15,7 +15,6 @@ namespace bake::bench {
 namespace {
 
 using geodesic::Surface;
-using geodesic::Vec3d;
 
 Vec3d mix(const std::vector<Vec3d>& p, std::initializer_list<std::pair<std::uint32_t, double>> terms) {
   Vec3d r{0.0, 0.0, 0.0};

@@ -1,4 +1,4 @@
-// bench-groove: the seed's method on the CPU (libbake/groove/shade.h, seed 000 §4-§7) against the
+// bench-groove: the seed's method on the CPU (libbake/groove/oracle/shade.h, seed 000 §4-§7) against the
 // independent ray-traced reference (reference.h) on the scene set of bench/groove/scenes, rendered
 // from the views of cases.json (view and light sweeps, footprint sizes, bounce counts). Per view:
 // the fastest time per frame of the method, the reference's time at --spp samples per pixel (wall
@@ -27,11 +27,11 @@
 #include <bake_formats/grooves.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/grid.h"
-#include "groove/reference.h"
-#include "groove/render.h"
-#include "groove/scene.h"
-#include "groove/shade.h"
+#include "groove/bake/grid.h"
+#include "groove/reference/reference.h"
+#include "groove/oracle/render.h"
+#include "groove/input/scene.h"
+#include "groove/oracle/shade.h"
 #include "runtime_view.h"
 
 namespace {

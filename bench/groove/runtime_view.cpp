@@ -8,7 +8,7 @@
 #include "core/diagnostics.h"
 #include "gl/context.h"
 #include "gl/shader.h"
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "io/glb.h"
 #include "render/grooves.h"
 #include "render/target.h"

@@ -1,16 +1,16 @@
 // bench-groove's runtime renderer: a view of bench/groove/cases.json drawn by bakeplay's grooves
 // renderer (runtime/render/grooves.h, the shaders in shaders/grooves) on a headless GL context,
 // through an oblique orthographic projection whose pixels are exactly the view's footprints
-// (groove/render.h windowView), so that its image compares with the reference pixel for pixel.
+// (groove/oracle/render.h windowView), so that its image compares with the reference pixel for pixel.
 #pragma once
 
 #include <filesystem>
 #include <memory>
 
 #include "core/status.h"
-#include "groove/grid.h"
-#include "groove/render.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/oracle/render.h"
+#include "groove/input/scene.h"
 #include "io/image.h"
 
 namespace bake::groove {

@@ -16,7 +16,9 @@ namespace {
 
 using nlohmann::json;
 
-Status checkSettings(const Settings& settings) {
+Status checkOptions(const Settings& settings) {
+  if (!settings.onlyFields.empty() && settings.sourcesFile.empty())
+    return usageError("--fields selects fields of a --sources file; give one");
   if (settings.encoding == Encoding::Unorm16 && settings.normalization == Normalization::None)
     return usageError("--encoding unorm16 needs normalised fields (--normalize per-field or global)");
   for (std::int64_t v : settings.sourceVertices)
@@ -165,8 +167,16 @@ Status bake(const Settings& settings, BakeSession& session) {
 
 }  // namespace
 
+Status check(const Settings& settings) { return checkOptions(settings); }
+
+Result<RunFiles> inputs(const Settings& settings) {
+  RunFiles run{{settings.input}, {settings.output}};
+  if (!settings.sourcesFile.empty()) run.inputs.push_back(settings.sourcesFile);
+  return run;
+}
+
 Status run(const Settings& settings, Diagnostics& diagnostics) {
-  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+  BAKE_RETURN_IF_ERROR(checkOptions(settings));
   BakeSession session("geobake", settings.common, diagnostics);
   session.report().setOptions(optionsOf(settings));
   return session.finish(bake(settings, session));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/options.h"
+#include "core/cache.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 #include "geodesic/heat.h"
@@ -63,6 +64,13 @@ struct Settings {
   std::string geotexture;  // adds a material choosing this GeoTexture preset (formats/geodesic-material.md)
   CommonOptions common;
 };
+
+// The option checks (usage errors), also made by run().
+Status check(const Settings& settings);
+
+// The files a bake of these settings reads and writes (for --print-inputs, the output plan and the
+// cache).
+Result<RunFiles> inputs(const Settings& settings);
 
 Status run(const Settings& settings, Diagnostics& diagnostics);
 

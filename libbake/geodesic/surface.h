@@ -11,11 +11,11 @@
 #include <span>
 #include <vector>
 
+#include "core/vec.h"
 #include "io/mesh.h"
 
 namespace bake::geodesic {
 
-using Vec3d = std::array<double, 3>;
 
 // Distances of vertices that no path reaches (another connected component) inside the solvers.
 // Packages never store it: the field writer replaces it by the recorded flag value.

@@ -8,7 +8,7 @@
 namespace bake::techniques {
 
 Technique geodesicTechnique() {
-  return {"geodesic", format::geodesic::kExtension, "geobake", geodesic::checkGeodesicPackage, {}};
+  return {"geodesic", format::geodesic::kExtension, "geobake", geodesic::checkGeodesicPackage, {}, {}};
 }
 
 }  // namespace bake::techniques

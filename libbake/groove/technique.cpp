@@ -2,13 +2,13 @@
 // writes.
 #include <bake_formats/grooves.h>
 
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {
 
 Technique groovesTechnique() {
-  return {"grooves", format::grooves::kExtension, "groovebake", groove::checkGroovesPackage, {}};
+  return {"grooves", format::grooves::kExtension, "groovebake", groove::checkGroovesPackage, {}, {}};
 }
 
 }  // namespace bake::techniques

@@ -4,12 +4,15 @@
 // The reader also accepts any other glTF 2.0 file (.glb or .gltf), as the input of a bake.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -77,6 +80,18 @@ struct Blob {
   std::vector<std::uint8_t> bytes;
   std::uint32_t alignment = 16;  // offset alignment in the binary chunk, for direct upload
 };
+
+// An array of trivially copyable records as a blob, for a package's bufferViews. glTF forbids empty
+// bufferViews: an empty array is stored as one zeroed record (its count, elsewhere, says 0).
+template <class T>
+Blob blobOf(const std::vector<T>& items, std::uint32_t alignment) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  Blob blob;
+  blob.alignment = alignment;
+  blob.bytes.assign(std::max<std::size_t>(1, items.size()) * sizeof(T), 0);
+  if (!items.empty()) std::memcpy(blob.bytes.data(), items.data(), items.size() * sizeof(T));
+  return blob;
+}
 
 struct Package {
   std::vector<Mesh> meshes;

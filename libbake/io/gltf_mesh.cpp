@@ -168,7 +168,7 @@ constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 Result<TriangleMesh> readGltfMesh(const std::filesystem::path& path, MeshReadStats* stats, bool nearOrigin) {
   BAKE_ASSIGN_OR_RETURN(const glb::Package package, glb::read(path));
-  Flattener flattener{package, path.string(), {}};
+  Flattener flattener{package, path.string(), {}, {}};
   if (package.nodes.empty()) {
     for (const glb::Mesh& mesh : package.meshes) {
       for (const glb::Primitive& primitive : mesh.primitives) flattener.appendPrimitive(primitive, kIdentity);

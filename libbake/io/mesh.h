@@ -13,13 +13,11 @@
 
 #include "core/diagnostics.h"
 #include "core/status.h"
+#include "core/vec.h"
 #include "io/glb.h"
 
 namespace bake {
 
-using Vec2f = std::array<float, 2>;
-using Vec3f = std::array<float, 3>;
-using Vec3d = std::array<double, 3>;
 using Triangle = std::array<std::uint32_t, 3>;
 
 // A point with a name, e.g. a named glTF node, usable as a geodesic source.

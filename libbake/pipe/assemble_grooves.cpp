@@ -6,7 +6,7 @@
 // shader line-samples everywhere. The package is decoded with the checked reader first.
 #include <bake_formats/grooves.h>
 
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "pipe/assemble_parts.h"
 
 namespace bake::pipe::detail {

@@ -12,8 +12,8 @@
 
 #include "bake_formats/scene.h"
 #include "core/json_keys.h"
-#include "groove/grid.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/input/scene.h"
 #include "io/mesh.h"
 #include "mesh/shapes.h"
 #include "tam/style.h"

@@ -57,7 +57,7 @@ const char* kindName(ProfileKind kind) {
   return "auto";
 }
 
-Status checkSettings(const Settings& settings) {
+Status checkOptions(const Settings& settings) {
   if (settings.resolution < 16 || settings.resolution > 16384)
     return usageError("--resolution must be within 16 .. 16384 texels");
   if (settings.paddingTexels < 1 || settings.paddingTexels > 256) return usageError("--padding must be within 1 .. 256 texels");
@@ -213,8 +213,17 @@ Status bake(const Settings& settings, BakeSession& session) {
 
 }  // namespace
 
+Status check(const Settings& settings) { return checkOptions(settings); }
+
+Result<RunFiles> inputs(const Settings& settings) {
+  RunFiles run{{settings.input}, {settings.output}};
+  if (!settings.heightMap.empty()) run.inputs.push_back(settings.heightMap);
+  if (!settings.baseColorTexture.empty()) run.inputs.push_back(settings.baseColorTexture);
+  return run;
+}
+
 Status run(const Settings& settings, Diagnostics& diagnostics) {
-  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+  BAKE_RETURN_IF_ERROR(checkOptions(settings));
   BakeSession session("revolbake", settings.common, diagnostics);
   session.report().setOptions(optionsOf(settings));
   return session.finish(bake(settings, session));

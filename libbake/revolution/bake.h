@@ -10,6 +10,7 @@
 
 #include "bake_formats/revolution.h"
 #include "core/options.h"
+#include "core/cache.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 #include "revolution/projection.h"
@@ -39,6 +40,13 @@ struct Settings {
   std::array<double, 3> position{0, 0, 0};  // node translation (where the object stands in a scene)
   CommonOptions common;  // --report, --depfile, --threads, --quiet
 };
+
+// The option checks (usage errors), also made by run().
+Status check(const Settings& settings);
+
+// The files a bake of these settings reads and writes (for --print-inputs, the output plan and the
+// cache).
+Result<RunFiles> inputs(const Settings& settings);
 
 // Bakes, writes the package (atomically), the --report and the --depfile.
 Status run(const Settings& settings, Diagnostics& diagnostics);

@@ -11,13 +11,13 @@
 #include <optional>
 #include <vector>
 
+#include "core/vec.h"
 #include "bake_formats/revolution.h"
 #include "revolution/profile.h"
 #include "revolution/shape_map.h"
 
 namespace bake::revolution {
 
-using Vec3d = std::array<double, 3>;
 
 struct Ray {
   Vec3d origin, direction;  // direction unit length

@@ -7,7 +7,7 @@
 namespace bake::techniques {
 
 Technique revolutionTechnique() {
-  return {"revolution", format::revolution::kExtension, "revolbake", revolution::checkRevolutionPackage, {}};
+  return {"revolution", format::revolution::kExtension, "revolbake", revolution::checkRevolutionPackage, {}, {}};
 }
 
 }  // namespace bake::techniques

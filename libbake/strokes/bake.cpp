@@ -26,7 +26,8 @@ namespace {
 using nlohmann::json;
 namespace fmt = format::paintstrokes;
 
-Status checkSettings(const BakeSettings& settings) {
+Status checkOptions(const Settings& settings) {
+  if (settings.grow.pointsPerStroke < 2) return usageError("--points must be at least 2");
   if (lowercaseExtension(settings.output) != ".glb") return usageError("-o " + settings.output + ": the package is a .glb file");
   const ShadowSettings& s = settings.shadow;
   if (!std::isfinite(s.density) || s.density < 0) return usageError("--shadow-density must be a finite number >= 0");
@@ -52,7 +53,7 @@ std::vector<Vec3d> shadowDirections(const ShadowSettings& s) {
   return out;
 }
 
-json optionsOf(const BakeSettings& settings, bool grown) {
+json optionsOf(const Settings& settings, bool grown) {
   const ShadowSettings& s = settings.shadow;
   json directions = json::array();
   for (const Vec3d& d : s.directions) directions.push_back({d[0], d[1], d[2]});
@@ -94,7 +95,7 @@ std::string growOptionOf(const std::string& setting) {
   return found == kOptions.end() ? setting : found->second;
 }
 
-Result<Loaded> load(const BakeSettings& settings) {
+Result<Loaded> load(const Settings& settings) {
   Loaded loaded;
   loaded.inputs.push_back(settings.input);
   if (!isStrokeList(settings.input)) {
@@ -150,7 +151,7 @@ json countsOf(const StrokeSet& set, std::size_t directions, const ValidationCoun
           {"fileBytes", fileBytes}};
 }
 
-Status bake(const BakeSettings& settings, BakeSession& session) {
+Status bake(const Settings& settings, BakeSession& session) {
   Report& report = session.report();
   Progress progress("baking paintstrokes", 5, progressEnabled(session.diagnostics().quiet()));
   Loaded loaded;
@@ -198,9 +199,7 @@ Status bake(const BakeSettings& settings, BakeSession& session) {
   return {};
 }
 
-}  // namespace
-
-std::vector<std::string> bakeInputs(const BakeSettings& settings) {
+std::vector<std::string> inputFiles(const Settings& settings) {
   // A stroke list's generators name meshes and textures (relative to the list); a list that does not
   // parse lists only itself, and the bake reports why.
   std::vector<std::string> inputs{settings.input};
@@ -218,8 +217,14 @@ std::vector<std::string> bakeInputs(const BakeSettings& settings) {
   return inputs;
 }
 
-Status runBake(const BakeSettings& settings, Diagnostics& diagnostics) {
-  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+}  // namespace
+
+Status check(const Settings& settings) { return checkOptions(settings); }
+
+Result<RunFiles> inputs(const Settings& settings) { return RunFiles{inputFiles(settings), {settings.output}}; }
+
+Status run(const Settings& settings, Diagnostics& diagnostics) {
+  BAKE_RETURN_IF_ERROR(checkOptions(settings));
   BakeSession session("strokebake", settings.common, diagnostics);
   session.report().setOptions(optionsOf(settings, !isStrokeList(settings.input)));
   return session.finish(bake(settings, session));

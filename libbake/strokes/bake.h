@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/options.h"
+#include "core/cache.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 #include "strokes/generators.h"
@@ -23,7 +24,7 @@ struct ShadowSettings {
   double minimum = 0.15;          // reflectance scale of a point the light cannot reach
 };
 
-struct BakeSettings {
+struct Settings {
   std::string input;              // .json / .csv stroke list, or a mesh (grow on it with `grow`)
   std::string output;             // OUT.glb
   GrowSettings grow;              // used when the input is a mesh (grow.mesh = input)
@@ -31,10 +32,14 @@ struct BakeSettings {
   CommonOptions common;           // --report, --depfile, --threads, --quiet, --print-inputs, --budget
 };
 
-// The files a bake of these settings reads (for --print-inputs).
-std::vector<std::string> bakeInputs(const BakeSettings& settings);
+// The option checks (usage errors), also made by run().
+Status check(const Settings& settings);
+
+// The files a bake of these settings reads and writes (for --print-inputs, the output plan and the
+// cache).
+Result<RunFiles> inputs(const Settings& settings);
 
 // Bakes, writes the package atomically, the --report and the --depfile.
-Status runBake(const BakeSettings& settings, Diagnostics& diagnostics);
+Status run(const Settings& settings, Diagnostics& diagnostics);
 
 }  // namespace bake::strokes

@@ -12,9 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "core/vec.h"
+
 namespace bake::strokes {
 
-using Vec3d = std::array<double, 3>;
 
 struct StrokePoint {
   Vec3d position{0, 0, 0};

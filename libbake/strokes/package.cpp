@@ -158,12 +158,7 @@ fmt::Style packStyle(const StrokeStyle& s) {
 
 template <class T>
 glb::Blob blobOf(const std::vector<T>& items) {
-  glb::Blob blob;
-  blob.alignment = fmt::kBufferAlignment;
-  // glTF forbids empty bufferViews: an empty array is stored as one zeroed item, its count 0.
-  blob.bytes.assign(std::max<std::size_t>(1, items.size()) * sizeof(T), 0);
-  if (!items.empty()) std::memcpy(blob.bytes.data(), items.data(), items.size() * sizeof(T));
-  return blob;
+  return glb::blobOf(items, fmt::kBufferAlignment);
 }
 
 Status checkStrokes(const StrokeSet& set, const std::vector<Vec3d>& directions, const std::vector<double>& shadows) {

@@ -43,7 +43,7 @@ bool sameFile(const std::string& a, const std::string& b) {
   return canonicalA == canonicalB;
 }
 
-Status checkSettings(const Settings& settings) {
+Status checkOptions(const Settings& settings) {
   if (lowercaseExtension(settings.output) != ".ktx2") return usageError("-o " + settings.output + ": the TAM is a .ktx2 file");
   if (!settings.threshold.empty() && lowercaseExtension(settings.threshold) != ".ktx2")
     return usageError("--threshold " + settings.threshold + ": the threshold texture is a .ktx2 file");
@@ -273,8 +273,21 @@ Status bake(const Settings& settings, BakeSession& session) {
 
 }  // namespace
 
+Status check(const Settings& settings) { return checkOptions(settings); }
+
+// The stroke image is listed, not read: a build system asks before the inputs exist.
+Result<RunFiles> inputs(const Settings& settings) {
+  BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style, false));
+  RunFiles run{style.inputs(), {settings.output}};
+  const MaterialSettings& material = settings.material;
+  if (!material.mesh.empty()) run.inputs.push_back(material.mesh);
+  if (!settings.threshold.empty()) run.outputs.push_back(settings.threshold);
+  if (!material.mesh.empty() && !material.package.empty()) run.outputs.push_back(material.package);
+  return run;
+}
+
 Status run(const Settings& settings, Diagnostics& diagnostics) {
-  BAKE_RETURN_IF_ERROR(checkSettings(settings));
+  BAKE_RETURN_IF_ERROR(checkOptions(settings));
   BakeSession session("tambake", settings.common, diagnostics);
   session.report().setOptions(optionsOf(settings));
   return session.finish(bake(settings, session));

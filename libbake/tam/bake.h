@@ -9,6 +9,7 @@
 
 #include "bake_formats/tam.h"
 #include "core/options.h"
+#include "core/cache.h"
 #include "core/diagnostics.h"
 #include "core/status.h"
 
@@ -42,6 +43,13 @@ struct Settings {
   MaterialSettings material;
   CommonOptions common;         // --report, --depfile, --threads, --quiet
 };
+
+// The option checks (usage errors), also made by run().
+Status check(const Settings& settings);
+
+// The files a bake of these settings reads and writes (for --print-inputs, the output plan and the
+// cache).
+Result<RunFiles> inputs(const Settings& settings);
 
 // Builds, writes every output atomically, the --report and the --depfile.
 Status run(const Settings& settings, Diagnostics& diagnostics);

@@ -8,7 +8,7 @@
 namespace bake::techniques {
 
 Technique hatchingTechnique() {
-  return {"hatching", format::tam::kExtension, "tambake", tam::checkHatchingPackage, {}};
+  return {"hatching", format::tam::kExtension, "tambake", tam::checkHatchingPackage, {}, {}};
 }
 
 }  // namespace bake::techniques

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "groove/package.h"
+#include "groove/package/package.h"
 
 namespace bake::play {
 namespace {

@@ -14,24 +14,21 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/vec.h"
 #include "render/paintstrokes.h"
 
 namespace bake::play {
 namespace {
 
 namespace fmt = format::paintstrokes;
-using V3 = std::array<double, 3>;
-
-V3 add(const V3& a, const V3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-V3 scale(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dotd(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-V3 crossd(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double lengthd(const V3& a) { return std::sqrt(dotd(a, a)); }
-V3 unit(const V3& a, const V3& fallback) {
-  const double l = lengthd(a);
-  return l > 1e-300 ? scale(a, 1 / l) : fallback;
-}
+using V3 = Vec3d;
+using vec::add;
+using vec::cross;
+using vec::dot;
+using vec::length;
+using vec::scale;
+using vec::sub;
+using vec::unit;
 
 // A Catmull-Rom spline through p0..p3 at u (segment p1 -> p2) and its derivative, on 4 components
 // (position and radius), exactly as shaders/paintstrokes/paintstroke.tese evaluates it.
@@ -66,13 +63,13 @@ std::array<double, 4> controlPoint(const strokes::PaintstrokePackage& p, std::si
 
 V3 anyOrthogonal(const V3& t) {
   const V3 a = std::fabs(t[0]) < 0.9 ? V3{1, 0, 0} : V3{0, 1, 0};
-  return unit(crossd(t, a), {0, 0, 1});
+  return unit(cross(t, a), {0, 0, 1});
 }
 
 // Carries `normal` (orthogonal to `from`) to be orthogonal to `to` by the smallest rotation.
 V3 transport(const V3& normal, const V3& from, const V3& to) {
-  const V3 projected = sub(normal, scale(to, dotd(normal, to)));
-  return lengthd(projected) > 1e-9 ? unit(projected, anyOrthogonal(to)) : unit(crossd(to, crossd(normal, from)), anyOrthogonal(to));
+  const V3 projected = sub(normal, scale(to, dot(normal, to)));
+  return length(projected) > 1e-9 ? unit(projected, anyOrthogonal(to)) : unit(cross(to, cross(normal, from)), anyOrthogonal(to));
 }
 
 void addStrokeTube(const strokes::PaintstrokePackage& p, std::size_t stroke, int sides, int steps, TubeMesh& mesh) {
@@ -89,11 +86,11 @@ void addStrokeTube(const strokes::PaintstrokePackage& p, std::size_t stroke, int
       const V3 centre{s.value[0], s.value[1], s.value[2]};
       const V3 derivative{s.derivative[0], s.derivative[1], s.derivative[2]};
       const V3 tangent = unit(derivative, unit(chord, {0, 0, 1}));
-      normal = lengthd(normal) == 0 ? anyOrthogonal(tangent) : transport(normal, previousTangent, tangent);
+      normal = length(normal) == 0 ? anyOrthogonal(tangent) : transport(normal, previousTangent, tangent);
       previousTangent = tangent;
-      const V3 binormal = crossd(tangent, normal);  // (normal, binormal, tangent) is right-handed
+      const V3 binormal = cross(tangent, normal);  // (normal, binormal, tangent) is right-handed
       const double radius = std::max(s.value[3], 0.0);
-      const double speed = lengthd(derivative);
+      const double speed = length(derivative);
       const double slope = speed > 1e-300 ? s.derivative[3] / speed : 0.0;  // dr/ds
       for (int k = 0; k < sides; ++k) {
         const double a = 2 * M_PI * k / sides;

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/json_keys.h"
+#include "core/vector_text.h"
 #include "io/glb_scene.h"
 
 namespace bake::play {
@@ -103,14 +104,8 @@ Status addPackage(Scene& scene, glb::Package package, const std::string& file, b
 }
 
 Result<Vec3> parseVector(const std::string& text, const std::string& what) {
-  Vec3 v{};
-  char comma1 = 0, comma2 = 0;
-  std::istringstream in(text);
-  if (!(in >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-      !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
-    return usageError(what + " \"" + text + "\" is not three finite numbers x,y,z");
-  }
-  return v;
+  BAKE_ASSIGN_OR_RETURN(const auto v, parseTriple(text, what));
+  return Vec3{float(v[0]), float(v[1]), float(v[2])};
 }
 
 }  // namespace

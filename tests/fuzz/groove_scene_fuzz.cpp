@@ -2,7 +2,7 @@
 // data, cross-sections, flattening).
 #include "core/limits.h"
 #include "fuzz_support.h"
-#include "groove/scene.h"
+#include "groove/input/scene.h"
 
 // Budgets a thousand times below the defaults: an input that is merely large (a spiral of thousands of
 // turns) is the budgets' business, tested elsewhere; here it would only hit libFuzzer's 10 s timeout.

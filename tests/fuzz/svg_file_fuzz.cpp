@@ -1,7 +1,7 @@
-// SVG files as groove input (libbake/groove/svg_file.h): libxml2's parse, then the shapes, groups and
+// SVG files as groove input (libbake/groove/input/svg_file.h): libxml2's parse, then the shapes, groups and
 // transforms read into path pieces with the placement a scene gives.
 #include "fuzz_support.h"
-#include "groove/svg_file.h"
+#include "groove/input/svg_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::filesystem::path file = bake::fuzz::writeInput(data, size, "drawing.svg");

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/reference.h"
-#include "groove/shade.h"
+#include "groove/reference/reference.h"
+#include "groove/oracle/shade.h"
 #include "groove_support.h"
 
 namespace bake::groove {

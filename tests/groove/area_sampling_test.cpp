@@ -1,4 +1,4 @@
-// Area sampling for special cases (libbake/groove/area_sampling.cpp, seed 000 §6): closed forms derived
+// Area sampling for special cases (libbake/groove/oracle/area_sampling.cpp, seed 000 §6): closed forms derived
 // by hand for an isolated V-groove (masking and shadowing in the cross-section), the facet fractions of
 // a 90° crossing and a 90° corner seen from above, the wall's share at an open end seen from the side,
 // continuity across nearly straight corners, and the ray-traced reference (reference.h) for crossings,

@@ -1,4 +1,4 @@
-// Stiff cases of area sampling (libbake/groove/area_sampling.cpp): crossings at 1°, grazing views up
+// Stiff cases of area sampling (libbake/groove/oracle/area_sampling.cpp): crossings at 1°, grazing views up
 // to 85°, a light at and below the horizon, footprints a hundred groove widths across (many pieces:
 // the caps), zero-area and degenerate footprints. Closed forms where they exist, else the ray-traced
 // reference; always finite, non-negative values.

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/area_surface.h"
-#include "groove/reference.h"
-#include "groove/scene.h"
-#include "groove/shade_local.h"
+#include "groove/oracle/area_surface.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
+#include "groove/oracle/shade_local.h"
 #include "groove/groove_support.h"
 
 namespace bake::groove::area_test {

@@ -1,4 +1,4 @@
-// The far level (groove/far_level.h): band areas against closed forms (parallel lines, repeated
+// The far level (groove/bake/far_level.h): band areas against closed forms (parallel lines, repeated
 // periods), its classes, its package round trip, and a footprint over whole bands shaded from it
 // against the seed's method with every groove shaded.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "groove/far_level.h"
-#include "groove/package.h"
-#include "groove/shade.h"
+#include "groove/bake/far_level.h"
+#include "groove/package/package.h"
+#include "groove/oracle/shade.h"
 #include "groove_support.h"
 
 namespace bake::groove {

@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/grid.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/input/scene.h"
 #include "groove/groove_support.h"
 
 namespace bake::groove {

@@ -1,4 +1,4 @@
-// The groove grid (libbake/groove/grid.h; seed 000 §4.1, §4.2): automatic cell size, conservative
+// The groove grid (libbake/groove/bake/grid.h; seed 000 §4.1, §4.2): automatic cell size, conservative
 // and tight cell lists against an independent region test, CSR invariants, determinism across thread
 // counts, wrap-around, box queries, and the special-case records.
 #include <algorithm>
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/grid.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/input/scene.h"
 #include "groove/groove_support.h"
 
 namespace bake::groove {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/grid.h"
-#include "groove/render.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/oracle/render.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 

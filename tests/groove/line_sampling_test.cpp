@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/line_sampling_section.h"
-#include "groove/scene.h"
+#include "groove/oracle/line_sampling_section.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 namespace {

@@ -1,4 +1,4 @@
-// The BAKE_grooves package (libbake/groove/package.h, formats/grooves.md): round trip through a file,
+// The BAKE_grooves package (libbake/groove/package/package.h, formats/grooves.md): round trip through a file,
 // bufferView offsets on 256-byte boundaries, std430 strides, the decoded geometry against the scene's
 // double geometry (within fp32 rounding of a cell-local offset), the preview plane, and the reader's
 // refusal of damaged packages.
@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/grooves.h"
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "io/glb.h"
 #include "support/golden.h"
 

@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/line_sampling_section.h"
-#include "groove/reference.h"
-#include "groove/scene.h"
+#include "groove/oracle/line_sampling_section.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 namespace {

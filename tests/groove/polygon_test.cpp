@@ -1,10 +1,10 @@
-// Convex polygon clipping for area sampling (libbake/groove/polygon.h): areas of known cases,
+// Convex polygon clipping for area sampling (libbake/groove/oracle/polygon.h): areas of known cases,
 // subtraction into disjoint pieces, degenerate inputs, and the fragment set's overflow fallback.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "groove/polygon.h"
+#include "groove/oracle/polygon.h"
 
 namespace bake::groove {
 namespace {

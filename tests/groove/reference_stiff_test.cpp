@@ -1,4 +1,4 @@
-// Stiff cases of the ray-traced reference (libbake/groove/reference.h): grazing views up to 89
+// Stiff cases of the ray-traced reference (libbake/groove/reference/reference.h): grazing views up to 89
 // degrees, lights at and below the horizon, grooves tiny and huge against the footprint, a crossing
 // at 1 degree, a corner folded back almost onto itself, footprints of 1000 groove widths and a tiny
 // groove far out in a huge domain. Every result is finite and, where a closed
@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/reference.h"
-#include "groove/scene.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 namespace {

@@ -1,4 +1,4 @@
-// The ray-traced reference (libbake/groove/reference.h): the exact surface of formats/groove-scene.md
+// The ray-traced reference (libbake/groove/reference/reference.h): the exact surface of formats/groove-scene.md
 // (crossings, open ends, arcs, corners, wrap) and pixel values against closed forms derived by hand
 // for a straight symmetric V-groove (visible facet fractions with masking, shadowed fractions), with
 // the stratified sampling error bounded: the integrand is piecewise constant across the groove, so
@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/reference.h"
-#include "groove/scene.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 namespace {

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/scene.h"
+#include "groove/input/scene.h"
 
 namespace bake::groove {
 namespace {

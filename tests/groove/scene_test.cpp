@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/generators.h"
-#include "groove/scene.h"
+#include "groove/input/generators.h"
+#include "groove/input/scene.h"
 #include "support/node_check.h"
 
 namespace bake::groove {

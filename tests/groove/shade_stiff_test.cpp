@@ -1,4 +1,4 @@
-// Stiff cases of the seed's method (libbake/groove/shade.cpp, line_sampling*.cpp, interreflection.cpp):
+// Stiff cases of the seed's method (libbake/groove/oracle/shade.cpp, line_sampling*.cpp, interreflection.cpp):
 // views up to 89 degrees and beyond, a light at and below the horizon, footprints far smaller and far
 // larger than the groove, zero-area footprints (point samples), deep mirror grooves with many bounces.
 // Every value is finite and matches a closed form where one exists.
@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/grid.h"
-#include "groove/line_sampling_section.h"
-#include "groove/scene.h"
-#include "groove/shade.h"
+#include "groove/bake/grid.h"
+#include "groove/oracle/line_sampling_section.h"
+#include "groove/input/scene.h"
+#include "groove/oracle/shade.h"
 #include "groove/groove_support.h"
 
 namespace bake::groove {

@@ -1,4 +1,4 @@
-// The seed's method through the grid (libbake/groove/shade.cpp, seed 000 §4): the enlarged box finds
+// The seed's method through the grid (libbake/groove/oracle/shade.cpp, seed 000 §4): the enlarged box finds
 // ridges seen or casting shadows from beyond the footprint, special cases go to area sampling, wrapping
 // scenes use the nearest copy, renderSeed is deterministic, and small views of a V-groove (with and
 // without mirror bounces) agree with the ray-traced reference within 3x its noise floor.
@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "groove/grid.h"
-#include "groove/line_sampling_section.h"
-#include "groove/reference.h"
-#include "groove/scene.h"
-#include "groove/shade.h"
+#include "groove/bake/grid.h"
+#include "groove/oracle/line_sampling_section.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
+#include "groove/oracle/shade.h"
 #include "groove/groove_support.h"
 
 namespace bake::groove {

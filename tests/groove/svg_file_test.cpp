@@ -1,4 +1,4 @@
-// SVG drawings as groove input (libbake/groove/svg_file.h; formats/groove-scene.md `svgFile`): shapes
+// SVG drawings as groove input (libbake/groove/input/svg_file.h; formats/groove-scene.md `svgFile`): shapes
 // become grooves placed by the viewBox, the placement and element transforms; what cannot be followed
 // exactly (ellipses, arcs under a skew, text) is refused naming the element.
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/scene.h"
-#include "groove/svg_file.h"
+#include "groove/input/scene.h"
+#include "groove/input/svg_file.h"
 
 namespace bake::groove {
 namespace {

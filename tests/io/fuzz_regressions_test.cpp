@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "io/glb.h"
 #include "io/ktx2.h"
 #include "io/mesh.h"

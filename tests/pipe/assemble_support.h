@@ -18,9 +18,9 @@
 
 #include "core/diagnostics.h"
 #include "geodesic/bake.h"
-#include "groove/grid.h"
-#include "groove/package.h"
-#include "groove/scene.h"
+#include "groove/bake/grid.h"
+#include "groove/package/package.h"
+#include "groove/input/scene.h"
 #include "io/glb.h"
 #include "io/image.h"
 #include "mesh/patterns.h"

@@ -16,7 +16,7 @@
 #include <cstring>
 
 #include "geodesic/bake.h"
-#include "groove/package.h"
+#include "groove/package/package.h"
 #include "pipe/assemble.h"
 #include "pipe/assemble_support.h"
 #include "support/golden.h"

@@ -1,5 +1,5 @@
 // Grooved surfaces (seed 000 §4-§7) in the runtime, checked against libbake's CPU method, the oracle
-// (libbake/groove/shade.h SeedShader::shade). Each scene is baked here (parseGrooveScene ->
+// (libbake/groove/oracle/shade.h SeedShader::shade). Each scene is baked here (parseGrooveScene ->
 // buildGrooveGrid -> buildGroovePackage), drawn headless by the grooves renderer into 32-bit float
 // attachments with the shader's SHADING_INPUTS variant, which also writes every pixel's shading inputs
 // (footprint centre F, edges A1 and A2, E and L in the tangent frame). The CPU method shades each
@@ -19,11 +19,11 @@
 #include <optional>
 #include <sstream>
 
-#include "groove/grid.h"
-#include "groove/package.h"
-#include "groove/reference.h"
-#include "groove/scene.h"
-#include "groove/shade.h"
+#include "groove/bake/grid.h"
+#include "groove/package/package.h"
+#include "groove/reference/reference.h"
+#include "groove/input/scene.h"
+#include "groove/oracle/shade.h"
 #include "io/glb.h"
 #include "play/validate.h"
 #include "render/grooves.h"
@@ -169,7 +169,7 @@ class GroovesOracle : public test::GlTest {
   bool areaSampling_ = false;
   int forceRetries_ = 0;  // GroovesOptions::forceRetries
   // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
-  // one are counted (libbake/groove/shade.cpp nearArcCentre splits those footprints in 3 x 3).
+  // one are counted (libbake/groove/oracle/shade.cpp nearArcCentre splits those footprints in 3 x 3).
   std::vector<std::array<float, 2>> arcCentres_;
 
   // Renders the baked scene from `eye` (looking at `target`) lit from `light`, shades every covered
@@ -441,7 +441,7 @@ TEST_F(GroovesOracle, VersionOnePackageCountsTruncatedFootprints) {
 // bench/groove's dense-parallel views (bench/groove/cases.json: 1,001 V-grooves, footprint / width
 // from 0.1 to 1000), drawn by the runtime's renderer through an oblique orthographic projection whose
 // pixels are exactly the bench's footprints (render.h windowView), against the ray-traced reference
-// (groove/reference.h): within 3x the reference's own noise floor (two renders with other seeds) at
+// (groove/reference/reference.h): within 3x the reference's own noise floor (two renders with other seeds) at
 // every footprint (half an 8-bit level where the reference has no noise). Past MAX_FOUND primitives
 // under a footprint the far level shades it.
 TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {

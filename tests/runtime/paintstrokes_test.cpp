@@ -33,7 +33,7 @@ namespace fmt = format::paintstrokes;
 
 constexpr int kSize = 160;
 
-strokes::StrokePoint point(double x, double y, double z, double radius, strokes::Vec3d colour) {
+strokes::StrokePoint point(double x, double y, double z, double radius, Vec3d colour) {
   strokes::StrokePoint p;
   p.position = {x, y, z};
   p.radius = radius;

@@ -47,4 +47,20 @@ inline Status runCachedBake(const std::string& tool, const CLI::App& app, Common
   return runCachedBake(tool, givenOptions(app), common, diagnostics, files, bake);
 }
 
+// A baker's whole run after its options are declared: parse (runTool), `prepare` (what the main
+// still turns from text into settings), then runCachedBake with the module's inputs() and run(),
+// found by argument-dependent lookup in the settings' namespace. Every baker offers the same
+// Settings / check / inputs / run (check is made by run).
+template <class Settings>
+int runBaker(const char* tool, CLI::App& app, Settings& settings, Diagnostics& diagnostics, int argc, char** argv,
+             const std::function<Status()>& prepare = {}) {
+  return runTool(app, diagnostics, argc, argv, [&]() -> Status {
+    diagnostics.setQuiet(settings.common.quiet);
+    if (prepare) BAKE_RETURN_IF_ERROR(prepare());
+    return runCachedBake(
+        tool, app, settings.common, diagnostics, [&] { return inputs(settings); },
+        [&] { return run(settings, diagnostics); });
+  });
+}
+
 }  // namespace bake

@@ -7,27 +7,8 @@
 
 #include "common/cli.h"
 #include "core/session.h"
+#include "core/vector_text.h"
 #include "geodesic/bake.h"
-
-namespace {
-
-// "x,y,z" -> a point; CLI11 2.1 has no tuple parser for repeated options.
-bool parsePoint(const std::string& text, std::array<double, 3>& point) {
-  char* end = nullptr;
-  const char* at = text.c_str();
-  for (int k = 0; k < 3; ++k) {
-    point[k] = std::strtod(at, &end);
-    if (end == at) return false;
-    at = end;
-    if (k < 2) {
-      if (*at != ',') return false;
-      ++at;
-    }
-  }
-  return *at == '\0' && std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2]);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace bake::geodesic;
@@ -85,21 +66,11 @@ int main(int argc, char** argv) {
   app.add_flag("--draco", settings.draco, "Compress the mesh with Draco (KHR_draco_mesh_compression)");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    diagnostics.setQuiet(settings.common.quiet);
-    if (!settings.onlyFields.empty() && settings.sourcesFile.empty())
-      return bake::usageError("--fields selects fields of a --sources file; give one");
+  return bake::runBaker("geobake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
     for (const std::string& text : points) {
-      std::array<double, 3> point{};
-      if (!parsePoint(text, point)) return bake::usageError("--source-point " + text + ": expected X,Y,Z");
+      BAKE_ASSIGN_OR_RETURN(const auto point, bake::parseTriple(text, "--source-point"));
       settings.sourcePoints.push_back(point);
     }
-    // The files of this run, for --print-inputs and --cache-dir.
-    const auto files = [&]() -> bake::Result<bake::RunFiles> {
-      bake::RunFiles run{{settings.input}, {settings.output}};
-      if (!settings.sourcesFile.empty()) run.inputs.push_back(settings.sourcesFile);
-      return run;
-    };
-    return bake::runCachedBake("geobake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
+    return {};
   });
 }

@@ -6,14 +6,14 @@
 #include "common/cli.h"
 #include "core/huge_pages.h"
 #include "core/session.h"
-#include "groove/bake.h"
+#include "groove/bake/bake.h"
 
 int main(int argc, char** argv) {
   // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten
   // times less (core/huge_pages.h).
   bake::reexecWithHugePages(argv, "groovebake");
   using namespace bake::groove;
-  BakeSettings settings;
+  Settings settings;
   bake::Diagnostics diagnostics("groovebake");
   CLI::App app{"Bakes a groove scene (paths in UV, polyline cross-sections, perturbations, materials) into\n"
                "a glTF package whose BAKE_grooves material holds the groove grid: a uniform grid of\n"
@@ -31,11 +31,5 @@ int main(int argc, char** argv) {
                "Write no special-case records: every footprint is line-sampled (for patterns seen only from far)");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    diagnostics.setQuiet(settings.common.quiet);
-    // The files of this run, for --print-inputs and --cache-dir.
-    const auto files = [&]() -> bake::Result<bake::RunFiles> { return bake::RunFiles{bakeInputs(settings), {settings.output}}; };
-    return bake::runCachedBake("groovebake", app, settings.common, diagnostics, files,
-                               [&] { return runBake(settings, diagnostics); });
-  });
+  return bake::runBaker("groovebake", app, settings, diagnostics, argc, argv);
 }

@@ -6,6 +6,7 @@
 
 #include "common/cli.h"
 #include "core/session.h"
+#include "core/vector_text.h"
 #include "revolution/bake.h"
 
 int main(int argc, char** argv) {
@@ -62,20 +63,9 @@ int main(int argc, char** argv) {
       ->default_str("1.6");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    diagnostics.setQuiet(settings.common.quiet);
+  return bake::runBaker("revolbake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
     if (projectionOption->count() > 0) settings.projection = projection;
-    const bool positionParsed = position.empty() || std::sscanf(position.c_str(), "%lf,%lf,%lf", &settings.position[0],
-                                                                &settings.position[1], &settings.position[2]) == 3;
-    if (!positionParsed || !std::isfinite(settings.position[0] + settings.position[1] + settings.position[2]))
-      return bake::usageError("--position " + position + ": expected X,Y,Z");
-    // The files of this run, for --print-inputs and --cache-dir.
-    const auto files = [&]() -> bake::Result<bake::RunFiles> {
-      bake::RunFiles run{{settings.input}, {settings.output}};
-      if (!settings.heightMap.empty()) run.inputs.push_back(settings.heightMap);
-      if (!settings.baseColorTexture.empty()) run.inputs.push_back(settings.baseColorTexture);
-      return run;
-    };
-    return bake::runCachedBake("revolbake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
+    if (!position.empty()) { BAKE_ASSIGN_OR_RETURN(settings.position, bake::parseTriple(position, "--position")); }
+    return {};
   });
 }

@@ -8,25 +8,12 @@
 
 #include "common/cli.h"
 #include "core/session.h"
+#include "core/vector_text.h"
 #include "strokes/bake.h"
-
-namespace {
-
-// "x,y,z" as three numbers, or a usage error naming the option.
-bake::Result<bake::strokes::Vec3d> parseVector(const std::string& text, const char* option) {
-  bake::strokes::Vec3d v{};
-  std::istringstream in(text);
-  char comma1 = 0, comma2 = 0;
-  if (!(in >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof())
-    return bake::usageError(std::string(option) + " " + text + ": expected x,y,z");
-  return v;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace bake::strokes;
-  BakeSettings settings;
+  Settings settings;
   bake::Diagnostics diagnostics("strokebake");
   CLI::App app{"Bakes 3D paintstrokes (generalized cylinders whose path and radius are Catmull-Rom splines\n"
                "through control points, with colour, opacity and reflectance varying along them) into a\n"
@@ -61,17 +48,12 @@ int main(int argc, char** argv) {
   growGroup->add_option("--colour-from", grow.colourFrom, "Colours from vertex (COLOR_0 / vertex colours) or texture:PATH");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    diagnostics.setQuiet(settings.common.quiet);
+  return bake::runBaker("strokebake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
     for (const std::string& text : lightDirs) {
-      BAKE_ASSIGN_OR_RETURN(const Vec3d d, parseVector(text, "--light-dir"));
+      BAKE_ASSIGN_OR_RETURN(const bake::Vec3d d, bake::parseTriple(text, "--light-dir"));
       settings.shadow.directions.push_back(d);
     }
-    if (!bendDirection.empty()) { BAKE_ASSIGN_OR_RETURN(grow.bendDirection, parseVector(bendDirection, "--bend-direction")); }
-    if (grow.pointsPerStroke < 2) return bake::usageError("--points must be at least 2");
-    // The files of this run, for --print-inputs and --cache-dir.
-    const auto files = [&]() -> bake::Result<bake::RunFiles> { return bake::RunFiles{bakeInputs(settings), {settings.output}}; };
-    return bake::runCachedBake("strokebake", app, settings.common, diagnostics, files,
-                               [&] { return runBake(settings, diagnostics); });
+    if (!bendDirection.empty()) { BAKE_ASSIGN_OR_RETURN(grow.bendDirection, bake::parseTriple(bendDirection, "--bend-direction")); }
+    return {};
   });
 }

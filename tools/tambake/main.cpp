@@ -7,25 +7,9 @@
 
 #include "common/cli.h"
 #include "core/session.h"
+#include "core/vector_text.h"
 #include "tam/bake.h"
 #include "tam/style.h"
-
-namespace {
-
-bool parseTriple(const std::string& text, std::array<double, 3>& out) {
-  if (text.empty()) return true;
-  char rest = 0;
-  return std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &out[0], &out[1], &out[2], &rest) == 3 &&
-         std::isfinite(out[0] + out[1] + out[2]);
-}
-
-bool parsePair(const std::string& text, std::array<double, 2>& out) {
-  if (text.empty()) return true;
-  char rest = 0;
-  return std::sscanf(text.c_str(), "%lf,%lf%c", &out[0], &out[1], &rest) == 2 && std::isfinite(out[0] + out[1]);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace bake::tam;
@@ -63,21 +47,10 @@ int main(int argc, char** argv) {
   app.add_option("--scale", material.scale, "Uniform scale of the object's node")->default_str("1");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runTool(app, diagnostics, argc, argv, [&]() -> bake::Status {
-    diagnostics.setQuiet(settings.common.quiet);
-    if (!parseTriple(baseColour, material.baseColour)) return bake::usageError("--base-colour " + baseColour + ": expected R,G,B");
-    if (!parseTriple(position, material.position)) return bake::usageError("--position " + position + ": expected X,Y,Z");
-    if (!parsePair(translation, material.translation)) return bake::usageError("--translation " + translation + ": expected U,V");
-    // The files of this run, for --print-inputs and --cache-dir. The stroke image is listed, not
-    // read: a build system asks before the inputs exist.
-    const auto files = [&]() -> bake::Result<bake::RunFiles> {
-      BAKE_ASSIGN_OR_RETURN(const Style style, readStyle(settings.style, false));
-      bake::RunFiles run{style.inputs(), {settings.output}};
-      if (!material.mesh.empty()) run.inputs.push_back(material.mesh);
-      if (!settings.threshold.empty()) run.outputs.push_back(settings.threshold);
-      if (!material.mesh.empty() && !material.package.empty()) run.outputs.push_back(material.package);
-      return run;
-    };
-    return bake::runCachedBake("tambake", app, settings.common, diagnostics, files, [&] { return run(settings, diagnostics); });
+  return bake::runBaker("tambake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
+    if (!baseColour.empty()) { BAKE_ASSIGN_OR_RETURN(material.baseColour, bake::parseTriple(baseColour, "--base-colour", "R,G,B")); }
+    if (!position.empty()) { BAKE_ASSIGN_OR_RETURN(material.position, bake::parseTriple(position, "--position")); }
+    if (!translation.empty()) { BAKE_ASSIGN_OR_RETURN(material.translation, bake::parsePair(translation, "--translation")); }
+    return {};
   });
 }

@@ -1,5 +1,5 @@
 // Constants and buffer layouts of the BAKE_grooves package (formats/grooves.md), shared by
-// groovebake's writer (libbake/groove/package.cpp), its reader and the runtime's loader and shader.
+// groovebake's writer (libbake/groove/package/package.cpp), its reader and the runtime's loader and shader.
 // Every record below is laid out as a GLSL std430 struct of 16-byte members (ivec4 / uvec4 / vec4),
 // so a bufferView uploads as it is and binds with glBindBufferRange.
 #pragma once
@@ -122,7 +122,7 @@ struct alignas(16) Material {
 };
 static_assert(sizeof(Material) == 48);
 
-// The far level (version 2; libbake/groove/far_level.h): per class of grooves (profile, material,
+// The far level (version 2; libbake/groove/bake/far_level.h): per class of grooves (profile, material,
 // direction), a summed-area table of band area over a uniform grid of the domain, float64 nodes
 // (columns + 1) x (rows + 1) per class, u fastest. The extension's "far" object gives the grid.
 struct alignas(16) FarClass {
