@@ -26,6 +26,7 @@
 namespace {
 
 using namespace bake::revolution;
+using bake::Vec3d;
 
 constexpr int kPaddingTexels = 4;  // revolbake's default
 constexpr int kProxyBands = 32;    // revolbake's default
