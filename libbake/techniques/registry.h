@@ -36,6 +36,8 @@ const std::vector<Technique>& all();
 const Technique* byName(std::string_view name);
 const Technique* byExtension(std::string_view extension);
 // Adds a technique (tests: a toy technique); a name or extension already registered is an error.
+// Adding moves the rows: pointers and references from all(), byName() and byExtension() taken before
+// no longer hold. Not thread-safe; add before any other thread reads the registry.
 Status add(Technique technique);
 
 // Whether a material of the package carries the technique's extension.
