@@ -289,12 +289,12 @@ def groove(d, run):
     out = []
     out.append(
         "**Measured:** the seed's groove shading as the runtime shader computes it (CPU port of "
-        "`libbake/groove/oracle/shade.h`: exact trapezoid footprint density), per view of "
+        "`libbake/grooves/oracle/shade.h`: exact trapezoid footprint density), per view of "
         "`bench/groove/cases.json` on the scenes of `bench/groove/scenes/`: RMSE and cost per pixel "
         "(CPU time over the pixels, both renderers on one thread; small frames are rendered repeatedly per measurement; "
         "the method's measurements alternate with the reference's renders (two, more for timing alone where they "
         "take under 0.3 s together) and each side keeps its fastest).\n\n"
-        f"**Reference:** the independent ray tracer of `libbake/groove/reference/reference.h` at "
+        f"**Reference:** the independent ray tracer of `libbake/grooves/reference/reference.h` at "
         f"{spp + ' stratified samples per pixel' if spp else 'its default samples per pixel'}, rendered "
         "twice with different seeds: the RMSE between the two is its noise floor, and errors are quoted "
         "as RMSE / floor (criterion ≤ 3) next to the cost ratio reference / method (criterion ≥ 50).\n\n"
@@ -382,12 +382,12 @@ def tam(d, run):
     rows = read_csv(d, "tam.csv")
     out = []
     out.append(
-        "**Measured:** tonal art map construction (`libbake/tam`, the default hatching style: 6 tones, 4 "
+        "**Measured:** tonal art map construction (`libbake/hatching`, the default hatching style: 6 tones, 4 "
         "stroke levels) over the candidate count K and the finest resolution: median construction time "
         "against the tone error and the uniformity of the ink.\n\n"
         "**Reference:** the style's target tones (exact values): the largest |tone − target| over all "
         "images, over its tolerance max(0.25 %, 0.8 / N); uniformity by the largest window coefficient of "
-        "variation (CV) and low-frequency power over the images in scope (`libbake/tam/quality.h`).\n\n"
+        "variation (CV) and low-frequency power over the images in scope (`libbake/hatching/quality.h`).\n\n"
         "**Peers in this run:** no outside implementation; K = 1 (the first random candidate, no "
         "selection) is the baseline the time ratios refer to.")
     base = {r["resolution"]: num(r["seconds"]) for r in rows if r["candidates"] == "1"}

@@ -55,7 +55,7 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --frames 10 --compare-standard \
   --report "$out/grooves-plate.render.json" -o "$out/grooves-plate.png"
 
-# Paintstrokes (pipelines/strokes): fur grown on a torus and a small tree, made by strokebake's
+# Paintstrokes (pipelines/paintstrokes): fur grown on a torus and a small tree, made by strokebake's
 # generators with baked self-shadowing, each rendered alone and the two together.
 for object in fur tree; do
   "$bin/bakeplay/bakeplay" render -q "$out/strokes-$object.glb" -o "$out/strokes-$object.png"
@@ -69,7 +69,8 @@ done
 # Ninja bakes, assembles one pruned scene package and validates it (incrementally), and bakeplay draws
 # it from the scene's camera into out/examples/scene-<name>.png.
 mkdir -p "$out/scenes"
-for scene in geodesic revolution hatching grooves; do
+for scene_file in "$here"/pipelines/*/scene.json; do
+  scene=$(basename "$(dirname "$scene_file")")
   "$bin/bakepipe/bakepipe" plan "$here/pipelines/$scene/scene.json" --out-dir "$out/scenes/$scene" | sed -n '/# left out/,$p'
   "$bin/bakepipe/bakepipe" ninja "$here/pipelines/$scene/scene.json" --out-dir "$out/scenes/$scene" \
     -o "$out/scenes/$scene.ninja" -q

@@ -1,4 +1,4 @@
-// bench-groove: the seed's method on the CPU (libbake/groove/oracle/shade.h, seed 000 §4-§7) against the
+// bench-groove: the seed's method on the CPU (libbake/grooves/oracle/shade.h, seed 000 §4-§7) against the
 // independent ray-traced reference (reference.h) on the scene set of bench/groove/scenes, rendered
 // from the views of cases.json (view and light sweeps, footprint sizes, bounce counts). Per view:
 // the fastest time per frame of the method, the reference's time at --spp samples per pixel (wall
@@ -27,16 +27,16 @@
 #include <bake_formats/grooves.h>
 #include <nlohmann/json.hpp>
 
-#include "groove/bake/grid.h"
-#include "groove/reference/reference.h"
-#include "groove/oracle/render.h"
-#include "groove/input/scene.h"
-#include "groove/oracle/shade.h"
+#include "grooves/bake/grid.h"
+#include "grooves/reference/reference.h"
+#include "grooves/oracle/render.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/shade.h"
 #include "runtime_view.h"
 
 namespace {
 
-using namespace bake::groove;
+using namespace bake::grooves;
 using Clock = std::chrono::steady_clock;
 constexpr double kMinMeasuredCpu = 0.05;  // seconds of CPU per measurement of the method
 // Seconds of CPU the reference's timing renders add up to at least: a small frame (a single pixel of

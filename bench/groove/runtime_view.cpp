@@ -8,13 +8,13 @@
 #include "core/diagnostics.h"
 #include "gl/context.h"
 #include "gl/shader.h"
-#include "groove/package/package.h"
+#include "grooves/package/package.h"
 #include "io/glb.h"
 #include "render/grooves.h"
 #include "render/target.h"
 #include "scene/scene.h"
 
-namespace bake::groove {
+namespace bake::grooves {
 
 struct RuntimeViews::State {
   std::unique_ptr<gl::Context> context;
@@ -84,4 +84,4 @@ Result<Image> RuntimeViews::render(const View& view, const Lighting& lighting, s
   return rgb;
 }
 
-}  // namespace bake::groove
+}  // namespace bake::grooves

@@ -1,19 +1,19 @@
 // bench-groove's runtime renderer: a view of bench/groove/cases.json drawn by bakeplay's grooves
 // renderer (runtime/render/grooves.h, the shaders in shaders/grooves) on a headless GL context,
 // through an oblique orthographic projection whose pixels are exactly the view's footprints
-// (groove/oracle/render.h windowView), so that its image compares with the reference pixel for pixel.
+// (grooves/oracle/render.h windowView), so that its image compares with the reference pixel for pixel.
 #pragma once
 
 #include <filesystem>
 #include <memory>
 
 #include "core/status.h"
-#include "groove/bake/grid.h"
-#include "groove/oracle/render.h"
-#include "groove/input/scene.h"
+#include "grooves/bake/grid.h"
+#include "grooves/oracle/render.h"
+#include "grooves/input/scene.h"
 #include "io/image.h"
 
-namespace bake::groove {
+namespace bake::grooves {
 
 class RuntimeViews {
  public:
@@ -31,4 +31,4 @@ class RuntimeViews {
   std::unique_ptr<State> state_;
 };
 
-}  // namespace bake::groove
+}  // namespace bake::grooves

@@ -1,8 +1,8 @@
-// bench-tam: the tonal art map construction (libbake/tam/build.h) on the default style (6 tones
+// bench-tam: the tonal art map construction (libbake/hatching/build.h) on the default style (6 tones
 // evenly spaced up to darkness 0.9, 4 stroke levels, hatching; --kind cross-hatching crosses from
 // tone 3 on, --kind stippling draws dots 1.5-2.5 px wide), sweeping the candidate count K and the
 // finest resolution. Per (K, resolution): the median construction time over --repeats builds and the
-// quality figures of tam/quality.h (deterministic for the seed): the largest tone error and its ratio
+// quality figures of hatching/quality.h (deterministic for the seed): the largest tone error and its ratio
 // to the tolerance max(0.25 %, 0.8 / N), the largest coefficient of variation over quarter-tile
 // windows and the largest low-frequency power share, over the images the uniformity targets apply to
 // and over all stroke images. Writes tam.csv (and, with --detail, images.csv: every image's figures);
@@ -18,12 +18,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "tam/build.h"
-#include "tam/quality.h"
+#include "hatching/build.h"
+#include "hatching/quality.h"
 
 namespace {
 
-using namespace bake::tam;
+using namespace bake::hatching;
 
 struct Options {
   std::vector<int> candidates{1, 2, 4, 8, 16, 32};

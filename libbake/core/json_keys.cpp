@@ -62,15 +62,17 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known) {
+namespace {
+
+std::optional<UnknownKey> unknownKeyAmong(const nlohmann::json& object, const char* const* begin, const char* const* end) {
   for (const auto& item : object.items()) {
     const std::string& key = item.key();  // a named reference, not a structured binding: lambdas capture it
-    if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) != known.end()) continue;
+    if (std::find_if(begin, end, [&](const char* k) { return key == k; }) != end) continue;
     std::string best;
     std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
-    for (const char* k : known) {
-      const std::size_t d = editDistance(key, k);
-      if (d < bestDistance) bestDistance = d, best = k;
+    for (const char* const* k = begin; k != end; ++k) {
+      const std::size_t d = editDistance(key, *k);
+      if (d < bestDistance) bestDistance = d, best = *k;
     }
     std::string message = "unknown key \"" + key + "\"";
     if (bestDistance <= std::max<std::size_t>(2, key.size() / 3)) message += " (did you mean \"" + best + "\"?)";
@@ -79,12 +81,27 @@ std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::init
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known) {
+  return unknownKeyAmong(object, known.begin(), known.end());
+}
+
+std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, const std::vector<const char*>& known) {
+  return unknownKeyAmong(object, known.data(), known.data() + known.size());
+}
+
 Status JsonReader::error(const std::string& where, const std::string& message) const {
   return invalidInput(message, {file, where.empty() ? "/" : where});
 }
 
 Status JsonReader::object(const nlohmann::json& node, const std::string& where,
                           std::initializer_list<const char*> known) const {
+  return object(node, where, std::vector<const char*>(known));
+}
+
+Status JsonReader::object(const nlohmann::json& node, const std::string& where,
+                          const std::vector<const char*>& known) const {
   if (!node.is_object()) return error(where, "must be a JSON object");
   if (const auto unknown = findUnknownKey(node, known)) return error(jsonPointerChild(where, unknown->key), unknown->message);
   return Status::ok();

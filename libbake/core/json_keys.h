@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -41,6 +42,7 @@ struct UnknownKey {
 // The first key of `object` that is not one of `known`, with a message suggesting the nearest known
 // key when it is close (distance <= max(2, length / 3)); nothing when every key is known.
 std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, std::initializer_list<const char*> known);
+std::optional<UnknownKey> findUnknownKey(const nlohmann::json& object, const std::vector<const char*>& known);
 
 // The checks every strict JSON reader shares; each failure is invalid input naming `file` and the
 // JSON pointer of the element. Readers derive from it and add their own value kinds.
@@ -50,6 +52,7 @@ struct JsonReader {
   Status error(const std::string& where, const std::string& message) const;
   // A JSON object holding only `known` keys.
   Status object(const nlohmann::json& node, const std::string& where, std::initializer_list<const char*> known) const;
+  Status object(const nlohmann::json& node, const std::string& where, const std::vector<const char*>& known) const;
   // A finite number (NaN and Inf are refused even where the parser let them through).
   Result<double> number(const nlohmann::json& node, const std::string& where) const;
   Result<std::string> string(const nlohmann::json& node, const std::string& where) const;

@@ -5,8 +5,11 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace bake {
+
+inline constexpr double kPi = std::numbers::pi;
 
 using Vec2f = std::array<float, 2>;
 using Vec3f = std::array<float, 3>;

@@ -3,12 +3,13 @@
 #include <bake_formats/geodesic.h>
 
 #include "geodesic/package_read.h"
+#include "geodesic/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {
 
 Technique geodesicTechnique() {
-  return {"geodesic", format::geodesic::kExtension, "geobake", geodesic::checkGeodesicPackage, {}, {}};
+  return {"geodesic", format::geodesic::kExtension, "geobake", geodesic::checkGeodesicPackage, {}, {}, &geodesic::pipeHooks()};
 }
 
 }  // namespace bake::techniques

@@ -1,7 +1,6 @@
-// Triangle meshes as every baker consumes them: positions, triangles and optional per-vertex normals
-// and texture coordinates. Reading OBJ, PLY, OFF and STL goes through OpenMesh's parsers into a
-// polygon soup (no manifold filtering, so nothing is dropped silently); glTF/GLB goes through our reader
-// (io/gltf.h). Polygons are fan-triangulated. Malformed input is an error naming the file and the
+// Reading and writing triangle meshes (mesh/triangle_mesh.h). OBJ, PLY, OFF and STL go through
+// OpenMesh's parsers into a polygon soup (no manifold filtering, so nothing is dropped silently);
+// glTF/GLB goes through our reader (io/gltf.h). Polygons are fan-triangulated. Malformed input is an error naming the file and the
 // line or element at fault.
 #pragma once
 
@@ -13,36 +12,10 @@
 
 #include "core/diagnostics.h"
 #include "core/status.h"
-#include "core/vec.h"
 #include "io/glb.h"
+#include "mesh/triangle_mesh.h"
 
 namespace bake {
-
-using Triangle = std::array<std::uint32_t, 3>;
-
-// A point with a name, e.g. a named glTF node, usable as a geodesic source.
-struct NamedPoint {
-  std::string name;
-  Vec3f position{};
-};
-
-struct TriangleMesh {
-  // Positions (and named points) are relative to `origin`: world = origin + position. The origin is
-  // zero unless the reader was asked to keep a far-off mesh precise (MeshReadOptions::nearOrigin).
-  std::vector<Vec3f> positions;
-  Vec3d origin{};
-  std::vector<Triangle> triangles;
-  std::vector<Vec3f> normals;    // empty, or one per vertex
-  std::vector<Vec2f> texcoords;  // empty, or one per vertex
-  std::vector<NamedPoint> namedPoints;
-  // Other per-vertex attributes of a glTF input (COLOR_0, TEXCOORD_1, TANGENT, JOINTS_0, _NAME, ...),
-  // carried verbatim so a baker can write them back; only attributes every primitive has, with the
-  // same layout, survive. TANGENT is transformed to world space like the positions.
-  std::vector<glb::Attribute> extraAttributes;
-
-  std::size_t vertexCount() const { return positions.size(); }
-  std::size_t triangleCount() const { return triangles.size(); }
-};
 
 struct MeshReadOptions {
   // Merge vertices whose positions are equal (within weldTolerance, relative to the bounding-box

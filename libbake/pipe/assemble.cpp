@@ -1,5 +1,5 @@
 // Scene assembly (pipe/assemble.h): the generic merge. Each object's package is read, adapted by its
-// technique's rules (assemble_<technique>.cpp: the scene's material, unread data unreferenced), and
+// technique's rules (<module>/pipe_assemble.cpp: the scene's material, unread data unreferenced), and
 // then copied into the scene package: only the bufferViews, images, textures and samplers its
 // materials reach (all of the package's data when unused data are kept), renumbered, with its meshes,
 // materials and nodes, the nodes under one new node per object. Vertex data are not copied as
@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "pipe/assemble_parts.h"
+#include "pipe/technique_hooks.h"
 
 namespace bake::pipe {
 namespace detail {
@@ -49,16 +50,6 @@ using detail::Renumbering;
 using detail::TechniqueRules;
 
 constexpr const char* kLightsExtension = "KHR_lights_punctual";
-
-const TechniqueRules& rulesOf(Technique technique) {
-  switch (technique) {
-    case Technique::Geodesic: return detail::geodesicRules();
-    case Technique::Revolution: return detail::revolutionRules();
-    case Technique::Hatching: return detail::hatchingRules();
-    case Technique::Grooves: return detail::groovesRules();
-  }
-  return detail::geodesicRules();
-}
 
 // The texture-info objects of a standard glTF material ({"index": texture}).
 std::vector<json*> textureInfos(json& material) {
@@ -267,7 +258,7 @@ Status assembleObject(const Scene& scene, std::size_t index, const fs::path& pat
                       AssembleReport& report, glb::Package& out) {
   const Object& object = scene.objects[index];
   const ObjectInput input{scene, object, scene.materialOf(object), path.string(), settings.keepUnused, report};
-  const TechniqueRules& rules = rulesOf(object.technique);
+  const TechniqueRules& rules = *hooksOf(object.technique)->assemble;
   BAKE_ASSIGN_OR_RETURN(glb::Package package, readPackage(path, object, report));
   const Reached original = settings.keepUnused ? everything(package, rules) : Reached{};
   BAKE_RETURN_IF_ERROR(rules.adapt(package, input));

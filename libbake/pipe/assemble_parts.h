@@ -1,6 +1,7 @@
 // The parts of scene assembly (pipe/assemble.h) shared by the generic merge (assemble.cpp) and the
-// per-technique rules (assemble_<technique>.cpp): what an object's package is adapted against, how
-// the indices a technique's extension holds are found and renumbered, and the rules of each technique.
+// per-technique rules (<module>/pipe_assemble.cpp, which the technique's scene hooks point at): what
+// an object's package is adapted against, how the indices a technique's extension holds are found
+// and renumbered, and the shape of a technique's rules.
 #pragma once
 
 #include <cstdint>
@@ -62,11 +63,6 @@ struct TechniqueRules {
   Status (*mergeRoot)(nlohmann::json& assembledExtensions, const glb::Package& package, const ObjectInput& input) =
       nullptr;
 };
-
-const TechniqueRules& geodesicRules();
-const TechniqueRules& revolutionRules();
-const TechniqueRules& hatchingRules();
-const TechniqueRules& groovesRules();
 
 // Whether a material JSON carries `extension` as an object.
 bool hasExtension(const nlohmann::json& material, const char* extension);

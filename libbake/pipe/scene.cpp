@@ -13,6 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
+#include "pipe/technique_hooks.h"
 
 namespace bake::pipe {
 namespace {
@@ -24,70 +25,16 @@ namespace key = bake::format::scene;
 std::string child(const std::string& parent, const std::string& name) { return jsonPointerChild(parent, name); }
 std::string child(const std::string& parent, std::size_t index) { return jsonPointerChild(parent, index); }
 
-struct Reader : JsonReader {
-  Status required(const json& node, const std::string& where, std::initializer_list<const char*> keys) const {
-    for (const char* name : keys)
-      if (!node.contains(name)) return error(child(where, name), "is missing");
-    return Status::ok();
-  }
-  Result<double> positive(const json& node, const std::string& where) const {
-    BAKE_ASSIGN_OR_RETURN(const double x, number(node, where));
-    if (x <= 0) return error(where, "must be positive");
-    return x;
-  }
-  Result<int> integer(const json& node, const std::string& where, int lowest, int highest) const {
-    if (!node.is_number_integer()) return error(where, "must be an integer");
-    const long long x = node.get<long long>();
-    if (x < lowest || x > highest)
-      return error(where, "must be in [" + std::to_string(lowest) + ", " + std::to_string(highest) + "]");
-    return int(x);
-  }
-  Result<bool> boolean(const json& node, const std::string& where) const {
-    if (!node.is_boolean()) return error(where, "must be true or false");
-    return node.get<bool>();
-  }
-  Result<std::array<double, 3>> vec3(const json& node, const std::string& where) const {
-    if (!node.is_array() || node.size() != 3) return error(where, "must be three numbers [x, y, z]");
-    std::array<double, 3> v{};
-    for (std::size_t k = 0; k < 3; ++k) { BAKE_ASSIGN_OR_RETURN(v[k], number(node[k], child(where, k))); }
-    return v;
-  }
-  // Names become file names and node names: letters, digits, '-' and '_'.
-  Result<std::string> name(const json& node, const std::string& where) const {
-    BAKE_ASSIGN_OR_RETURN(std::string text, string(node, where));
-    if (text.empty()) return error(where, "must not be empty");
-    for (const char c : text)
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
-        return error(where, "\"" + text + "\" may only hold letters, digits, '-' and '_'");
-    return text;
-  }
-  Result<Technique> technique(const json& node, const std::string& where) const {
-    BAKE_ASSIGN_OR_RETURN(const std::string text, string(node, where));
-    for (const Technique t : {Technique::Geodesic, Technique::Revolution, Technique::Hatching, Technique::Grooves})
-      if (text == techniqueName(t)) return t;
-    return error(where, "unknown technique \"" + text + "\" (geodesic, revolution, hatching, grooves)");
-  }
-};
+// The "technique" of an object or material: a registered technique with scene hooks.
+Result<std::string> readTechnique(const SceneReader& r, const json& node, const std::string& where) {
+  BAKE_ASSIGN_OR_RETURN(std::string text, r.string(node, where));
+  if (hooksOf(text)) return text;
+  std::string names;
+  for (const std::string& name : sceneTechniques()) names += (names.empty() ? "" : ", ") + name;
+  return r.error(where, "unknown technique \"" + text + "\" (" + names + ")");
+}
 
-struct Context {
-  const Reader& r;
-  const fs::path& directory;
-  const std::set<std::string>& generatedOutputs;
-
-  Result<InputPath> path(const json& node, const std::string& where) const {
-    BAKE_ASSIGN_OR_RETURN(const std::string text, r.string(node, where));
-    if (text.empty()) return r.error(where, "must not be empty");
-    if (generatedOutputs.count(text)) return InputPath{fs::path(text), true};
-    const fs::path resolved = (directory / text).lexically_normal();
-    std::error_code ec;
-    if (!fs::is_regular_file(resolved, ec))
-      return r.error(where, "\"" + text + "\" is not a file (looked for " + resolved.string() +
-                                "; generated files: the scene's \"generated\" outputs)");
-    return InputPath{resolved, false};
-  }
-};
-
-Result<Generated> readGenerated(const Reader& r, const json& node, const std::string& where) {
+Result<Generated> readGenerated(const SceneReader& r, const json& node, const std::string& where) {
   BAKE_RETURN_IF_ERROR(r.object(node, where, {"output", "shape", "resolution"}));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"output", "shape"}));
   Generated g;
@@ -101,82 +48,33 @@ Result<Generated> readGenerated(const Reader& r, const json& node, const std::st
   return g;
 }
 
-// A JSON file, parsed; `what` names it in the error when it cannot be read ("scene file", ...).
-Result<json> readJsonFile(const fs::path& path, const std::string& what) {
-  Result<std::vector<std::uint8_t>> bytes = readFileBytes(path);
-  if (!bytes.isOk()) {
-    Status status = bytes.status();
-    return Status(status.code(), "cannot read the " + what + ": " + status.message(), {path.string(), ""});
-  }
-  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
-  return parseJsonText(text, path.string());
+// The object keys one technique's objects carry, the first technique that claims each (registry order).
+std::vector<std::pair<const char*, std::string>> techniqueObjectKeys() {
+  std::vector<std::pair<const char*, std::string>> keys;
+  for (const std::string& technique : sceneTechniques())
+    for (const char* key : hooksOf(technique)->objectKeys) keys.emplace_back(key, technique);
+  return keys;
 }
 
-// The field names of a geobake sources file, in order; unnamed fields are "field K".
-Result<std::vector<std::string>> sourceFieldNames(const fs::path& path, const std::string& where, const Reader& r) {
-  BAKE_ASSIGN_OR_RETURN(const json doc, readJsonFile(path, "sources file"));
-  if (!doc.is_object() || !doc.contains("fields") || !doc["fields"].is_array() || doc["fields"].empty())
-    return r.error(where, path.string() + " has no \"fields\" list");
-  std::vector<std::string> names;
-  for (std::size_t k = 0; k < doc["fields"].size(); ++k) {
-    const json& field = doc["fields"][k];
-    names.push_back(field.is_object() && field.contains("name") && field["name"].is_string()
-                        ? field["name"].get<std::string>()
-                        : "field " + std::to_string(k));
-  }
-  return names;
-}
-
-Status readOptions(const Reader& r, const json& node, const std::string& where, Technique technique) {
-  switch (technique) {
-    case Technique::Geodesic: return r.object(node, where, {"method", "encoding", "normalize"});
-    case Technique::Revolution: return r.object(node, where, {"resolution", "encoding", "heightScale", "projection"});
-    case Technique::Hatching: return r.object(node, where, {"tilesPerUnit", "rotation", "orientation", "baseColour"});
-    case Technique::Grooves: return r.object(node, where, {"cellSize", "maxCells"});
-  }
-  return Status::ok();
-}
-
-Result<Object> readObject(const Context& c, const json& node, const std::string& where,
+Result<Object> readObject(const SceneReader& r, const json& node, const std::string& where,
                           const std::map<std::string, std::size_t>& materials) {
-  const Reader& r = c.r;
-  BAKE_RETURN_IF_ERROR(r.object(node, where, {"name", "technique", "input", "sources", "mesh", "textures", "options",
-                                              "position", "scale", "material"}));
+  const auto owned = techniqueObjectKeys();
+  std::vector<const char*> known = {"name", "technique", "input"};
+  for (const auto& [key, technique] : owned) known.push_back(key);
+  known.insert(known.end(), {"options", "position", "scale", "material"});
+  BAKE_RETURN_IF_ERROR(r.object(node, where, known));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"name", "technique", "input", "material"}));
   Object o;
   BAKE_ASSIGN_OR_RETURN(o.name, r.name(node["name"], child(where, "name")));
-  BAKE_ASSIGN_OR_RETURN(o.technique, r.technique(node["technique"], child(where, "technique")));
-  BAKE_ASSIGN_OR_RETURN(o.input, c.path(node["input"], child(where, "input")));
-  const auto onlyFor = [&](const char* name, Technique t) -> Status {
-    if (node.contains(name) && o.technique != t)
-      return r.error(child(where, name), std::string("is for ") + techniqueName(t) + " objects only");
-    return Status::ok();
-  };
-  BAKE_RETURN_IF_ERROR(onlyFor("sources", Technique::Geodesic));
-  BAKE_RETURN_IF_ERROR(onlyFor("mesh", Technique::Hatching));
-  BAKE_RETURN_IF_ERROR(onlyFor("textures", Technique::Revolution));
-  if (o.technique == Technique::Geodesic) {
-    if (!node.contains("sources")) return r.error(child(where, "sources"), "is missing (a geodesic object needs its fields)");
-    BAKE_ASSIGN_OR_RETURN(o.sources, c.path(node["sources"], child(where, "sources")));
-    if (o.sources->generated) return r.error(child(where, "sources"), "cannot be a generated file");
-    BAKE_ASSIGN_OR_RETURN(o.fieldNames, sourceFieldNames(o.sources->path, child(where, "sources"), r));
-  }
-  if (o.technique == Technique::Hatching) {
-    if (!node.contains("mesh")) return r.error(child(where, "mesh"), "is missing (the mesh the TAM is applied to)");
-    BAKE_ASSIGN_OR_RETURN(o.mesh, c.path(node["mesh"], child(where, "mesh")));
-  }
-  if (node.contains("textures")) {
-    const std::string at = child(where, "textures");
-    BAKE_RETURN_IF_ERROR(r.object(node["textures"], at, {"baseColor", "heightMap"}));
-    if (node["textures"].contains("baseColor")) {
-      BAKE_ASSIGN_OR_RETURN(o.baseColor, c.path(node["textures"]["baseColor"], child(at, "baseColor")));
-    }
-    if (node["textures"].contains("heightMap")) {
-      BAKE_ASSIGN_OR_RETURN(o.heightMap, c.path(node["textures"]["heightMap"], child(at, "heightMap")));
-    }
-  }
+  BAKE_ASSIGN_OR_RETURN(o.technique, readTechnique(r, node["technique"], child(where, "technique")));
+  BAKE_ASSIGN_OR_RETURN(o.input, r.path(node["input"], child(where, "input")));
+  for (const auto& [key, technique] : owned)
+    if (node.contains(key) && o.technique != technique)
+      return r.error(child(where, key), "is for " + technique + " objects only");
+  const TechniqueHooks& hooks = *hooksOf(o.technique);
+  if (hooks.readObject) BAKE_RETURN_IF_ERROR(hooks.readObject(r, node, where, o));
   if (node.contains("options")) {
-    BAKE_RETURN_IF_ERROR(readOptions(r, node["options"], child(where, "options"), o.technique));
+    BAKE_RETURN_IF_ERROR(r.object(node["options"], child(where, "options"), hooks.optionKeys));
     o.options = node["options"];
   }
   if (node.contains("position")) { BAKE_ASSIGN_OR_RETURN(o.position, r.vec3(node["position"], child(where, "position"))); }
@@ -188,45 +86,43 @@ Result<Object> readObject(const Context& c, const json& node, const std::string&
   return o;
 }
 
-Result<Material> readMaterial(const Reader& r, const json& node, const std::string& where) {
-  BAKE_RETURN_IF_ERROR(r.object(node, where, {"name", "technique", "geotexture", "reads"}));
+// The material's "reads" flags, each only for the technique that declares it.
+Status readFlags(const SceneReader& r, const json& node, const std::string& at, Material& m) {
+  std::vector<const char*> known;
+  for (const std::string& technique : sceneTechniques())
+    for (const ReadsFlag& flag : hooksOf(technique)->reads) known.push_back(flag.key);
+  BAKE_RETURN_IF_ERROR(r.object(node, at, known));
+  for (const std::string& technique : sceneTechniques())
+    for (const ReadsFlag& flag : hooksOf(technique)->reads) {
+      if (!node.contains(flag.key)) continue;
+      if (m.technique != technique) return r.error(child(at, flag.key), "is for " + technique + " materials only");
+      BAKE_ASSIGN_OR_RETURN(m.*flag.value, r.boolean(node[flag.key], child(at, flag.key)));
+    }
+  return Status::ok();
+}
+
+Result<Material> readMaterial(const SceneReader& r, const json& node, const std::string& where) {
+  std::vector<std::pair<const char*, std::string>> owned;
+  for (const std::string& technique : sceneTechniques())
+    for (const char* key : hooksOf(technique)->materialKeys) owned.emplace_back(key, technique);
+  std::vector<const char*> known = {"name", "technique"};
+  for (const auto& [key, technique] : owned) known.push_back(key);
+  known.push_back("reads");
+  BAKE_RETURN_IF_ERROR(r.object(node, where, known));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"name", "technique"}));
   Material m;
   BAKE_ASSIGN_OR_RETURN(m.name, r.name(node["name"], child(where, "name")));
-  BAKE_ASSIGN_OR_RETURN(m.technique, r.technique(node["technique"], child(where, "technique")));
-  if (node.contains("geotexture")) {
-    const std::string at = child(where, "geotexture");
-    if (m.technique != Technique::Geodesic) return r.error(at, "is for geodesic materials only");
-    if (!node["geotexture"].is_object()) return r.error(at, "must be a JSON object");
-    m.geotexture = node["geotexture"];
-    if (m.geotexture.contains("fields")) {
-      const json& fields = m.geotexture["fields"];
-      if (!fields.is_array() || fields.empty() || fields.size() > 4)
-        return r.error(child(at, "fields"), "must list 1 to 4 field names");
-      for (std::size_t k = 0; k < fields.size(); ++k) {
-        BAKE_ASSIGN_OR_RETURN(std::string field, r.string(fields[k], child(child(at, "fields"), k)));
-        m.fields.push_back(std::move(field));
-      }
-    }
-  }
-  if (node.contains("reads")) {
-    const std::string at = child(where, "reads");
-    BAKE_RETURN_IF_ERROR(r.object(node["reads"], at, {"baseColor", "displacement", "threshold", "specialCases"}));
-    const auto flag = [&](const char* name, bool& value, Technique t) -> Status {
-      if (!node["reads"].contains(name)) return Status::ok();
-      if (m.technique != t) return r.error(child(at, name), std::string("is for ") + techniqueName(t) + " materials only");
-      BAKE_ASSIGN_OR_RETURN(value, r.boolean(node["reads"][name], child(at, name)));
-      return Status::ok();
-    };
-    BAKE_RETURN_IF_ERROR(flag("baseColor", m.readsBaseColor, Technique::Revolution));
-    BAKE_RETURN_IF_ERROR(flag("displacement", m.readsDisplacement, Technique::Revolution));
-    BAKE_RETURN_IF_ERROR(flag("threshold", m.readsThreshold, Technique::Hatching));
-    BAKE_RETURN_IF_ERROR(flag("specialCases", m.readsSpecialCases, Technique::Grooves));
-  }
+  BAKE_ASSIGN_OR_RETURN(m.technique, readTechnique(r, node["technique"], child(where, "technique")));
+  for (const auto& [key, technique] : owned)
+    if (node.contains(key) && m.technique != technique)
+      return r.error(child(where, key), "is for " + technique + " materials only");
+  const TechniqueHooks& hooks = *hooksOf(m.technique);
+  if (hooks.readMaterial) BAKE_RETURN_IF_ERROR(hooks.readMaterial(r, node, where, m));
+  if (node.contains("reads")) BAKE_RETURN_IF_ERROR(readFlags(r, node["reads"], child(where, "reads"), m));
   return m;
 }
 
-Result<Camera> readCamera(const Reader& r, const json& node, const std::string& where) {
+Result<Camera> readCamera(const SceneReader& r, const json& node, const std::string& where) {
   BAKE_RETURN_IF_ERROR(r.object(node, where, {"name", "eye", "target", "yfov", "width", "height"}));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"eye", "target", "yfov", "width", "height"}));
   Camera c;
@@ -243,24 +139,68 @@ Result<Camera> readCamera(const Reader& r, const json& node, const std::string& 
 
 }  // namespace
 
-const char* techniqueName(Technique technique) {
-  switch (technique) {
-    case Technique::Geodesic: return key::kGeodesic;
-    case Technique::Revolution: return key::kRevolution;
-    case Technique::Hatching: return key::kHatching;
-    case Technique::Grooves: return key::kGrooves;
+// A JSON file, parsed; `what` names it in the error when it cannot be read ("scene file", ...).
+Result<json> readJsonFile(const fs::path& path, const std::string& what) {
+  Result<std::vector<std::uint8_t>> bytes = readFileBytes(path);
+  if (!bytes.isOk()) {
+    Status status = bytes.status();
+    return Status(status.code(), "cannot read the " + what + ": " + status.message(), {path.string(), ""});
   }
-  return "?";
+  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  return parseJsonText(text, path.string());
 }
 
-const char* bakerName(Technique technique) {
-  switch (technique) {
-    case Technique::Geodesic: return "geobake";
-    case Technique::Revolution: return "revolbake";
-    case Technique::Hatching: return "tambake";
-    case Technique::Grooves: return "groovebake";
-  }
-  return "?";
+Status SceneReader::required(const json& node, const std::string& where, std::initializer_list<const char*> keys) const {
+  for (const char* name : keys)
+    if (!node.contains(name)) return error(child(where, name), "is missing");
+  return Status::ok();
+}
+
+Result<double> SceneReader::positive(const json& node, const std::string& where) const {
+  BAKE_ASSIGN_OR_RETURN(const double x, number(node, where));
+  if (x <= 0) return error(where, "must be positive");
+  return x;
+}
+
+Result<int> SceneReader::integer(const json& node, const std::string& where, int lowest, int highest) const {
+  if (!node.is_number_integer()) return error(where, "must be an integer");
+  const long long x = node.get<long long>();
+  if (x < lowest || x > highest)
+    return error(where, "must be in [" + std::to_string(lowest) + ", " + std::to_string(highest) + "]");
+  return int(x);
+}
+
+Result<bool> SceneReader::boolean(const json& node, const std::string& where) const {
+  if (!node.is_boolean()) return error(where, "must be true or false");
+  return node.get<bool>();
+}
+
+Result<std::array<double, 3>> SceneReader::vec3(const json& node, const std::string& where) const {
+  if (!node.is_array() || node.size() != 3) return error(where, "must be three numbers [x, y, z]");
+  std::array<double, 3> v{};
+  for (std::size_t k = 0; k < 3; ++k) { BAKE_ASSIGN_OR_RETURN(v[k], number(node[k], child(where, k))); }
+  return v;
+}
+
+Result<std::string> SceneReader::name(const json& node, const std::string& where) const {
+  BAKE_ASSIGN_OR_RETURN(std::string text, string(node, where));
+  if (text.empty()) return error(where, "must not be empty");
+  for (const char c : text)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
+      return error(where, "\"" + text + "\" may only hold letters, digits, '-' and '_'");
+  return text;
+}
+
+Result<InputPath> SceneReader::path(const json& node, const std::string& where) const {
+  BAKE_ASSIGN_OR_RETURN(const std::string text, string(node, where));
+  if (text.empty()) return error(where, "must not be empty");
+  if (generatedOutputs && generatedOutputs->count(text)) return InputPath{fs::path(text), true};
+  const fs::path resolved = (directory / text).lexically_normal();
+  std::error_code ec;
+  if (!fs::is_regular_file(resolved, ec))
+    return error(where, "\"" + text + "\" is not a file (looked for " + resolved.string() +
+                            "; generated files: the scene's \"generated\" outputs)");
+  return InputPath{resolved, false};
 }
 
 std::vector<std::string> Scene::fieldsRead(const Object& object) const {
@@ -271,7 +211,8 @@ std::vector<std::string> Scene::fieldsRead(const Object& object) const {
 }
 
 Result<Scene> parseScene(const json& doc, const fs::path& path) {
-  const Reader r{path.string()};
+  SceneReader r;
+  r.file = path.string();
   BAKE_RETURN_IF_ERROR(r.object(doc, "", {"$schema", "description", "version", "name", "generated", "objects",
                                           "materials", "cameras", "pixelsPerUnit"}));
   BAKE_RETURN_IF_ERROR(r.required(doc, "", {"version", "objects", "materials"}));
@@ -306,16 +247,17 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
   }
 
   if (!doc["objects"].is_array() || doc["objects"].empty()) return r.error("/objects", "must be a non-empty list");
-  const Context context{r, scene.directory, generatedOutputs};
+  r.directory = scene.directory;
+  r.generatedOutputs = &generatedOutputs;
   std::set<std::string> objectNames;
   for (std::size_t k = 0; k < doc["objects"].size(); ++k) {
     const std::string where = child("/objects", k);
-    BAKE_ASSIGN_OR_RETURN(Object o, readObject(context, doc["objects"][k], where, materialIndex));
+    BAKE_ASSIGN_OR_RETURN(Object o, readObject(r, doc["objects"][k], where, materialIndex));
     if (!objectNames.insert(o.name).second) return r.error(child(where, "name"), "\"" + o.name + "\" names two objects");
     const Material& m = scene.materials[o.material];
     if (m.technique != o.technique)
-      return r.error(child(where, "material"), "\"" + m.name + "\" is a " + techniqueName(m.technique) +
-                                                   " material, the object is " + techniqueName(o.technique));
+      return r.error(child(where, "material"),
+                     "\"" + m.name + "\" is a " + m.technique + " material, the object is " + o.technique);
     for (std::size_t f = 0; f < m.fields.size(); ++f) {
       bool known = false;
       for (const std::string& name : o.fieldNames) known = known || name == m.fields[f];

@@ -2,7 +2,8 @@
 // each, the materials and what baked data each reads, and the cameras that bound the screen size.
 // The reader checks what the schema says and what it cannot (unique names, materials that exist and
 // match the object's technique, geodesic field names that exist in the object's sources file) and
-// names the element at fault.
+// names the element at fault; what an object or material of one technique may say is that
+// technique's (pipe/technique_hooks.h).
 #pragma once
 
 #include <array>
@@ -16,11 +17,6 @@
 #include "core/status.h"
 
 namespace bake::pipe {
-
-enum class Technique { Geodesic, Revolution, Hatching, Grooves };
-
-const char* techniqueName(Technique technique);  // "geodesic", ...
-const char* bakerName(Technique technique);      // "geobake", ...
 
 // A file made by bakeshape before any bake.
 struct Generated {
@@ -37,7 +33,7 @@ struct InputPath {
 
 struct Object {
   std::string name;
-  Technique technique = Technique::Geodesic;
+  std::string technique;  // a registry name (techniques/registry.h) whose row has scene hooks
   InputPath input;
   std::optional<InputPath> sources;    // geodesic
   std::optional<InputPath> mesh;       // hatching
@@ -53,7 +49,7 @@ struct Object {
 
 struct Material {
   std::string name;
-  Technique technique = Technique::Geodesic;
+  std::string technique;
   // Geodesic: the BAKE_geodesic material object with "fields" as names (empty: the first field).
   nlohmann::json geotexture = nlohmann::json::object();
   std::vector<std::string> fields;

@@ -13,12 +13,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/vec.h"
 #include "revolution/march.h"
 
 namespace bake::revolution {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kParameterSlack = 1e-12;  // pieces meet exactly; keep their shared rim
 // Below this bulge an arc's sagitta is under 5e-10 of its chord: it is its chord (and its centre,
 // 1 / (4 bulge) chords away, would cost the distance all its digits).

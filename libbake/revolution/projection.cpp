@@ -21,6 +21,7 @@
 // that one scores lower by more than 0.05, i.e. about 5 % less distortion: below that the difference
 // does not show, and the earlier map is the simpler one (cylindrical has no parameter and keeps the
 // texture's rows level; a pointed cone measures 2 % better under a spherical map centred below it).
+#include "core/vec.h"
 #include "revolution/projection.h"
 
 #include <algorithm>
@@ -43,8 +44,6 @@ const char* projectionName(Projection projection) {
 }
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 constexpr int kTotalSamples = 4096;          // spread over the surface pieces by length
 constexpr double kDegenerateFraction = 1e-3;  // of the mean stretch
 constexpr double kAngleDistortionCap = 100;   // a sample at the pole must not swamp the mean

@@ -2,12 +2,13 @@
 #include <bake_formats/revolution.h>
 
 #include "revolution/package_read.h"
+#include "revolution/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {
 
 Technique revolutionTechnique() {
-  return {"revolution", format::revolution::kExtension, "revolbake", revolution::checkRevolutionPackage, {}, {}};
+  return {"revolution", format::revolution::kExtension, "revolbake", revolution::checkRevolutionPackage, {}, {}, &revolution::pipeHooks()};
 }
 
 }  // namespace bake::techniques

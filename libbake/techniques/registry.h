@@ -1,6 +1,7 @@
 // The technique registry: one row per technique with everything the layers above the bakers need to
 // know of it (its name, glTF extension and baker; the package reader's loader checks that `bakeplay
-// validate` and the runtime run; what bakeinfo says of its data), found by name or by extension.
+// validate` and the runtime run; what bakeinfo says of its data; its scene pipeline hooks), found by
+// name or by extension.
 // The built-in rows come from techniques.def; a test can add a toy technique through add().
 #pragma once
 
@@ -13,6 +14,10 @@
 
 #include "core/status.h"
 #include "io/glb.h"
+
+namespace bake::pipe {
+struct TechniqueHooks;  // pipe/technique_hooks.h
+}
 
 namespace bake::techniques {
 
@@ -29,6 +34,9 @@ struct Technique {
   std::function<Result<nlohmann::json>(const glb::Package& package, const std::string& file)> describe;
   // bakeinfo's text lines for that description (each ending in a newline).
   std::function<std::string(const nlohmann::json& description)> formatDescription;
+  // What scene files may say of its objects, how bakepipe plans and assembles them; null: scene
+  // files do not offer the technique.
+  const pipe::TechniqueHooks* pipe = nullptr;
 };
 
 // Every technique, built-in ones first in techniques.def order.

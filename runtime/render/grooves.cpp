@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "groove/package/package.h"
+#include "grooves/package/package.h"
 
 namespace bake::play {
 namespace {
@@ -62,8 +62,8 @@ struct HeaderBlock {
 };
 static_assert(sizeof(HeaderBlock) == 112);
 
-HeaderBlock headerBlock(const groove::GroovePackage& package) {
-  const groove::GroovePackageHeader& h = package.header;
+HeaderBlock headerBlock(const grooves::GroovePackage& package) {
+  const grooves::GroovePackageHeader& h = package.header;
   HeaderBlock block{};
   block.counts[0] = std::int32_t(package.primitives.size());
   block.counts[1] = std::int32_t(package.records.size());
@@ -101,7 +101,7 @@ std::array<long long, fmt::kArrayCount> viewIndices(const nlohmann::json& extens
 std::size_t alignUp(std::size_t x, std::size_t alignment) { return (x + alignment - 1) / alignment * alignment; }
 
 // The defines of the variant a package needs.
-std::vector<std::string> packageDefines(const groove::GroovePackage& p, bool areaSampling) {
+std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool areaSampling) {
   std::vector<std::string> defines;
   const bool mirrors = std::any_of(p.materials.begin(), p.materials.end(), [](const fmt::Material& m) { return m.specular[3] > 0.5f; });
   if (mirrors) defines.push_back("HAS_MIRRORS");
@@ -186,7 +186,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     const auto key = std::make_pair(instance.package, primitive.material);
     if (!uploadOfPackage.count(key)) {
       const nlohmann::json& extension = scene.material(instance)["extensions"][fmt::kExtension];
-      BAKE_ASSIGN_OR_RETURN(const groove::GroovePackage decoded, groove::decodeGrooveExtension(package, extension, file));
+      BAKE_ASSIGN_OR_RETURN(const grooves::GroovePackage decoded, grooves::decodeGrooveExtension(package, extension, file));
       const auto views = viewIndices(extension);
       Upload upload;
       std::size_t total = 0;

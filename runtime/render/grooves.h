@@ -1,11 +1,11 @@
 // Grooved surfaces (seed 000, Bosch et al. 2008, §4-§7) over a BAKE_grooves package
 // (formats/grooves.md): the preview plane, or any mesh with TEXCOORD_0, drawn with a fragment shader
-// that runs the seed's method per pixel exactly as libbake's CPU oracle (libbake/groove/oracle/shade.h)
+// that runs the seed's method per pixel exactly as libbake's CPU oracle (libbake/grooves/oracle/shade.h)
 // does. The package's arrays are decoded and checked by libbake (decodeGroovePackage) and uploaded as
 // they are, one storage buffer holding every bufferView at its 256-byte aligned offset, each bound
 // with glBindBufferRange; the grid header goes into a small uniform block.
 //
-// grooves.cpp uploads and draws; libbake's reader (groove/package/package.h) decodes and checks.
+// grooves.cpp uploads and draws; libbake's reader (grooves/package/package.h) decodes and checks.
 #pragma once
 
 #include <array>
@@ -15,7 +15,7 @@
 
 #include <bake_formats/grooves.h>
 
-#include "groove/package/package.h"
+#include "grooves/package/package.h"
 #include "io/glb.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -34,8 +34,8 @@ struct GroovesOptions {
   int forceRetries = 0;
 };
 
-// The loader checks are libbake's (groove/package/package.h).
-using groove::checkGroovesPackage;
+// The loader checks are libbake's (grooves/package/package.h).
+using grooves::checkGroovesPackage;
 
 class GroovesRenderer : public TechniqueRenderer {
  public:

@@ -8,7 +8,7 @@
 // stage picks the tone of each of the four triangles from its Lambert term, interpolates the two
 // nearest TAM layers and blends the four colours (§3.4 Algorithm 3).
 //
-// libbake's reader (tam/package_read.h) reads and checks the material extension.
+// libbake's reader (hatching/package_read.h) reads and checks the material extension.
 #pragma once
 
 #include <array>
@@ -21,7 +21,7 @@
 #include "io/glb.h"
 #include "io/ktx2.h"
 #include "render/renderer.h"
-#include "tam/package_read.h"
+#include "hatching/package_read.h"
 
 namespace bake::play {
 
@@ -43,11 +43,11 @@ struct TriangleAdjacency {
 TriangleAdjacency buildTriangleAdjacency(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices);
 
 // ---------------------------------------------------------------------------------------------
-// The package's data as libbake's reader gives them (libbake/tam/package_read.h).
-using tam::HatchingOrientation;
-using tam::HatchingParams;
-using tam::parseHatching;
-using tam::checkHatchingPackage;
+// The package's data as libbake's reader gives them (libbake/hatching/package_read.h).
+using hatching::HatchingOrientation;
+using hatching::HatchingParams;
+using hatching::parseHatching;
+using hatching::checkHatchingPackage;
 
 // ---------------------------------------------------------------------------------------------
 // hatching.cpp

@@ -111,7 +111,7 @@ Status PaintstrokesRenderer::prepare(const Scene& scene, const std::vector<std::
     const auto key = std::make_pair(instance.package, primitive.material);
     if (!uploadOf.count(key)) {
       const nlohmann::json& extension = scene.material(instance)["extensions"][fmt::kExtension];
-      BAKE_ASSIGN_OR_RETURN(const strokes::PaintstrokePackage p,
+      BAKE_ASSIGN_OR_RETURN(const paintstrokes::PaintstrokePackage p,
                             readPaintstrokes(package, extension, {file, "material " + std::to_string(primitive.material)}));
       // Segments: one per pair of consecutive control points, in stroke order.
       std::vector<std::uint32_t> segments;

@@ -11,7 +11,7 @@
 // The reference (--stroke-tubes SIDESxSTEPS) draws the same strokes as fixed tubes tessellated on the
 // CPU at load, shaded by the same formulas from the true surface normal.
 //
-// libbake reads and checks the extension (strokes/package.h); paintstrokes_tubes.cpp builds the tubes;
+// libbake reads and checks the extension (paintstrokes/package.h); paintstrokes_tubes.cpp builds the tubes;
 // paintstrokes.cpp uploads and draws.
 #pragma once
 
@@ -23,7 +23,7 @@
 
 #include "io/glb.h"
 #include "render/renderer.h"
-#include "strokes/package.h"
+#include "paintstrokes/package.h"
 
 namespace bake::play {
 
@@ -45,9 +45,9 @@ struct PaintstrokeOptions {
 // 1..1024 (STEPS defaults to SIDES / 2, at least 1).
 Result<PaintstrokeOptions> makePaintstrokeOptions(int quality, double tolerance, const std::string& tubes);
 
-// The package is read and checked by libbake (strokes/package.h).
-using strokes::readPaintstrokes;
-using strokes::checkPaintstrokePackage;
+// The package is read and checked by libbake (paintstrokes/package.h).
+using paintstrokes::readPaintstrokes;
+using paintstrokes::checkPaintstrokePackage;
 
 // Fixed tubes around every stroke: `sides` vertices around, `steps` rings per segment. Each vertex
 // is position, outward normal, unit tangent (model space), the parameter t in [0, 1] along its
@@ -66,7 +66,7 @@ struct TubeMesh {
   std::vector<TubeVertex> vertices;
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
 };
-TubeMesh buildStrokeTubes(const strokes::PaintstrokePackage& package, int sides, int steps);
+TubeMesh buildStrokeTubes(const paintstrokes::PaintstrokePackage& package, int sides, int steps);
 
 // ---------------------------------------------------------------------------------------------
 // paintstrokes.cpp

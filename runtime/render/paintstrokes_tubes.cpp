@@ -1,5 +1,5 @@
 // The command-line options of the paintstroke renderer, and the fixed-tube reference. (The package is
-// read and checked by libbake: strokes/package.h, readPaintstrokes.)
+// read and checked by libbake: paintstrokes/package.h, readPaintstrokes.)
 //
 // Tubes (the reference, and the coarse fixed-tessellation peer): per segment, `steps` + 1 rings of
 // `sides` vertices along the same Catmull-Rom path and radius the shaders evaluate (seed 002: "we
@@ -50,7 +50,7 @@ SplineSample catmullRom(const std::array<std::array<double, 4>, 4>& p, double u)
 }
 
 // Control point `local` of a stroke, reflected through the end point beyond either end.
-std::array<double, 4> controlPoint(const strokes::PaintstrokePackage& p, std::size_t stroke, int local) {
+std::array<double, 4> controlPoint(const paintstrokes::PaintstrokePackage& p, std::size_t stroke, int local) {
   const int count = int(p.strokes[stroke].info[1]);
   auto reflect = [&](int end, int inner) {
     const auto a = p.positionRadius(stroke, std::size_t(end)), b = p.positionRadius(stroke, std::size_t(inner));
@@ -72,7 +72,7 @@ V3 transport(const V3& normal, const V3& from, const V3& to) {
   return length(projected) > 1e-9 ? unit(projected, anyOrthogonal(to)) : unit(cross(to, cross(normal, from)), anyOrthogonal(to));
 }
 
-void addStrokeTube(const strokes::PaintstrokePackage& p, std::size_t stroke, int sides, int steps, TubeMesh& mesh) {
+void addStrokeTube(const paintstrokes::PaintstrokePackage& p, std::size_t stroke, int sides, int steps, TubeMesh& mesh) {
   const int count = int(p.strokes[stroke].info[1]);
   V3 previousTangent{0, 0, 0}, normal{0, 0, 0};
   for (int i = 0; i + 1 < count; ++i) {
@@ -156,7 +156,7 @@ Result<PaintstrokeOptions> makePaintstrokeOptions(int quality, double tolerance,
   return options;
 }
 
-TubeMesh buildStrokeTubes(const strokes::PaintstrokePackage& package, int sides, int steps) {
+TubeMesh buildStrokeTubes(const paintstrokes::PaintstrokePackage& package, int sides, int steps) {
   TubeMesh mesh;
   for (std::size_t s = 0; s < package.strokes.size(); ++s) addStrokeTube(package, s, sides, steps, mesh);
   return mesh;

@@ -1,4 +1,4 @@
-// Convex polygons for the area sampling of seed 000 §6, as libbake/groove/oracle/polygon.cpp: clipping by a
+// Convex polygons for the area sampling of seed 000 §6, as libbake/grooves/oracle/polygon.cpp: clipping by a
 // half-plane (Sutherland-Hodgman on one edge), convex-convex intersection, and convex minus convex as
 // disjoint convex pieces (the part outside each edge of the hole in turn). A half-plane is
 // vec3(normal, offset): normal . x >= offset.

@@ -1,5 +1,5 @@
 // Area sampling for the special cases of seed 000 §6 (intersections, ends, corners), as
-// libbake/groove/oracle/area_sampling.cpp: the local surface as planar convex pieces (area_surface.glsl); for
+// libbake/grooves/oracle/area_sampling.cpp: the local surface as planar convex pieces (area_surface.glsl); for
 // every piece facing the viewer, its projection along the view onto the base plane clipped to the
 // footprint, minus the projections of the pieces in front of it (§6.1, §6.3), minus the shadows of the
 // pieces nearer the light (§6.3), and Eq. 1 over the visible, lit shares (§6.4). Occlusion between two

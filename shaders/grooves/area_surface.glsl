@@ -1,5 +1,5 @@
 // The local surface under a footprint as planar convex pieces, for the area sampling of seed 000 §6,
-// as libbake/groove/oracle/area_surface.cpp (facets after the seed's intersection removal, §6.2, done by
+// as libbake/grooves/oracle/area_surface.cpp (facets after the seed's intersection removal, §6.2, done by
 // clipping) and area_walls.cpp (the walls of open ends and vertical profile segments, §6.5). Every
 // found primitive is straightened at F; H = min(cuts) + max(ridges) is built by overlaying the grooves
 // one after the other on a list of convex cells, each with a plane per layer (the lower plane wins in

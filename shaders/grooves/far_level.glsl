@@ -1,4 +1,4 @@
-// The far level (libbake/groove/bake/far_level.h; the CPU's far_shade.cpp): a footprint over more
+// The far level (libbake/grooves/bake/far_level.h; the CPU's far_shade.cpp): a footprint over more
 // primitives than MAX_FOUND is shaded from the package's per-class band areas instead of dropping the
 // grooves past the cap. The pixel is the flat base plus, per class, the share of the footprint's
 // bounding box its bands cover (a summed-area table, read in double) times the difference between

@@ -3,7 +3,7 @@
 // the base plane in domain units (F = TEXCOORD_0 x domain, A1 = dFdx(F), A2 = dFdy(F)); the view and
 // light directions in the surface's tangent frame (u, v, w), built from the uv derivatives of the
 // position (for the package's preview plane: the plane's own axes); then the seed's method exactly as
-// the CPU oracle libbake/groove/oracle/shade.cpp computes it (line_sampling.glsl; special cases sampled by
+// the CPU oracle libbake/grooves/oracle/shade.cpp computes it (line_sampling.glsl; special cases sampled by
 // area, area_sampling.glsl). The output is linear radiance (formats/groove-scene.md "Rendering
 // model"), no ambient term and no tone mapping.
 // Variants: HAS_NORMALS, HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES

@@ -1,4 +1,4 @@
-// The seed's method per footprint (seed 000 §4-§5, §7), as libbake/groove/oracle/shade.cpp SeedShader::shade
+// The seed's method per footprint (seed 000 §4-§5, §7), as libbake/grooves/oracle/shade.cpp SeedShader::shade
 // and line_sampling.cpp: the enlarged box finds the primitives (§4.1); none: the flat base. Otherwise
 // each is straightened at F, the ones whose region reaches the footprint are kept (a primitive stops
 // at its joint lines; past a joint its neighbour in the chain, when found, takes over), grouped into

@@ -1,4 +1,4 @@
-// Finding the grooves that can affect a footprint (seed 000 §4.1-§4.2), as libbake/groove/oracle/shade.cpp:
+// Finding the grooves that can affect a footprint (seed 000 §4.1-§4.2), as libbake/grooves/oracle/shade.cpp:
 // the bounding box of the footprint parallelogram enlarged by wmax, and by hmax and dmax projected
 // along the view and the light (a ridge stands up to hmax |D_uv| / D_w towards D, a cavity point
 // reaches dmax |D_uv| / D_w away from it; towards the light, occluders of a cavity point reach

@@ -1,4 +1,4 @@
-// The one material model of formats/groove-scene.md ("Rendering model"), as libbake/groove/oracle/render.cpp
+// The one material model of formats/groove-scene.md ("Rendering model"), as libbake/grooves/oracle/render.cpp
 // directRadiance: normalised Blinn-Phong, f = albedo / pi + specular (n + 2) / (8 pi) max(N.H, 0)^n,
 // times max(N.L, 0) and the light's radiance. All vectors in groove space (u, v, w up).
 #ifndef BAKE_GROOVES_MATERIAL_GLSL

@@ -1,4 +1,4 @@
-// Mirror inter-reflections on the cross-section (seed 000 §7), as libbake/groove/oracle/interreflection.cpp:
+// Mirror inter-reflections on the cross-section (seed 000 §7), as libbake/grooves/oracle/interreflection.cpp:
 // a beam tracing on a fixed stack (no recursion in GLSL). Each visible portion of a mirror facet sends
 // a beam along the mirrored view direction R; in the coordinate k across R' = (R.B, R_w) the facets
 // past the mirror, walked in the beam's direction of travel, catch the rays whose k lies beyond the

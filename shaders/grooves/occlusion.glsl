@@ -1,5 +1,5 @@
 // Masking and shadowing by ordered projection on the cross-section (seed 000 §5.2), and Eq. 1, as
-// libbake/groove/oracle/line_sampling_occlusion.cpp and line_sampling.cpp shadeSection. A section point C
+// libbake/grooves/oracle/line_sampling_occlusion.cpp and line_sampling.cpp shadeSection. A section point C
 // seen along D' = (D.B, D_w) lies on the line of coordinate k(C) = C_b D_w - C_h D_b across D' (no
 // division, so grazing and downward directions stay finite). For D_b >= 0 occluders come from the
 // right: walk leftwards keeping the running minimum of k; a facet is visible where its k falls below

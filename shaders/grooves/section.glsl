@@ -1,5 +1,5 @@
 // The combined cross-section of parallel grooves and the footprint's density along it (seed 000 §5,
-// §5.1), as libbake/groove/oracle/line_sampling_section.cpp and line_sampling_occlusion.cpp, in fixed-size
+// §5.1), as libbake/grooves/oracle/line_sampling_section.cpp and line_sampling_occlusion.cpp, in fixed-size
 // arrays. Along the common binormal B through F, each groove's profile is placed where its centre
 // line crosses B (mirrored when its binormal points along -B); between consecutive profile breakpoints
 // every groove is linear, and the surface is H = min(0, cuts) + max(0, ridges), split where two pieces

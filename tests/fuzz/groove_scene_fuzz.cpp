@@ -2,7 +2,7 @@
 // data, cross-sections, flattening).
 #include "core/limits.h"
 #include "fuzz_support.h"
-#include "groove/input/scene.h"
+#include "grooves/input/scene.h"
 
 // Budgets a thousand times below the defaults: an input that is merely large (a spiral of thousands of
 // turns) is the budgets' business, tested elsewhere; here it would only hit libFuzzer's 10 s timeout.
@@ -15,6 +15,6 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  (void)bake::groove::parseGrooveScene(bake::fuzz::asText(data, size), "fuzz.json");
+  (void)bake::grooves::parseGrooveScene(bake::fuzz::asText(data, size), "fuzz.json");
   return 0;
 }

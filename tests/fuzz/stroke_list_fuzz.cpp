@@ -4,9 +4,9 @@
 #include "core/diagnostics.h"
 #include "core/limits.h"
 #include "fuzz_support.h"
-#include "strokes/generators.h"
-#include "strokes/input.h"
-#include "strokes/validate.h"
+#include "paintstrokes/generators.h"
+#include "paintstrokes/input.h"
+#include "paintstrokes/validate.h"
 
 // A control-point budget a thousand times below the default: a merely large list is the budget's
 // business (tested elsewhere) and would only reach libFuzzer's time-out here.
@@ -21,17 +21,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text = bake::fuzz::asText(data, size);
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   const bool json = first != std::string::npos && text[first] == '{';
-  bake::Result<bake::strokes::StrokeInput> input =
-      json ? bake::strokes::parseStrokeJson(text, "fuzz.json") : bake::strokes::parseStrokeCsv(text, "fuzz.csv");
+  bake::Result<bake::paintstrokes::StrokeInput> input =
+      json ? bake::paintstrokes::parseStrokeJson(text, "fuzz.json") : bake::paintstrokes::parseStrokeCsv(text, "fuzz.csv");
   if (!input.isOk()) return 0;
   std::vector<std::string> inputs;
   for (const nlohmann::json& entry : input->generators) {
     if (!entry.is_object() || !entry.contains("type") || entry["type"] != "tree") continue;
-    if (!bake::strokes::runGenerator(entry, input->directory, {"fuzz.json", "generators"}, bake::budgets(), input->set,
+    if (!bake::paintstrokes::runGenerator(entry, input->directory, {"fuzz.json", "generators"}, bake::budgets(), input->set,
                                      inputs, nullptr).isOk())
       return 0;
   }
   bake::Diagnostics quiet("fuzz", /*quiet=*/true);
-  (void)bake::strokes::validateStrokes(input->set, "fuzz", quiet);
+  (void)bake::paintstrokes::validateStrokes(input->set, "fuzz", quiet);
   return 0;
 }

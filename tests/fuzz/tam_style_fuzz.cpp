@@ -1,8 +1,8 @@
 // tambake's stroke style JSON (the stroke image's path is resolved, not read).
 #include "fuzz_support.h"
-#include "tam/style.h"
+#include "hatching/style.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  (void)bake::tam::parseStyle(bake::fuzz::asText(data, size), "fuzz.json", "/nonexistent-bake-fuzz", false);
+  (void)bake::hatching::parseStyle(bake::fuzz::asText(data, size), "fuzz.json", "/nonexistent-bake-fuzz", false);
   return 0;
 }

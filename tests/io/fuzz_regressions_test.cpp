@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "groove/package/package.h"
+#include "grooves/package/package.h"
 #include "io/glb.h"
 #include "io/ktx2.h"
 #include "io/mesh.h"
@@ -88,7 +88,7 @@ TEST(FuzzRegressions, GlbInputsDecodeOrFailWithAStatus) {
       continue;
     }
     // The BAKE_grooves reader: its extension JSON may hold any type anywhere (a number as "grid").
-    const auto grooves = groove::decodeGroovePackage(*package, path.string());
+    const auto grooves = grooves::decodeGroovePackage(*package, path.string());
     if (!grooves.isOk()) EXPECT_NE(grooves.status().code(), ExitCode::Internal) << grooves.status().describe();
   }
 }

@@ -18,16 +18,16 @@
 
 #include "core/diagnostics.h"
 #include "geodesic/bake.h"
-#include "groove/bake/grid.h"
-#include "groove/package/package.h"
-#include "groove/input/scene.h"
+#include "grooves/bake/grid.h"
+#include "grooves/package/package.h"
+#include "grooves/input/scene.h"
 #include "io/glb.h"
 #include "io/image.h"
 #include "mesh/patterns.h"
 #include "mesh/shape_tool.h"
 #include "pipe/scene.h"
 #include "revolution/bake.h"
-#include "tam/bake.h"
+#include "hatching/bake.h"
 
 namespace bake::test {
 
@@ -91,11 +91,11 @@ inline std::filesystem::path bakeGroovePlate(const std::filesystem::path& dir, c
     "base": "steel",
     "grooves": [{"profile": "vee", "path": {"polyline": [[1, 1], [8, 1], [8, 8]]}},
                 {"profile": "vee", "path": {"line": )" + line + R"(}}]})";
-  auto scene = groove::parseGrooveScene(text, name + ".json");
+  auto scene = grooves::parseGrooveScene(text, name + ".json");
   EXPECT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = groove::buildGrooveGrid(*scene, {});
+  auto grid = grooves::buildGrooveGrid(*scene, {});
   EXPECT_TRUE(grid.isOk()) << grid.status().describe();
-  auto package = groove::buildGroovePackage(*scene, *grid);
+  auto package = grooves::buildGroovePackage(*scene, *grid);
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   const std::filesystem::path file = dir / (name + ".glb");
   EXPECT_TRUE(glb::write(file, *package).isOk());
@@ -133,7 +133,7 @@ inline std::filesystem::path bakeVase(const std::filesystem::path& dir, const Va
 struct HatchedTorusOptions {
   int torusResolution = 12;
   std::string style = R"({"tones": 3, "resolution": 32, "levels": 1, "candidates": 2})";
-  double tilesPerUnit = tam::MaterialSettings{}.tilesPerUnit;
+  double tilesPerUnit = hatching::MaterialSettings{}.tilesPerUnit;
 };
 
 // A small TAM (DIR/tam.ktx2) with its threshold texture (DIR/threshold.ktx2) applied to a torus, as
@@ -142,7 +142,7 @@ inline std::filesystem::path bakeHatchedTorus(const std::filesystem::path& dir, 
   Diagnostics diagnostics("test", true);
   const std::filesystem::path torus = bakeTorus(dir, options.torusResolution, diagnostics);
   writeText(dir / "style.json", options.style);
-  tam::Settings settings;
+  hatching::Settings settings;
   settings.style = (dir / "style.json").string();
   settings.output = (dir / "tam.ktx2").string();
   settings.threshold = (dir / "threshold.ktx2").string();
@@ -150,12 +150,12 @@ inline std::filesystem::path bakeHatchedTorus(const std::filesystem::path& dir, 
   settings.material.package = (dir / "hatched.glb").string();
   settings.material.tilesPerUnit = options.tilesPerUnit;
   settings.common.quiet = true;
-  const Status status = tam::run(settings, diagnostics);
+  const Status status = hatching::run(settings, diagnostics);
   EXPECT_TRUE(status.isOk()) << status.describe();
   return settings.material.package;
 }
 
-inline pipe::Object objectOf(const std::string& name, pipe::Technique technique, std::size_t material = 0) {
+inline pipe::Object objectOf(const std::string& name, const std::string& technique, std::size_t material = 0) {
   pipe::Object object;
   object.name = name;
   object.technique = technique;
@@ -163,7 +163,7 @@ inline pipe::Object objectOf(const std::string& name, pipe::Technique technique,
   return object;
 }
 
-inline pipe::Material materialOf(const std::string& name, pipe::Technique technique) {
+inline pipe::Material materialOf(const std::string& name, const std::string& technique) {
   pipe::Material material;
   material.name = name;
   material.technique = technique;

@@ -16,7 +16,7 @@
 #include <cstring>
 
 #include "geodesic/bake.h"
-#include "groove/package/package.h"
+#include "grooves/package/package.h"
 #include "pipe/assemble.h"
 #include "pipe/assemble_support.h"
 #include "support/golden.h"
@@ -37,17 +37,17 @@ using test::objectOf;
 Scene torusAndPlate() {
   Scene scene;
   scene.name = "mixed";
-  Object torus = objectOf("torus", Technique::Geodesic, 0);
+  Object torus = objectOf("torus", "geodesic", 0);
   torus.fieldNames = {"a", "b", "c"};
   torus.position = {1, 2, 3};
   torus.scale = 0.5;
-  Object plate = objectOf("plate", Technique::Grooves, 1);
+  Object plate = objectOf("plate", "grooves", 1);
   plate.position = {-1, 0, 0};
   scene.objects = {torus, plate};
-  Material sand = materialOf("sand", Technique::Geodesic);
+  Material sand = materialOf("sand", "geodesic");
   sand.fields = {"b"};
   sand.geotexture = {{"version", 1}, {"texture", "sand-water"}, {"fields", {"b"}}, {"thresholds", {0.3}}};
-  Material steel = materialOf("steel", Technique::Grooves);
+  Material steel = materialOf("steel", "grooves");
   steel.readsSpecialCases = false;
   scene.materials = {sand, steel};
   return scene;
@@ -203,7 +203,7 @@ TEST(PipeAssemble, KeepsOnlyTheFieldsTheMaterialReadsRenumbered) {
 TEST(PipeAssemble, EmptiesUnreadGrooveRecordsAndRenumbersTheArrays) {
   const Scene scene = torusAndPlate();
   const glb::Package originalPackage = readBack(inputs().grooves);
-  auto original = groove::decodeGroovePackage(originalPackage, "plate.glb");
+  auto original = grooves::decodeGroovePackage(originalPackage, "plate.glb");
   ASSERT_TRUE(original.isOk()) << original.status().describe();
   ASSERT_GT(original->records.size(), 0u) << "the test scene must have special cases";
 
@@ -213,7 +213,7 @@ TEST(PipeAssemble, EmptiesUnreadGrooveRecordsAndRenumbersTheArrays) {
   const glb::Package p = encodedAndRead(*assembled);
   const int steel = materialNamed(p, "steel");
   ASSERT_GE(steel, 0);
-  auto decoded = groove::decodeGroovePackage(withOnlyMaterial(p, std::size_t(steel)), "assembled.glb");
+  auto decoded = grooves::decodeGroovePackage(withOnlyMaterial(p, std::size_t(steel)), "assembled.glb");
   ASSERT_TRUE(decoded.isOk()) << decoded.status().describe();
   EXPECT_TRUE(decoded->records.empty());
   EXPECT_TRUE(decoded->recordRefs.empty());
@@ -272,7 +272,7 @@ TEST(PipeAssemble, KeepUnusedCopiesEveryBakedByteButReadsTheSame) {
   const int sand = materialNamed(*kept, "sand");
   EXPECT_EQ(kept->materials[std::size_t(sand)]["extensions"][geo::kExtension]["fields"], json::array({1}));
   const int steel = materialNamed(*kept, "steel");
-  auto decoded = groove::decodeGroovePackage(withOnlyMaterial(encodedAndRead(*kept), std::size_t(steel)), "kept.glb");
+  auto decoded = grooves::decodeGroovePackage(withOnlyMaterial(encodedAndRead(*kept), std::size_t(steel)), "kept.glb");
   ASSERT_TRUE(decoded.isOk()) << decoded.status().describe();
   EXPECT_TRUE(decoded->records.empty());
 
@@ -304,14 +304,14 @@ TEST(PipeAssemble, RevolutionDropsAnUnreadDisplacementMapAndKeepsItsOtherMaps) {
   const json& baked = original.materials[0]["extensions"][rev::kExtension];
   ASSERT_TRUE(baked.contains(rev::kDisplacementMap));
   Scene scene;
-  scene.objects = {objectOf("ring", Technique::Revolution, 0)};
-  scene.materials = {materialOf("smooth", Technique::Revolution)};
+  scene.objects = {objectOf("ring", "revolution", 0)};
+  scene.materials = {materialOf("smooth", "revolution")};
   scene.materials[0].readsDisplacement = false;
 
   AssembleReport report;
   // After the grooves plate, so every index moves.
-  scene.objects.insert(scene.objects.begin(), objectOf("plate", Technique::Grooves, 1));
-  scene.materials.push_back(materialOf("steel", Technique::Grooves));
+  scene.objects.insert(scene.objects.begin(), objectOf("plate", "grooves", 1));
+  scene.materials.push_back(materialOf("steel", "grooves"));
   auto assembled = assemble(scene, {inputs().grooves, vase}, {}, &report);
   ASSERT_TRUE(assembled.isOk()) << assembled.status().describe();
   const glb::Package p = encodedAndRead(*assembled);
@@ -350,8 +350,8 @@ TEST(PipeAssemble, RevolutionWithoutBaseColourDropsTheImage) {
   const fs::path dir = test::freshTempDir("assemble_revolution_colour");
   const fs::path vase = test::bakeVase(dir);
   Scene scene;
-  scene.objects = {objectOf("vase", Technique::Revolution, 0)};
-  scene.materials = {materialOf("plain", Technique::Revolution)};
+  scene.objects = {objectOf("vase", "revolution", 0)};
+  scene.materials = {materialOf("plain", "revolution")};
   scene.materials[0].readsBaseColor = false;
   AssembleReport report;
   auto assembled = assemble(scene, {vase}, {}, &report);
@@ -368,15 +368,15 @@ TEST(PipeAssemble, HatchingDropsTheUnreadThresholdTextureAndKeepsTheTam) {
   const fs::path dir = test::freshTempDir("assemble_hatching");
   const fs::path hatched = test::bakeHatchedTorus(dir);
   const glb::Package original = readBack(hatched);
-  namespace tam = format::tam;
+  namespace tam = format::tam;  // the TAM format: the hatching package's constants
   const json& baked = original.materials[0]["extensions"][tam::kExtension];
   ASSERT_TRUE(baked.contains(tam::kThresholdImage));
   const auto imageBytes = [](const glb::Package& p, int image) {
     return p.blobs.at(p.images.at(std::size_t(image))["bufferView"].get<std::size_t>()).bytes;
   };
   Scene scene = torusAndPlate();
-  scene.objects.push_back(objectOf("pen", Technique::Hatching, 2));
-  scene.materials.push_back(materialOf("ink", Technique::Hatching));  // reads no threshold (the default)
+  scene.objects.push_back(objectOf("pen", "hatching", 2));
+  scene.materials.push_back(materialOf("ink", "hatching"));  // reads no threshold (the default)
 
   AssembleReport report;
   auto pruned = assemble(scene, {inputs().geodesic, inputs().grooves, hatched}, {}, &report);

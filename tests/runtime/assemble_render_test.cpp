@@ -24,7 +24,6 @@ namespace bake::play {
 namespace {
 
 namespace fs = std::filesystem;
-using pipe::Technique;
 
 // This file's variants of the baked inputs (pipe/assemble_support.h): tori of resolution 16 (the
 // geodesic and the hatched one), and a larger TAM tiled twice per object unit.
@@ -104,11 +103,11 @@ void expectSameImageSmallerFile(const pipe::Scene& scene, const std::vector<fs::
 TEST(AssembleRender, GeodesicFieldsLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_geodesic");
   pipe::Scene scene;
-  pipe::Object torus = test::objectOf("torus", Technique::Geodesic);
+  pipe::Object torus = test::objectOf("torus", "geodesic");
   torus.fieldNames = {"a", "b", "c"};
   torus.position = {0.5, 0, 0};
   scene.objects = {torus};
-  pipe::Material sand = test::materialOf("sand", Technique::Geodesic);
+  pipe::Material sand = test::materialOf("sand", "geodesic");
   sand.fields = {"b"};
   sand.geotexture = {{"version", 1}, {"texture", "isolines"}, {"fields", {"b"}}};
   scene.materials = {sand};
@@ -118,15 +117,15 @@ TEST(AssembleRender, GeodesicFieldsLeftOutDoNotChangeThePicture) {
 TEST(AssembleRender, DisplacementAndThresholdLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_revolution_hatching");
   pipe::Scene scene;
-  pipe::Object vase = test::objectOf("vase", Technique::Revolution);
+  pipe::Object vase = test::objectOf("vase", "revolution");
   vase.position = {-0.8, -0.5, 0};
-  pipe::Object torus = test::objectOf("torus", Technique::Hatching, 1);
+  pipe::Object torus = test::objectOf("torus", "hatching", 1);
   torus.position = {0.8, 0, 0};
   torus.scale = 0.6;
   scene.objects = {vase, torus};
-  pipe::Material smooth = test::materialOf("smooth", Technique::Revolution);
+  pipe::Material smooth = test::materialOf("smooth", "revolution");
   smooth.readsDisplacement = false;
-  scene.materials = {smooth, test::materialOf("ink", Technique::Hatching)};
+  scene.materials = {smooth, test::materialOf("ink", "hatching")};
   const std::vector<fs::path> packages = {test::bakeVase(dir, {.resolution = 128, .heightScale = 0.02}),
                                           test::bakeHatchedTorus(dir, kHatchedTorus)};
   expectSameImageSmallerFile(scene, packages, dir, "0,1,3.5:0,0,0");
@@ -136,10 +135,10 @@ TEST(AssembleRender, GrooveRecordsLeftOutDoNotChangeThePicture) {
   const fs::path dir = test::freshTempDir("assemble_render_grooves");
   pipe::Scene scene;
   for (const char* name : {"near", "far"}) {
-    pipe::Object plate = test::objectOf(name, Technique::Grooves, scene.objects.size());
+    pipe::Object plate = test::objectOf(name, "grooves", scene.objects.size());
     plate.position = {scene.objects.empty() ? -10.5 : 0.5, -5, 0};
     scene.objects.push_back(plate);
-    pipe::Material material = test::materialOf(name, Technique::Grooves);
+    pipe::Material material = test::materialOf(name, "grooves");
     material.readsSpecialCases = scene.objects.size() == 1;  // "near" reads them, "far" does not
     scene.materials.push_back(material);
   }

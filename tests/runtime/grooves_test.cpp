@@ -1,5 +1,5 @@
 // Grooved surfaces (seed 000 §4-§7) in the runtime, checked against libbake's CPU method, the oracle
-// (libbake/groove/oracle/shade.h SeedShader::shade). Each scene is baked here (parseGrooveScene ->
+// (libbake/grooves/oracle/shade.h SeedShader::shade). Each scene is baked here (parseGrooveScene ->
 // buildGrooveGrid -> buildGroovePackage), drawn headless by the grooves renderer into 32-bit float
 // attachments with the shader's SHADING_INPUTS variant, which also writes every pixel's shading inputs
 // (footprint centre F, edges A1 and A2, E and L in the tangent frame). The CPU method shades each
@@ -19,11 +19,11 @@
 #include <optional>
 #include <sstream>
 
-#include "groove/bake/grid.h"
-#include "groove/package/package.h"
-#include "groove/reference/reference.h"
-#include "groove/input/scene.h"
-#include "groove/oracle/shade.h"
+#include "grooves/bake/grid.h"
+#include "grooves/package/package.h"
+#include "grooves/reference/reference.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/shade.h"
 #include "io/glb.h"
 #include "play/validate.h"
 #include "render/grooves.h"
@@ -41,8 +41,8 @@ constexpr int kSize = 96;
 constexpr int kAttachments = 4;  // radiance, then the three shading-input outputs
 
 struct Baked {
-  groove::GrooveScene scene;
-  groove::GrooveGrid grid;
+  grooves::GrooveScene scene;
+  grooves::GrooveGrid grid;
   fs::path file;
 };
 
@@ -53,15 +53,15 @@ struct Baked {
 Baked bake(const std::string& json, const std::string& name, std::optional<glb::Node> node = std::nullopt,
            float uvScale = 1) {
   Baked out;
-  auto scene = groove::parseGrooveScene(json, name + ".json");
+  auto scene = grooves::parseGrooveScene(json, name + ".json");
   EXPECT_TRUE(scene.isOk()) << scene.status().describe();
   if (!scene.isOk()) return out;
   out.scene = std::move(scene).value();
-  auto grid = groove::buildGrooveGrid(out.scene, {});
+  auto grid = grooves::buildGrooveGrid(out.scene, {});
   EXPECT_TRUE(grid.isOk()) << grid.status().describe();
   if (!grid.isOk()) return out;
   out.grid = std::move(grid).value();
-  auto package = groove::buildGroovePackage(out.scene, out.grid);
+  auto package = grooves::buildGroovePackage(out.scene, out.grid);
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   if (!package.isOk()) return out;
   if (node) package->nodes.push_back(*node);
@@ -169,7 +169,7 @@ class GroovesOracle : public test::GlTest {
   bool areaSampling_ = false;
   int forceRetries_ = 0;  // GroovesOptions::forceRetries
   // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
-  // one are counted (libbake/groove/oracle/shade.cpp nearArcCentre splits those footprints in 3 x 3).
+  // one are counted (libbake/grooves/oracle/shade.cpp nearArcCentre splits those footprints in 3 x 3).
   std::vector<std::array<float, 2>> arcCentres_;
 
   // Renders the baked scene from `eye` (looking at `target`) lit from `light`, shades every covered
@@ -204,13 +204,13 @@ class GroovesOracle : public test::GlTest {
     figures.statistics = renderer.statistics();
 
     // The CPU holds what the shader holds: a footprint over more primitives goes to the far level.
-    groove::SeedSettings asRuntime;
+    grooves::SeedSettings asRuntime;
     asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
-    const groove::SeedShader oracle(baked.scene, baked.grid, asRuntime);
-    groove::SeedSettings straightArcs = asRuntime;
+    const grooves::SeedShader oracle(baked.scene, baked.grid, asRuntime);
+    grooves::SeedSettings straightArcs = asRuntime;
     straightArcs.curvedSections = false;
-    const groove::SeedShader straight(baked.scene, baked.grid, straightArcs);
-    const groove::SeedShader uncapped(baked.scene, baked.grid);
+    const grooves::SeedShader straight(baked.scene, baked.grid, straightArcs);
+    const grooves::SeedShader uncapped(baked.scene, baked.grid);
     double farSquared = 0;
     double squared = 0, sum = 0, specialSquared = 0;
     for (std::size_t p = 0; p < std::size_t(kSize) * kSize; ++p) {
@@ -218,16 +218,16 @@ class GroovesOracle : public test::GlTest {
       const float* b = &in1[p * 4];
       const float* c = &in2[p * 4];
       if (!(c[0] > 0)) continue;  // not covered by the plane
-      groove::Footprint footprint{{a[0], a[1]}, {a[2], a[3]}, {b[0], b[1]}};
-      const groove::Vec3 toViewer{b[2], b[3], c[0]};
-      groove::Lighting light3;
+      grooves::Footprint footprint{{a[0], a[1]}, {a[2], a[3]}, {b[0], b[1]}};
+      const grooves::Vec3 toViewer{b[2], b[3], c[0]};
+      grooves::Lighting light3;
       light3.toLight = {c[1], c[2], c[3]};
       light3.maxBounces = maxBounces;
-      groove::ShadeStats stats;
-      const groove::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
+      grooves::ShadeStats stats;
+      const grooves::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
       figures.far += stats.far ? 1 : 0;
       if (stats.far) {
-        const groove::Rgb exact = uncapped.shade(footprint, toViewer, light3);
+        const grooves::Rgb exact = uncapped.shade(footprint, toViewer, light3);
         for (int k = 0; k < 3; ++k) {
           const double got = radiance[p * 4 + std::size_t(k)], want = exact[std::size_t(k)];
           farSquared += (got - want) * (got - want);
@@ -263,7 +263,7 @@ class GroovesOracle : public test::GlTest {
           ++figures.nearArcCentre;
           break;
         }
-      const groove::Rgb withoutCurves = straight.shade(footprint, toViewer, light3);
+      const grooves::Rgb withoutCurves = straight.shade(footprint, toViewer, light3);
       bool curvedShows = false;
       for (int k = 0; k < 3; ++k)
         curvedShows = curvedShows || std::abs(quantised(withoutCurves[std::size_t(k)]) - quantised(expected[std::size_t(k)])) > 2;
@@ -441,16 +441,16 @@ TEST_F(GroovesOracle, VersionOnePackageCountsTruncatedFootprints) {
 // bench/groove's dense-parallel views (bench/groove/cases.json: 1,001 V-grooves, footprint / width
 // from 0.1 to 1000), drawn by the runtime's renderer through an oblique orthographic projection whose
 // pixels are exactly the bench's footprints (render.h windowView), against the ray-traced reference
-// (groove/reference/reference.h): within 3x the reference's own noise floor (two renders with other seeds) at
+// (grooves/reference/reference.h): within 3x the reference's own noise floor (two renders with other seeds) at
 // every footprint (half an 8-bit level where the reference has no noise). Past MAX_FOUND primitives
 // under a footprint the far level shades it.
 TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {
   const fs::path source = fs::path(BAKE_SOURCE_DIR) / "bench" / "groove";
-  auto scene = groove::readGrooveScene((source / "scenes" / "parallel-1000.json").string());
+  auto scene = grooves::readGrooveScene((source / "scenes" / "parallel-1000.json").string());
   ASSERT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = groove::buildGrooveGrid(*scene, {});
+  auto grid = grooves::buildGrooveGrid(*scene, {});
   ASSERT_TRUE(grid.isOk()) << grid.status().describe();
-  auto package = groove::buildGroovePackage(*scene, *grid);
+  auto package = grooves::buildGroovePackage(*scene, *grid);
   ASSERT_TRUE(package.isOk()) << package.status().describe();
   const fs::path file = test::freshTempDir("grooves_dense_parallel") / "dense.glb";
   ASSERT_TRUE(glb::write(file, *package).isOk());
@@ -468,14 +468,14 @@ TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {
   double worstRatio = 0;
   for (const nlohmann::json& c : cases["cases"]) {
     if (c["name"] != "dense-parallel") continue;
-    const groove::Vec2 lower{c["window"][0][0].get<double>(), c["window"][0][1].get<double>()};
-    const groove::Vec2 upper{c["window"][1][0].get<double>(), c["window"][1][1].get<double>()};
+    const grooves::Vec2 lower{c["window"][0][0].get<double>(), c["window"][0][1].get<double>()};
+    const grooves::Vec2 upper{c["window"][1][0].get<double>(), c["window"][1][1].get<double>()};
     for (const nlohmann::json& theta : c["view"]["theta"]) {
       const double radians = 3.14159265358979323846 / 180;
-      const groove::View view = groove::windowView(lower, upper, c["width"].get<int>(), theta.get<double>() * radians,
+      const grooves::View view = grooves::windowView(lower, upper, c["width"].get<int>(), theta.get<double>() * radians,
                                                    c["view"]["phi"].get<double>() * radians);
-      groove::Lighting lighting;
-      lighting.toLight = groove::directionFromAngles(c["light"]["theta"].get<double>() * radians,
+      grooves::Lighting lighting;
+      lighting.toLight = grooves::directionFromAngles(c["light"]["theta"].get<double>() * radians,
                                                      c["light"]["phi"].get<double>() * radians);
       ASSERT_LE(view.width, kSize);
       ASSERT_LE(view.height, kSize);
@@ -504,11 +504,11 @@ TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       farFragments += renderer.statistics()["grooveFarFragments"].get<std::size_t>();
 
-      groove::ReferenceSettings reference;
+      grooves::ReferenceSettings reference;
       reference.samplesPerPixel = 256;
-      const Image truth = groove::renderReference(*scene, view, lighting, reference);
+      const Image truth = grooves::renderReference(*scene, view, lighting, reference);
       reference.seed = 2;
-      const Image second = groove::renderReference(*scene, view, lighting, reference);
+      const Image second = grooves::renderReference(*scene, view, lighting, reference);
       double squared = 0, floorSquared = 0;
       for (int y = 0; y < view.height; ++y)
         for (int x = 0; x < view.width; ++x)
@@ -801,13 +801,13 @@ TEST(GroovesPackage, RegisteredForTheExtension) {
 }
 
 TEST(GroovesPackage, ValidateAcceptsAGoodPackageAndRejectsDamage) {
-  auto scene = groove::parseGrooveScene(
+  auto scene = grooves::parseGrooveScene(
       sceneJson(1, R"("vee": {"points": [[-0.06, 0], [0, -0.05], [0.06, 0]]})", kGrey, "grey", linesAlongU({0.5}, 1, "vee")),
       "check.json");
   ASSERT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = groove::buildGrooveGrid(*scene, {});
+  auto grid = grooves::buildGrooveGrid(*scene, {});
   ASSERT_TRUE(grid.isOk());
-  auto package = groove::buildGroovePackage(*scene, *grid);
+  auto package = grooves::buildGroovePackage(*scene, *grid);
   ASSERT_TRUE(package.isOk());
   EXPECT_TRUE(checkPackageStructure(*package, "good.glb").isOk());
 

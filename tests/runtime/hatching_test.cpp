@@ -15,6 +15,7 @@
 #include <optional>
 #include <set>
 
+#include "core/vec.h"
 #include "io/glb.h"
 #include "io/image.h"
 #include "io/image_compare.h"
@@ -25,7 +26,7 @@
 #include "render/hatching.h"
 #include "render/renderer.h"
 #include "render/target.h"
-#include "tam/bake.h"
+#include "hatching/bake.h"
 #include "runtime/gl_test.h"
 #include "runtime/golden_image.h"
 #include "support/golden.h"
@@ -36,7 +37,6 @@ namespace fs = std::filesystem;
 namespace fmt = format::tam;
 
 constexpr int kSize = 128;
-constexpr double kPi = std::numbers::pi;
 const std::vector<float> kTones = {0.125f, 0.25f, 0.4375f, 0.625f};
 
 // ---------------------------------------------------------------------------------------------
@@ -677,7 +677,7 @@ TEST(HatchingRender, CompareStandardTimesBothRenderers) {
 
 // Bakes one example style onto `mesh` and returns the package's path.
 fs::path bakeExample(const std::string& style, const fs::path& mesh, const fs::path& dir, const std::string& position) {
-  tam::Settings settings;
+  hatching::Settings settings;
   settings.style = (test::sourceDir() / "pipelines" / "hatching" / style).string();
   settings.output = (dir / (style + ".ktx2")).string();
   settings.material.mesh = mesh.string();
@@ -686,7 +686,7 @@ fs::path bakeExample(const std::string& style, const fs::path& mesh, const fs::p
               &settings.material.position[2]);
   settings.common.quiet = true;
   Diagnostics quiet("tambake", true);
-  const Status status = tam::run(settings, quiet);
+  const Status status = hatching::run(settings, quiet);
   EXPECT_TRUE(status.isOk()) << style << ": " << status.describe();
   return settings.material.package;
 }

@@ -23,7 +23,7 @@
 #include "render/target.h"
 #include "runtime/gl_test.h"
 #include "scene/scene.h"
-#include "strokes/package.h"
+#include "paintstrokes/package.h"
 #include "support/golden.h"
 
 namespace bake::play {
@@ -33,8 +33,8 @@ namespace fmt = format::paintstrokes;
 
 constexpr int kSize = 160;
 
-strokes::StrokePoint point(double x, double y, double z, double radius, Vec3d colour) {
-  strokes::StrokePoint p;
+paintstrokes::StrokePoint point(double x, double y, double z, double radius, Vec3d colour) {
+  paintstrokes::StrokePoint p;
   p.position = {x, y, z};
   p.radius = radius;
   p.colour = colour;
@@ -43,22 +43,22 @@ strokes::StrokePoint point(double x, double y, double z, double radius, Vec3d co
 
 // Three strokes in the z = 0 plane around the origin: a straight one, a half circle, and a tapered
 // S curve; one style, opaque at the centre and a little translucent at the edges, with a highlight.
-strokes::StrokeSet sampleStrokes() {
-  strokes::StrokeSet set;
-  strokes::StrokeStyle style;
+paintstrokes::StrokeSet sampleStrokes() {
+  paintstrokes::StrokeSet set;
+  paintstrokes::StrokeStyle style;
   style.edgeOpacity = 0.8;
   style.volumeAcross = 0.9;
   style.specular = {0.3, 0.3, 0.3};
   style.shininess = 24;
   set.styles.push_back(style);
-  strokes::Stroke straight;
+  paintstrokes::Stroke straight;
   for (int i = 0; i < 3; ++i) straight.points.push_back(point(-0.8 + 0.8 * i, 0.6, 0, 0.06, {0.8, 0.3, 0.2}));
-  strokes::Stroke arc;
+  paintstrokes::Stroke arc;
   for (int i = 0; i <= 6; ++i) {
     const double a = M_PI * i / 6;
     arc.points.push_back(point(-0.35 + 0.4 * std::cos(a), -0.1 - 0.4 * std::sin(a), 0, 0.05, {0.2, 0.6, 0.3}));
   }
-  strokes::Stroke curl;
+  paintstrokes::Stroke curl;
   for (int i = 0; i <= 5; ++i) {
     const double t = i / 5.0;
     curl.points.push_back(point(0.3 + 0.5 * t, -0.5 + 0.25 * std::sin(2 * M_PI * t), 0.1 * t, 0.07 * (1 - 0.7 * t),
@@ -68,8 +68,8 @@ strokes::StrokeSet sampleStrokes() {
   return set;
 }
 
-fs::path writePackage(const strokes::StrokeSet& set, const std::string& name) {
-  auto package = strokes::buildPaintstrokePackage(set, {}, {}, nullptr);
+fs::path writePackage(const paintstrokes::StrokeSet& set, const std::string& name) {
+  auto package = paintstrokes::buildPaintstrokePackage(set, {}, {}, nullptr);
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   if (!package.isOk()) return {};
   const fs::path file = test::freshTempDir("paintstrokes_" + name) / (name + ".glb");
@@ -202,11 +202,11 @@ TEST_F(Paintstrokes, QualityLevelsMatchFineTubes) {
 // covering what the tubes cover (strokes about 2 pixels wide, so the comparison is not dominated by
 // how each rasterises sub-pixel widths).
 TEST_F(Paintstrokes, ManyStrokesAreAllDrawn) {
-  strokes::StrokeSet set = sampleStrokes();
+  paintstrokes::StrokeSet set = sampleStrokes();
   set.strokes.clear();
   for (int row = 0; row < 40; ++row) {
     for (int column = 0; column < 20; ++column) {
-      strokes::Stroke stroke;
+      paintstrokes::Stroke stroke;
       for (int i = 0; i < 4; ++i)
         stroke.points.push_back(point(-1 + 0.1 * column + 0.02 * i, -1 + 0.05 * row + 0.005 * (i % 2), 0, 0.016,
                                       {0.9, 0.8, 0.3}));
@@ -297,7 +297,7 @@ TEST(PaintstrokeOptions, BadValuesAreUsageErrors) {
 
 // The loader checks refuse tampered packages, naming the element.
 TEST(PaintstrokeValidate, RefusesTamperedPackages) {
-  auto built = strokes::buildPaintstrokePackage(sampleStrokes(), {}, {}, nullptr);
+  auto built = paintstrokes::buildPaintstrokePackage(sampleStrokes(), {}, {}, nullptr);
   ASSERT_TRUE(built.isOk()) << built.status().describe();
   ASSERT_TRUE(checkPaintstrokePackage(*built, "sample.glb").isOk());
   int material = -1;

@@ -16,6 +16,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/vec.h"
 #include "io/glb.h"
 #include "io/image.h"
 #include "io/image_compare.h"
@@ -34,7 +35,6 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 128;
 constexpr float kFov = 0.7f;  // the camera's vertical field of view (Camera::yfov)
-constexpr double kPi = std::numbers::pi;
 
 // ---------------------------------------------------------------------------------------------
 // Analytic profiles in the (r, h) half-plane: a circle of `radius` around (centreR, centreH).

@@ -1,13 +1,18 @@
 // A toy technique added through the registry alone (libbake/techniques/registry.h and the runtime's
 // RendererRegistry): nothing else in the library or the runtime knows it, yet `bakeplay validate`'s
-// package checks run its loader checks, bakeinfo describes its data, and the scene renderer hands its
-// instances to its renderer.
+// package checks run its loader checks, bakeinfo describes its data, the scene renderer hands its
+// instances to its renderer, and scene files plan and assemble its objects through its scene hooks.
 #include <gtest/gtest.h>
 
 #include <GL/glcorearb.h>
 
 #include "core/diagnostics.h"
 #include "info/describe.h"
+#include "pipe/assemble.h"
+#include "pipe/assemble_parts.h"
+#include "pipe/plan.h"
+#include "pipe/scene.h"
+#include "pipe/technique_hooks.h"
 #include "play/validate.h"
 #include "render/renderer.h"
 #include "render/target.h"
@@ -58,6 +63,31 @@ class ToyRenderer : public TechniqueRenderer {
   std::size_t instances_ = 0;
 };
 
+// The toy's scene hooks: objects may give a "shade" option, which becomes toybake's --shade; the
+// assembled material is the scene's (named after it), the toy extension kept as baked.
+const pipe::TechniqueHooks& toyPipeHooks() {
+  static const pipe::detail::TechniqueRules rules{
+      .extension = kToyExtension,
+      .adapt = [](glb::Package& package, const pipe::detail::ObjectInput& input) -> Status {
+        const int index = pipe::detail::materialWith(package, kToyExtension);
+        if (index < 0) return input.error("not a toy package");
+        package.materials[std::size_t(index)]["name"] = input.material.name;
+        return {};
+      },
+      .references = [](const nlohmann::json&) { return pipe::detail::ExtensionReferences{}; },
+      .renumber = [](nlohmann::json&, const pipe::detail::Renumbering&) {}};
+  static const pipe::TechniqueHooks hooks{
+      .optionKeys = {"shade"},
+      .plan = [](pipe::ObjectPlanner& planner, const pipe::Object& object, pipe::Step& step) -> Status {
+        planner.addInput(step, planner.resolve(object.input));
+        pipe::ObjectPlanner::option(step, object.options, "shade", "--shade");
+        step.outputs.push_back(planner.baked(object, ".glb"));
+        return {};
+      },
+      .assemble = &rules};
+  return hooks;
+}
+
 // Registered once per process: the registry is process-wide.
 const techniques::Technique& toyTechnique() {
   static const techniques::Technique* row = [] {
@@ -73,6 +103,7 @@ const techniques::Technique& toyTechnique() {
       return nlohmann::json();
     };
     toy.formatDescription = [](const nlohmann::json& d) { return "  toy: colour " + info::vectorText(d["colour"]) + "\n"; };
+    toy.pipe = &toyPipeHooks();
     const Status added = techniques::add(toy);
     EXPECT_TRUE(added.isOk()) << added.describe();
     return techniques::byName("toy");
@@ -118,6 +149,44 @@ TEST(ToyTechnique, BakeinfoDescribesItsData) {
   EXPECT_EQ((*description)["toy"]["colour"], nlohmann::json({0.25, 0.5, 1}));
   EXPECT_NE(info::formatText(*description).find("  toy: colour (0.25, 0.5, 1)\n"), std::string::npos)
       << info::formatText(*description);
+}
+
+TEST(ToyTechnique, ScenesPlanAndAssembleItsObjects) {
+  toyTechnique();
+  const std::filesystem::path dir = test::freshTempDir("toy_technique_scene");
+  ASSERT_TRUE(glb::write(dir / "input.glb", toyPackage({0.25, 0.5, 1})).isOk());
+  const nlohmann::json document = {
+      {"version", 1},
+      {"objects", {{{"name", "cube"}, {"technique", "toy"}, {"input", "input.glb"}, {"options", {{"shade", 0.5}}},
+                    {"material", "paint"}}}},
+      {"materials", {{{"name", "paint"}, {"technique", "toy"}}}}};
+  Result<pipe::Scene> scene = pipe::parseScene(document, dir / "scene.json");
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+
+  pipe::PlanSettings settings;
+  settings.outputDirectory = dir / "out";
+  Result<pipe::Plan> plan = pipe::makePlan(*scene, settings);
+  ASSERT_TRUE(plan.isOk()) << plan.status().describe();
+  ASSERT_EQ(plan->steps.size(), 1u);
+  const pipe::Step& step = plan->steps[0];
+  EXPECT_EQ(step.id, "toybake:cube");
+  const std::string package = (dir / "out" / "cube.toy.glb").string();
+  EXPECT_EQ(step.arguments,
+            (std::vector<std::string>{(dir / "input.glb").string(), "--shade", "0.5", "-o", package, "-q"}));
+
+  // An option the toy's hooks do not list is refused with the object's element named.
+  nlohmann::json unknown = document;
+  unknown["objects"][0]["options"] = {{"shadow", 1}};
+  const Result<pipe::Scene> refused = pipe::parseScene(unknown, dir / "scene.json");
+  ASSERT_FALSE(refused.isOk());
+  EXPECT_NE(refused.status().describe().find("/objects/0/options/shadow"), std::string::npos) << refused.status().describe();
+
+  // The baked package (here the input itself) assembles under the scene's material name.
+  Result<glb::Package> assembled = pipe::assemble(*scene, {dir / "input.glb"}, {});
+  ASSERT_TRUE(assembled.isOk()) << assembled.status().describe();
+  ASSERT_EQ(assembled->materials.size(), 1u);
+  EXPECT_EQ(assembled->materials[0]["name"], "paint");
+  EXPECT_EQ(toyOf(assembled->materials[0])["colour"], nlohmann::json({0.25, 0.5, 1}));
 }
 
 class ToyTechniqueRender : public test::GlTest {};

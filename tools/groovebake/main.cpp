@@ -6,13 +6,13 @@
 #include "common/cli.h"
 #include "core/huge_pages.h"
 #include "core/session.h"
-#include "groove/bake/bake.h"
+#include "grooves/bake/bake.h"
 
 int main(int argc, char** argv) {
   // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten
   // times less (core/huge_pages.h).
   bake::reexecWithHugePages(argv, "groovebake");
-  using namespace bake::groove;
+  using namespace bake::grooves;
   Settings settings;
   bake::Diagnostics diagnostics("groovebake");
   CLI::App app{"Bakes a groove scene (paths in UV, polyline cross-sections, perturbations, materials) into\n"

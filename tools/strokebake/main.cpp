@@ -9,10 +9,10 @@
 #include "common/cli.h"
 #include "core/session.h"
 #include "core/vector_text.h"
-#include "strokes/bake.h"
+#include "paintstrokes/bake.h"
 
 int main(int argc, char** argv) {
-  using namespace bake::strokes;
+  using namespace bake::paintstrokes;
   Settings settings;
   bake::Diagnostics diagnostics("strokebake");
   CLI::App app{"Bakes 3D paintstrokes (generalized cylinders whose path and radius are Catmull-Rom splines\n"

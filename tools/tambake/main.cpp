@@ -8,11 +8,11 @@
 #include "common/cli.h"
 #include "core/session.h"
 #include "core/vector_text.h"
-#include "tam/bake.h"
-#include "tam/style.h"
+#include "hatching/bake.h"
+#include "hatching/style.h"
 
 int main(int argc, char** argv) {
-  using namespace bake::tam;
+  using namespace bake::hatching;
   Settings settings;
   bake::Diagnostics diagnostics("tambake");
   CLI::App app{"Builds a tonal art map (Praun et al. 2001) from a style file: one image per tone, light to\n"

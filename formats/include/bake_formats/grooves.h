@@ -1,5 +1,5 @@
 // Constants and buffer layouts of the BAKE_grooves package (formats/grooves.md), shared by
-// groovebake's writer (libbake/groove/package/package.cpp), its reader and the runtime's loader and shader.
+// groovebake's writer (libbake/grooves/package/package.cpp), its reader and the runtime's loader and shader.
 // Every record below is laid out as a GLSL std430 struct of 16-byte members (ivec4 / uvec4 / vec4),
 // so a bufferView uploads as it is and binds with glBindBufferRange.
 #pragma once
@@ -15,7 +15,7 @@ inline constexpr int kVersion = 2;
 // primitives than it holds as truncated.
 inline constexpr int kOldestReadableVersion = 1;
 
-// The shading's reach (the CPU method in libbake/groove and the runtime shader, passed as MAX_REACH):
+// The shading's reach (the CPU method in libbake/grooves and the runtime shader, passed as MAX_REACH):
 // the footprint box is enlarged along a direction d by at most this many heights, |d_uv| / d_w capped
 // here (about 89.4 degrees from the normal), so a view or light at the horizon stays finite.
 inline constexpr double kMaxReach = 100;
@@ -122,7 +122,7 @@ struct alignas(16) Material {
 };
 static_assert(sizeof(Material) == 48);
 
-// The far level (version 2; libbake/groove/bake/far_level.h): per class of grooves (profile, material,
+// The far level (version 2; libbake/grooves/bake/far_level.h): per class of grooves (profile, material,
 // direction), a summed-area table of band area over a uniform grid of the domain, float64 nodes
 // (columns + 1) x (rows + 1) per class, u fastest. The extension's "far" object gives the grid.
 struct alignas(16) FarClass {

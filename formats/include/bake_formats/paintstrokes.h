@@ -1,5 +1,5 @@
 // Constants and buffer layouts of the BAKE_paintstrokes package (formats/paintstrokes.md), shared by
-// strokebake's writer (libbake/strokes/package.cpp), its reader and the runtime's loader and shaders
+// strokebake's writer (libbake/paintstrokes/package.cpp), its reader and the runtime's loader and shaders
 // (shaders/paintstrokes/, which receive the constants as #defines). A paintstroke (seed 002) is a
 // generalized cylinder: a Catmull-Rom path through control points whose radius (Catmull-Rom too),
 // colour, opacity and reflectance vary along the length. Records are std430 layouts (16-byte members)

@@ -6,12 +6,6 @@ namespace bake::format::scene {
 
 inline constexpr int kVersion = 1;
 
-// Techniques, as the scene names them, and the baker of each.
-inline constexpr const char* kGeodesic = "geodesic";
-inline constexpr const char* kRevolution = "revolution";
-inline constexpr const char* kHatching = "hatching";
-inline constexpr const char* kGrooves = "grooves";
-
 // The on-screen size of a texel above which a TAM level is kept (formats/scene.md): a level whose
 // texels are all smaller than half a pixel at the largest pixels per unit is never the finer of the
 // two levels a trilinear lookup blends.

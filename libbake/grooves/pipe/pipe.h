@@ -1,0 +1,12 @@
+// Groove objects in scene pipelines (pipe/technique_hooks.h): what a scene may say of them, their
+// groovebake step, and how their packages are assembled.
+#pragma once
+
+#include "pipe/technique_hooks.h"
+
+namespace bake::grooves {
+
+const pipe::TechniqueHooks& pipeHooks();              // pipe/plan.cpp
+const pipe::detail::TechniqueRules& assembleRules();  // pipe/assemble.cpp
+
+}  // namespace bake::grooves
