@@ -1,6 +1,6 @@
 """Bazel rules for the bake toolchain.
 
-bake_asset runs one baker (geobake, groovebake, revolbake, tambake, bakeshape) as a Bazel action:
+bake_asset runs one baker (geobake, groovebake, revolbake, tambake, strokebake, bakeshape) as a Bazel action:
 
     load("@bake_rules//:bake.bzl", "bake_asset")
 
@@ -14,7 +14,7 @@ bake_asset runs one baker (geobake, groovebake, revolbake, tambake, bakeshape) a
 
 Bazel has no depfiles: every file an action reads must be declared. `src` is the main input; files
 reached through options (a geobake --sources file, a revolbake --height-map, a tambake style's stroke
-image) go in `data` and are named in `options` with $(location ...). `bakeTOOL ... --print-inputs`
+image, the meshes a strokebake list's generators grow on) go in `data` and are named in `options` with $(location ...). `bakeTOOL ... --print-inputs`
 lists what a bake reads. Outputs besides `out` (a tambake --threshold texture) go in `extra_outs` and
 are named in `options` with $(location ...) too. The sandbox makes an undeclared input an error rather
 than a stale build, and Bazel's own action cache (local or remote) plays the role of --cache-dir.
@@ -25,7 +25,7 @@ under PREFIX/bin, PREFIX taken from the environment variable BAKE_TOOLS_PREFIX o
 attribute.
 """
 
-BAKE_TOOLS = ["bakeinfo", "bakeshape", "geobake", "groovebake", "revolbake", "tambake"]
+BAKE_TOOLS = ["bakeinfo", "bakeshape", "geobake", "groovebake", "revolbake", "strokebake", "tambake"]
 
 def _bake_asset_impl(ctx):
     outputs = [ctx.outputs.out] + ctx.outputs.extra_outs

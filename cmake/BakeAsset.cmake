@@ -2,7 +2,7 @@
 #                [DEPENDS <file>...] [CACHE_DIR <dir>])
 #
 # Bakes INPUT into OUTPUT at build time with one of the bakers (geobake, groovebake, revolbake,
-# tambake, bakeshape): `TOOL INPUT -o OUTPUT ARGS... --depfile OUTPUT.d -q`. The baker's depfile names
+# tambake, strokebake, bakeshape): `TOOL INPUT -o OUTPUT ARGS... --depfile OUTPUT.d -q`. The baker's depfile names
 # every file it reads, so files reached only through ARGS (a --sources file, a height map, a style's
 # stroke image) also trigger a re-bake; DEPENDS adds more. OUTPUTS lists the other files the command
 # writes (e.g. a --threshold texture), so the build knows them. A relative INPUT is read from the

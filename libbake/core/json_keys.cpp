@@ -97,13 +97,17 @@ Status JsonReader::error(const std::string& where, const std::string& message) c
 
 Status JsonReader::object(const nlohmann::json& node, const std::string& where,
                           std::initializer_list<const char*> known) const {
-  return object(node, where, std::vector<const char*>(known));
+  if (!node.is_object()) return error(where, "must be a JSON object");
+  if (const auto unknown = unknownKeyAmong(node, known.begin(), known.end()))
+    return error(jsonPointerChild(where, unknown->key), unknown->message);
+  return Status::ok();
 }
 
 Status JsonReader::object(const nlohmann::json& node, const std::string& where,
                           const std::vector<const char*>& known) const {
   if (!node.is_object()) return error(where, "must be a JSON object");
-  if (const auto unknown = findUnknownKey(node, known)) return error(jsonPointerChild(where, unknown->key), unknown->message);
+  if (const auto unknown = unknownKeyAmong(node, known.data(), known.data() + known.size()))
+    return error(jsonPointerChild(where, unknown->key), unknown->message);
   return Status::ok();
 }
 

@@ -165,6 +165,7 @@ Status bake(const Settings& settings, BakeSession& session) {
   {
     StageTimer timer(&report, "validate");
     BAKE_ASSIGN_OR_RETURN(repairs, validateStrokes(loaded.set, settings.input, session.diagnostics()));
+    if (settings.dropUnusedStyles) report.setStatistic("stylesDropped", dropUnusedStyles(loaded.set));
   }
   progress.update(2);
   const std::vector<Vec3d> directions = shadowDirections(settings.shadow);

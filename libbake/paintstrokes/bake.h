@@ -29,6 +29,7 @@ struct Settings {
   std::string output;             // OUT.glb
   GrowSettings grow;              // used when the input is a mesh (grow.mesh = input)
   ShadowSettings shadow;
+  bool dropUnusedStyles = false;  // --drop-unused-styles: styles no stroke uses are not packed
   CommonOptions common;           // --report, --depfile, --threads, --quiet, --print-inputs, --budget
 };
 

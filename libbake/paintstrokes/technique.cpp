@@ -5,6 +5,7 @@
 
 #include "info/describe.h"
 #include "paintstrokes/package.h"
+#include "paintstrokes/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {
@@ -36,7 +37,7 @@ std::string formatPaintstrokes(const nlohmann::json& p) {
 
 Technique paintstrokesTechnique() {
   return {"paintstrokes", format::paintstrokes::kExtension, "strokebake", paintstrokes::checkPaintstrokePackage,
-          describePaintstrokes, formatPaintstrokes};
+          describePaintstrokes, formatPaintstrokes, &paintstrokes::pipeHooks()};
 }
 
 }  // namespace bake::techniques

@@ -117,4 +117,34 @@ Result<ValidationCounts> validateStrokes(StrokeSet& set, const std::string& file
   return counts;
 }
 
+std::vector<std::string> unusedStyles(const StrokeSet& set) {
+  std::vector<bool> used(set.styles.size(), false);
+  for (const Stroke& stroke : set.strokes)
+    if (stroke.style < used.size()) used[stroke.style] = true;
+  std::vector<std::string> names;
+  for (std::size_t s = 0; s < set.styles.size(); ++s)
+    if (!used[s]) names.push_back(set.styles[s].name);
+  return names;
+}
+
+std::vector<std::string> dropUnusedStyles(StrokeSet& set) {
+  std::vector<std::size_t> renumbered(set.styles.size(), set.styles.size());
+  for (const Stroke& stroke : set.strokes)
+    if (stroke.style < renumbered.size()) renumbered[stroke.style] = 0;
+  if (set.strokes.empty() && !set.styles.empty()) renumbered[0] = 0;
+  std::vector<StrokeStyle> kept;
+  std::vector<std::string> dropped;
+  for (std::size_t s = 0; s < set.styles.size(); ++s) {
+    if (renumbered[s] == set.styles.size()) {
+      dropped.push_back(set.styles[s].name);
+      continue;
+    }
+    renumbered[s] = kept.size();
+    kept.push_back(std::move(set.styles[s]));
+  }
+  set.styles = std::move(kept);
+  for (Stroke& stroke : set.strokes) stroke.style = renumbered[stroke.style];
+  return dropped;
+}
+
 }  // namespace bake::paintstrokes

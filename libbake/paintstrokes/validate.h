@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/diagnostics.h"
 #include "core/limits.h"
@@ -25,5 +26,11 @@ inline constexpr double kLargestValue = 1e30;
 
 // `file` names the input in messages. The control-points budget is checked first.
 Result<ValidationCounts> validateStrokes(StrokeSet& set, const std::string& file, Diagnostics& diagnostics);
+
+// The names of the styles no stroke uses, in style order.
+std::vector<std::string> unusedStyles(const StrokeSet& set);
+// Removes the styles no stroke uses, renumbering the strokes' style indices (a set without strokes
+// keeps its first style: a package holds at least one); returns the names removed.
+std::vector<std::string> dropUnusedStyles(StrokeSet& set);
 
 }  // namespace bake::paintstrokes

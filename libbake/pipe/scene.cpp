@@ -25,14 +25,48 @@ namespace key = bake::format::scene;
 std::string child(const std::string& parent, const std::string& name) { return jsonPointerChild(parent, name); }
 std::string child(const std::string& parent, std::size_t index) { return jsonPointerChild(parent, index); }
 
-// The "technique" of an object or material: a registered technique with scene hooks.
-Result<std::string> readTechnique(const SceneReader& r, const json& node, const std::string& where) {
-  BAKE_ASSIGN_OR_RETURN(std::string text, r.string(node, where));
-  if (hooksOf(text)) return text;
-  std::string names;
-  for (const std::string& name : sceneTechniques()) names += (names.empty() ? "" : ", ") + name;
-  return r.error(where, "unknown technique \"" + text + "\" (" + names + ")");
-}
+// What a scene file may say of objects and materials, gathered once per scene from the registry's
+// rows with scene hooks (registry order).
+struct Vocabulary {
+  struct Owned {
+    const char* key;
+    std::string technique;  // the technique whose objects (or materials) alone may carry the key
+  };
+  std::vector<std::string> techniques;
+  std::vector<const TechniqueHooks*> hooks;  // one per technique
+  std::vector<Owned> objectKeys, materialKeys;
+  std::vector<const char*> knownObjectKeys, knownMaterialKeys, knownReads;
+
+  static Vocabulary fromRegistry() {
+    Vocabulary v;
+    v.techniques = sceneTechniques();
+    v.knownObjectKeys = {"name", "technique", "input"};
+    v.knownMaterialKeys = {"name", "technique"};
+    for (const std::string& technique : v.techniques) {
+      const TechniqueHooks* hooks = hooksOf(technique);
+      v.hooks.push_back(hooks);
+      for (const char* key : hooks->objectKeys) v.objectKeys.push_back({key, technique});
+      for (const char* key : hooks->materialKeys) v.materialKeys.push_back({key, technique});
+      for (const ReadsFlag& flag : hooks->reads) v.knownReads.push_back(flag.key);
+    }
+    for (const Owned& owned : v.objectKeys) v.knownObjectKeys.push_back(owned.key);
+    v.knownObjectKeys.insert(v.knownObjectKeys.end(), {"options", "position", "scale", "material"});
+    for (const Owned& owned : v.materialKeys) v.knownMaterialKeys.push_back(owned.key);
+    v.knownMaterialKeys.push_back("reads");
+    return v;
+  }
+
+  // The "technique" of an object or material, and its hooks.
+  Result<const TechniqueHooks*> technique(const SceneReader& r, const json& node, const std::string& where,
+                                          std::string& name) const {
+    BAKE_ASSIGN_OR_RETURN(name, r.string(node, where));
+    for (std::size_t t = 0; t < techniques.size(); ++t)
+      if (techniques[t] == name) return hooks[t];
+    std::string names;
+    for (const std::string& known : techniques) names += (names.empty() ? "" : ", ") + known;
+    return r.error(where, "unknown technique \"" + name + "\" (" + names + ")");
+  }
+};
 
 Result<Generated> readGenerated(const SceneReader& r, const json& node, const std::string& where) {
   BAKE_RETURN_IF_ERROR(r.object(node, where, {"output", "shape", "resolution"}));
@@ -48,30 +82,18 @@ Result<Generated> readGenerated(const SceneReader& r, const json& node, const st
   return g;
 }
 
-// The object keys one technique's objects carry, the first technique that claims each (registry order).
-std::vector<std::pair<const char*, std::string>> techniqueObjectKeys() {
-  std::vector<std::pair<const char*, std::string>> keys;
-  for (const std::string& technique : sceneTechniques())
-    for (const char* key : hooksOf(technique)->objectKeys) keys.emplace_back(key, technique);
-  return keys;
-}
-
-Result<Object> readObject(const SceneReader& r, const json& node, const std::string& where,
+Result<Object> readObject(const SceneReader& r, const Vocabulary& v, const json& node, const std::string& where,
                           const std::map<std::string, std::size_t>& materials) {
-  const auto owned = techniqueObjectKeys();
-  std::vector<const char*> known = {"name", "technique", "input"};
-  for (const auto& [key, technique] : owned) known.push_back(key);
-  known.insert(known.end(), {"options", "position", "scale", "material"});
-  BAKE_RETURN_IF_ERROR(r.object(node, where, known));
+  BAKE_RETURN_IF_ERROR(r.object(node, where, v.knownObjectKeys));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"name", "technique", "input", "material"}));
   Object o;
   BAKE_ASSIGN_OR_RETURN(o.name, r.name(node["name"], child(where, "name")));
-  BAKE_ASSIGN_OR_RETURN(o.technique, readTechnique(r, node["technique"], child(where, "technique")));
+  BAKE_ASSIGN_OR_RETURN(const TechniqueHooks* found, v.technique(r, node["technique"], child(where, "technique"), o.technique));
+  const TechniqueHooks& hooks = *found;
   BAKE_ASSIGN_OR_RETURN(o.input, r.path(node["input"], child(where, "input")));
-  for (const auto& [key, technique] : owned)
-    if (node.contains(key) && o.technique != technique)
-      return r.error(child(where, key), "is for " + technique + " objects only");
-  const TechniqueHooks& hooks = *hooksOf(o.technique);
+  for (const Vocabulary::Owned& owned : v.objectKeys)
+    if (node.contains(owned.key) && o.technique != owned.technique)
+      return r.error(child(where, owned.key), "is for " + owned.technique + " objects only");
   if (hooks.readObject) BAKE_RETURN_IF_ERROR(hooks.readObject(r, node, where, o));
   if (node.contains("options")) {
     BAKE_RETURN_IF_ERROR(r.object(node["options"], child(where, "options"), hooks.optionKeys));
@@ -80,45 +102,36 @@ Result<Object> readObject(const SceneReader& r, const json& node, const std::str
   if (node.contains("position")) { BAKE_ASSIGN_OR_RETURN(o.position, r.vec3(node["position"], child(where, "position"))); }
   if (node.contains("scale")) { BAKE_ASSIGN_OR_RETURN(o.scale, r.positive(node["scale"], child(where, "scale"))); }
   BAKE_ASSIGN_OR_RETURN(const std::string material, r.name(node["material"], child(where, "material")));
-  const auto found = materials.find(material);
-  if (found == materials.end()) return r.error(child(where, "material"), "no material is named \"" + material + "\"");
-  o.material = found->second;
+  const auto named = materials.find(material);
+  if (named == materials.end()) return r.error(child(where, "material"), "no material is named \"" + material + "\"");
+  o.material = named->second;
   return o;
 }
 
 // The material's "reads" flags, each only for the technique that declares it.
-Status readFlags(const SceneReader& r, const json& node, const std::string& at, Material& m) {
-  std::vector<const char*> known;
-  for (const std::string& technique : sceneTechniques())
-    for (const ReadsFlag& flag : hooksOf(technique)->reads) known.push_back(flag.key);
-  BAKE_RETURN_IF_ERROR(r.object(node, at, known));
-  for (const std::string& technique : sceneTechniques())
-    for (const ReadsFlag& flag : hooksOf(technique)->reads) {
+Status readFlags(const SceneReader& r, const Vocabulary& v, const json& node, const std::string& at, Material& m) {
+  BAKE_RETURN_IF_ERROR(r.object(node, at, v.knownReads));
+  for (std::size_t t = 0; t < v.techniques.size(); ++t)
+    for (const ReadsFlag& flag : v.hooks[t]->reads) {
       if (!node.contains(flag.key)) continue;
-      if (m.technique != technique) return r.error(child(at, flag.key), "is for " + technique + " materials only");
+      if (m.technique != v.techniques[t])
+        return r.error(child(at, flag.key), "is for " + v.techniques[t] + " materials only");
       BAKE_ASSIGN_OR_RETURN(m.*flag.value, r.boolean(node[flag.key], child(at, flag.key)));
     }
   return Status::ok();
 }
 
-Result<Material> readMaterial(const SceneReader& r, const json& node, const std::string& where) {
-  std::vector<std::pair<const char*, std::string>> owned;
-  for (const std::string& technique : sceneTechniques())
-    for (const char* key : hooksOf(technique)->materialKeys) owned.emplace_back(key, technique);
-  std::vector<const char*> known = {"name", "technique"};
-  for (const auto& [key, technique] : owned) known.push_back(key);
-  known.push_back("reads");
-  BAKE_RETURN_IF_ERROR(r.object(node, where, known));
+Result<Material> readMaterial(const SceneReader& r, const Vocabulary& v, const json& node, const std::string& where) {
+  BAKE_RETURN_IF_ERROR(r.object(node, where, v.knownMaterialKeys));
   BAKE_RETURN_IF_ERROR(r.required(node, where, {"name", "technique"}));
   Material m;
   BAKE_ASSIGN_OR_RETURN(m.name, r.name(node["name"], child(where, "name")));
-  BAKE_ASSIGN_OR_RETURN(m.technique, readTechnique(r, node["technique"], child(where, "technique")));
-  for (const auto& [key, technique] : owned)
-    if (node.contains(key) && m.technique != technique)
-      return r.error(child(where, key), "is for " + technique + " materials only");
-  const TechniqueHooks& hooks = *hooksOf(m.technique);
-  if (hooks.readMaterial) BAKE_RETURN_IF_ERROR(hooks.readMaterial(r, node, where, m));
-  if (node.contains("reads")) BAKE_RETURN_IF_ERROR(readFlags(r, node["reads"], child(where, "reads"), m));
+  BAKE_ASSIGN_OR_RETURN(const TechniqueHooks* hooks, v.technique(r, node["technique"], child(where, "technique"), m.technique));
+  for (const Vocabulary::Owned& owned : v.materialKeys)
+    if (node.contains(owned.key) && m.technique != owned.technique)
+      return r.error(child(where, owned.key), "is for " + owned.technique + " materials only");
+  if (hooks->readMaterial) BAKE_RETURN_IF_ERROR(hooks->readMaterial(r, node, where, m));
+  if (node.contains("reads")) BAKE_RETURN_IF_ERROR(readFlags(r, v, node["reads"], child(where, "reads"), m));
   return m;
 }
 
@@ -213,6 +226,7 @@ std::vector<std::string> Scene::fieldsRead(const Object& object) const {
 Result<Scene> parseScene(const json& doc, const fs::path& path) {
   SceneReader r;
   r.file = path.string();
+  const Vocabulary vocabulary = Vocabulary::fromRegistry();
   BAKE_RETURN_IF_ERROR(r.object(doc, "", {"$schema", "description", "version", "name", "generated", "objects",
                                           "materials", "cameras", "pixelsPerUnit"}));
   BAKE_RETURN_IF_ERROR(r.required(doc, "", {"version", "objects", "materials"}));
@@ -240,7 +254,7 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
   std::map<std::string, std::size_t> materialIndex;
   for (std::size_t k = 0; k < doc["materials"].size(); ++k) {
     const std::string where = child("/materials", k);
-    BAKE_ASSIGN_OR_RETURN(Material m, readMaterial(r, doc["materials"][k], where));
+    BAKE_ASSIGN_OR_RETURN(Material m, readMaterial(r, vocabulary, doc["materials"][k], where));
     if (!materialIndex.emplace(m.name, k).second)
       return r.error(child(where, "name"), "\"" + m.name + "\" names two materials");
     scene.materials.push_back(std::move(m));
@@ -252,7 +266,7 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
   std::set<std::string> objectNames;
   for (std::size_t k = 0; k < doc["objects"].size(); ++k) {
     const std::string where = child("/objects", k);
-    BAKE_ASSIGN_OR_RETURN(Object o, readObject(r, doc["objects"][k], where, materialIndex));
+    BAKE_ASSIGN_OR_RETURN(Object o, readObject(r, vocabulary, doc["objects"][k], where, materialIndex));
     if (!objectNames.insert(o.name).second) return r.error(child(where, "name"), "\"" + o.name + "\" names two objects");
     const Material& m = scene.materials[o.material];
     if (m.technique != o.technique)

@@ -57,6 +57,7 @@ struct Material {
   bool readsDisplacement = true;
   bool readsThreshold = false;
   bool readsSpecialCases = true;
+  bool readsShadows = true;
 };
 
 struct Camera {

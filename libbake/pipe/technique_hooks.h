@@ -76,17 +76,17 @@ struct ReadsFlag {
 
 struct TechniqueHooks {
   // The scene file. Keys an object's "options" may hold:
-  std::vector<const char*> optionKeys;
+  std::vector<const char*> optionKeys = {};
   // Object keys only this technique's objects may carry, and their reader (checks and fills `object`).
-  std::vector<const char*> objectKeys;
+  std::vector<const char*> objectKeys = {};
   Status (*readObject)(const SceneReader& reader, const nlohmann::json& node, const std::string& where,
                        Object& object) = nullptr;
   // Material keys only this technique's materials may carry (besides "reads"), and their reader.
-  std::vector<const char*> materialKeys;
+  std::vector<const char*> materialKeys = {};
   Status (*readMaterial)(const SceneReader& reader, const nlohmann::json& node, const std::string& where,
                          Material& material) = nullptr;
   // The material's "reads" flags.
-  std::vector<ReadsFlag> reads;
+  std::vector<ReadsFlag> reads = {};
 
   // The plan: the step's arguments, inputs and outputs (the first output is the object's package),
   // with what the object's material does not read left out unless settings.keepUnused.

@@ -125,3 +125,38 @@ TEST(PaintstrokesValidation, NormalsAreNormalisedAndZeroStaysZero) {
 
 }  // namespace
 }  // namespace bake::paintstrokes
+
+namespace bake::paintstrokes {
+namespace {
+
+StrokeStyle styleNamed(const std::string& name) {
+  StrokeStyle style;
+  style.name = name;
+  return style;
+}
+
+TEST(PaintstrokesStyles, UnusedStylesAreDroppedAndTheStrokesRenumbered) {
+  StrokeSet set = twoStrokes();
+  set.styles = {styleNamed("a"), styleNamed("b"), styleNamed("c"), styleNamed("d")};
+  set.strokes[0].style = 3;
+  set.strokes[1].style = 1;
+  EXPECT_EQ(unusedStyles(set), (std::vector<std::string>{"a", "c"}));
+  EXPECT_EQ(dropUnusedStyles(set), (std::vector<std::string>{"a", "c"}));
+  ASSERT_EQ(set.styles.size(), 2u);
+  EXPECT_EQ(set.styles[0].name, "b");
+  EXPECT_EQ(set.styles[1].name, "d");
+  EXPECT_EQ(set.strokes[0].style, 1u);  // "d"
+  EXPECT_EQ(set.strokes[1].style, 0u);  // "b"
+  EXPECT_TRUE(dropUnusedStyles(set).empty());
+}
+
+TEST(PaintstrokesStyles, ASetWithoutStrokesKeepsItsFirstStyle) {
+  StrokeSet set;
+  set.styles = {styleNamed("only"), styleNamed("other")};
+  EXPECT_EQ(dropUnusedStyles(set), (std::vector<std::string>{"other"}));
+  ASSERT_EQ(set.styles.size(), 1u);
+  EXPECT_EQ(set.styles[0].name, "only");
+}
+
+}  // namespace
+}  // namespace bake::paintstrokes

@@ -51,6 +51,34 @@ std::string argumentAfter(const Step& step, const std::string& flag) {
   return found == step.arguments.end() || found + 1 == step.arguments.end() ? "" : *(found + 1);
 }
 
+TEST(PipePlan, PaintstrokesLeaveOutUnreadShadowsAndUnusedStyles) {
+  const Plan plan = planOf(exampleScene("paintstrokes"));
+  EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"reeds: self-shadowing table", "reeds: style 'dry'"}));
+  const Step& reeds = stepOf(plan, "strokebake:reeds");
+  EXPECT_TRUE(hasArgument(reeds, "--no-shadows"));
+  EXPECT_TRUE(hasArgument(reeds, "--drop-unused-styles"));
+  EXPECT_EQ(argumentAfter(reeds, "-o"), (kOut / "reeds.paintstrokes.glb").string());
+  // The fur's light direction as strokebake reads it; its one style cannot be left out.
+  const Step& fur = stepOf(plan, "strokebake:fur");
+  EXPECT_EQ(argumentAfter(fur, "--light-dir"), "0.4,0.8,0.45");
+  EXPECT_FALSE(hasArgument(fur, "--no-shadows"));
+  EXPECT_FALSE(hasArgument(fur, "--drop-unused-styles"));
+  // --keep-unused bakes everything.
+  const Plan full = planOf(exampleScene("paintstrokes"), true);
+  EXPECT_TRUE(full.leftOut.empty());
+  EXPECT_FALSE(hasArgument(stepOf(full, "strokebake:reeds"), "--no-shadows"));
+  EXPECT_FALSE(hasArgument(stepOf(full, "strokebake:reeds"), "--drop-unused-styles"));
+}
+
+TEST(PipePlan, PaintstrokeLightDirectionsMustBeTriples) {
+  Scene scene = exampleScene("paintstrokes");
+  scene.objects[0].options["lightDirections"] = json::array({json::array({0, 1})});
+  const Result<Plan> plan = makePlan(scene, {kOut, false});
+  ASSERT_FALSE(plan.isOk());
+  EXPECT_NE(plan.status().describe().find("lightDirections"), std::string::npos) << plan.status().describe();
+  EXPECT_NE(plan.status().describe().find("object \"fur\""), std::string::npos) << plan.status().describe();
+}
+
 TEST(PipePlan, GeodesicBakesOnlyTheFieldTheMaterialReads) {
   const Plan plan = planOf(exampleScene("geodesic"));
   EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"pretzel: field 'right tip'", "pretzel: field 'rims'"}));

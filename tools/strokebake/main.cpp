@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   app.add_option("--shadow-minimum", settings.shadow.minimum, "Reflectance scale of a point the light cannot reach, [0, 1]")
       ->default_str(std::to_string(settings.shadow.minimum));
   app.add_flag("--no-shadows{false}", settings.shadow.enabled, "Bake no shadow table (strokes unshadowed)");
+  app.add_flag("--drop-unused-styles", settings.dropUnusedStyles,
+               "Pack only the styles some stroke uses (the report's stylesDropped names the others)");
   GrowSettings& grow = settings.grow;
   auto* growGroup = app.add_option_group("grow", "Growing strokes on a mesh (when INPUT is a mesh)");
   growGroup->add_option("--count", grow.count, "Strokes to grow")->default_str(std::to_string(grow.count));
