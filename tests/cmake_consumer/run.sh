@@ -1,7 +1,7 @@
 #!/bin/bash
 # The CTest test cmake_consumer: installs the tools and the BakeTools CMake package from a build tree
 # into a temporary prefix, builds the consumer project (tests/cmake_consumer) against it with Ninja,
-# and checks the incremental builds the depfiles make possible:
+# checks that an installed tool loads the installed image codec module, and checks the incremental builds the depfiles make possible:
 #   1. the first build bakes both assets;
 #   2. a second build has nothing to do (`ninja -n` says "no work to do") and bakes nothing;
 #   3. touching the groove scene (the INPUT) re-bakes only that asset;
@@ -21,6 +21,14 @@ for tool in groovebake geobake; do
 done
 [ -f "$work/prefix/lib/cmake/BakeTools/BakeToolsConfig.cmake" ] || fail "no BakeToolsConfig.cmake installed"
 [ -f "$work/prefix/lib/cmake/BakeTools/BakeToolsConfigVersion.cmake" ] || fail "no BakeToolsConfigVersion.cmake installed"
+# The image codec module is installed with the tools, and an installed tool loads that copy (not the
+# build tree's) the first time it writes an image.
+codec=$(find "$work/prefix" -name libbake_image_oiio.so | head -n 1)
+[ -n "$codec" ] || fail "cmake --install did not install the image codec module"
+LD_DEBUG=files "$work/prefix/bin/bakeshape" glaze --resolution 16 -o "$work/pattern.png" 2> "$work/loads.log" ||
+  fail "the installed bakeshape cannot write a PNG"
+grep -q "file=$work/prefix/bin/../lib[^ ]*/bake/libbake_image_oiio.so .*dynamically loaded" "$work/loads.log" ||
+  fail "the installed bakeshape did not load the installed image codec ($codec)"
 
 cp -r "$source/tests/cmake_consumer" "$work/src"
 cmake -S "$work/src" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" ||
