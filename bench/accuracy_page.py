@@ -17,7 +17,7 @@ import os
 import statistics
 import sys
 
-SECTIONS = ["geodesic", "revolution", "groove", "groove-bake", "tam", "stroke", "paintstrokes", "resources"]
+SECTIONS = ["geodesic", "revolution", "groove", "groove-bake", "tam", "stroke", "paintstrokes", "resources", "startup"]
 
 
 class Missing(Exception):
@@ -506,6 +506,34 @@ def resources(d, run):
     return "\n\n".join(out), []
 
 
+STARTUP_GOAL_MS = 50
+
+
+def startup(d, run):
+    rows = read_csv(d, "startup.csv")
+    out = []
+    out.append(
+        "Start-up of every tool, whole process: the median wall time of repeated runs of `--version` "
+        "and `--help`, of one small image job (which loads the image codec module, OpenImageIO), and of "
+        "peers in the same run. What a build system pays per call before any work.")
+    peers = [num(r["median_ms"]) for r in rows if r["group"] == "peer" and "oiiotool" in r["command"]]
+    oiiotool = peers[0] if peers else None
+    body = []
+    for r in rows:
+        ratio = fmt(num(r["median_ms"]) / oiiotool) if oiiotool else "-"
+        body.append([f"`{r['command']}`", r["group"], r["runs"], fmt(num(r["median_ms"])), fmt(num(r["min_ms"])),
+                     fmt(num(r["max_ms"])), ratio])
+    out.append(table(["command", "group", "runs", "median ms", "min ms", "max ms", "/ oiiotool"], body))
+    versions = [r for r in rows if r["group"] == "ours" and r["command"].endswith("--version")]
+    if not versions:
+        raise ValueError("startup.csv has no `--version` rows")
+    slowest = max(versions, key=lambda r: num(r["median_ms"]))
+    met = all(num(r["median_ms"]) <= STARTUP_GOAL_MS for r in versions)
+    out.append(f"Goal: every tool's `--version` within {STARTUP_GOAL_MS} ms: **{'met' if met else 'not met'}** "
+               f"(slowest `{slowest['command']}`, {fmt(num(slowest['median_ms']))} ms).")
+    return "\n\n".join(out), []
+
+
 TITLES = {
     "geodesic": ("`geobake`: geodesic distance, error against time", geodesic),
     "revolution": ("`revolbake`: revolution mapping, ray-march error against time; EDT", revolution),
@@ -515,6 +543,7 @@ TITLES = {
     "stroke": ("`tambake` strokes: rasterisation error against time", stroke),
     "paintstrokes": ("`strokebake` paintstrokes: polygons against image error, against fixed tubes", paintstrokes),
     "resources": ("Resources: peak memory and time of every tool", resources),
+    "startup": ("Start-up: every tool's whole-process start against peers", startup),
 }
 
 

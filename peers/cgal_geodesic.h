@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake::peers {
 

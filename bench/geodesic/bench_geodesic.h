@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
-#include "geodesic/surface.h"
+#include "bake/core/status.h"
+#include "bake/geodesic/surface.h"
 
 namespace bake::bench {
 

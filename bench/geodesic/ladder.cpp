@@ -9,7 +9,7 @@
 
 #include "bench_geodesic.h"
 #include "geodesic/farthest.h"
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake::bench {
 namespace {

@@ -5,11 +5,11 @@
 
 #include <GL/glcorearb.h>
 
-#include "core/diagnostics.h"
+#include "bake/core/diagnostics.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "grooves/package/package.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "render/grooves.h"
 #include "render/target.h"
 #include "scene/scene.h"

@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <memory>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "grooves/bake/grid.h"
 #include "grooves/oracle/render.h"
 #include "grooves/input/scene.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 
 namespace bake::grooves {
 

@@ -20,7 +20,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/parallel.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace {
 

@@ -20,8 +20,8 @@
 #include <CLI/CLI.hpp>
 
 #include "revolution/march.h"
-#include "revolution/profile.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/profile.h"
+#include "bake/revolution/shape_map.h"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include <map>
 #include <vector>
 
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "core/output_plan.h"
 #include "core/temporaries.h"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

@@ -1,4 +1,4 @@
-#include "core/cache.h"
+#include "bake/core/cache.h"
 
 #include <stdlib.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <map>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/hash.h"
 #include "core/json_read.h"
 
@@ -89,9 +89,8 @@ std::string lowercase(std::string text) {
 Result<json> readManifest(const fs::path& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
   const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  BAKE_RETURN_IF_ERROR(checkJsonDepth(text, path.string()));
-  json manifest = json::parse(text.begin(), text.end(), nullptr, false);
-  if (manifest.is_discarded() || !manifest.is_object()) return invalidInput("not JSON", {path.string(), ""});
+  BAKE_ASSIGN_OR_RETURN(json manifest, parseJsonText(text, path.string()));
+  if (!manifest.is_object()) return invalidInput("not a JSON object", {path.string(), ""});
   return manifest;
 }
 

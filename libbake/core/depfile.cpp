@@ -1,6 +1,6 @@
 #include "core/depfile.h"
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/build_syntax.h"
 
 namespace bake {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

@@ -1,4 +1,4 @@
-#include "core/diagnostics.h"
+#include "bake/core/diagnostics.h"
 
 namespace bake {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/input_file.h"
+#include "bake/core/input_file.h"
 
 namespace bake {
 

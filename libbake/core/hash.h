@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

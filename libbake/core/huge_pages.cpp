@@ -1,5 +1,5 @@
 // Re-execution with glibc's huge-page tunable (huge_pages.h).
-#include "core/huge_pages.h"
+#include "bake/core/huge_pages.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "core/input_file.h"
+#include "bake/core/input_file.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -11,9 +11,9 @@
 #include <memory>
 #include <mutex>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/hash.h"
-#include "core/limits.h"
+#include "bake/core/limits.h"
 
 namespace bake {
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 #include "core/json_read.h"
 
-#include "core/input_file.h"
+#include "bake/core/input_file.h"
 
 namespace bake {
 

@@ -1,4 +1,4 @@
-#include "core/limits.h"
+#include "bake/core/limits.h"
 
 #include <cerrno>
 #include <cstdlib>

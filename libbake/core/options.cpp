@@ -1,6 +1,6 @@
-#include "core/options.h"
+#include "bake/core/options.h"
 
-#include "core/version.h"
+#include "bake/core/version.h"
 
 namespace bake {
 

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <optional>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/build_syntax.h"
 
 namespace bake {

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "core/cache.h"
-#include "core/options.h"
-#include "core/status.h"
+#include "bake/core/cache.h"
+#include "bake/core/options.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

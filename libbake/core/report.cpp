@@ -1,10 +1,10 @@
-#include "core/report.h"
+#include "bake/core/report.h"
 
 #include <bake_formats/report.h>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/hash.h"
-#include "core/input_file.h"
+#include "bake/core/input_file.h"
 
 namespace bake {
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "core/session.h"
+#include "bake/core/session.h"
 
 #include <cstdio>
 #include <set>

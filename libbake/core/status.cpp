@@ -1,4 +1,4 @@
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

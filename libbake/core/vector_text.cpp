@@ -1,4 +1,4 @@
-#include "core/vector_text.h"
+#include "bake/core/vector_text.h"
 
 #include <cctype>
 #include <cmath>

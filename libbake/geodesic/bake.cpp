@@ -1,15 +1,15 @@
 // geobake's run: read, clean, resolve sources, solve, verify, write; each stage timed in the report.
-#include "geodesic/bake.h"
+#include "bake/geodesic/bake.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "core/limits.h"
-#include "core/session.h"
+#include "bake/core/limits.h"
+#include "bake/core/session.h"
 #include "geodesic/bake_package.h"
 #include "geodesic/bake_stages.h"
-#include "io/glb.h"
-#include "io/mesh.h"
+#include "bake/io/glb.h"
+#include "bake/io/mesh.h"
 
 namespace bake::geodesic {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "geodesic/bake_stages.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 
 namespace bake::geodesic {
 

@@ -6,7 +6,7 @@
 
 #include "bake_formats/geodesic.h"
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
 #include "geodesic/bake_stages.h"

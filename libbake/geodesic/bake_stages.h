@@ -9,12 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/diagnostics.h"
-#include "core/status.h"
-#include "geodesic/bake.h"
-#include "geodesic/sources.h"
-#include "geodesic/surface.h"
-#include "io/mesh.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
+#include "bake/geodesic/bake.h"
+#include "bake/geodesic/sources.h"
+#include "bake/geodesic/surface.h"
+#include "bake/io/mesh.h"
 
 namespace bake::geodesic {
 

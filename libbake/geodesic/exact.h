@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "geodesic/sources.h"
-#include "geodesic/surface.h"
+#include "bake/geodesic/sources.h"
+#include "bake/geodesic/surface.h"
 
 namespace bake::geodesic {
 

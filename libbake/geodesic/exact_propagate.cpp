@@ -12,17 +12,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "bake/core/vec.h"
+
 namespace bake::geodesic::exact {
 namespace {
 
 constexpr double kRelativeTolerance = 1e-10;
 
-Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3d& a) { return std::sqrt(dot(a, a)); }
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using vec::cross;
+using vec::dot;
+using vec::sub;
 
 }  // namespace
 
@@ -52,13 +51,13 @@ void Propagator::buildFaceSides() {
       const bool firstIsCornerJ = tri[j] == a;
       s.edgeToFirst = firstIsCornerJ ? te[(j + 2) % 3] : te[(j + 1) % 3];
       s.edgeToSecond = firstIsCornerJ ? te[(j + 1) % 3] : te[(j + 2) % 3];
-      const Vec3d ab = minus(surface_.positions[b], surface_.positions[a]);
-      const Vec3d ac = minus(surface_.positions[s.vertex], surface_.positions[a]);
-      const double length = norm(ab);
+      const Vec3d ab = sub(surface_.positions[b], surface_.positions[a]);
+      const Vec3d ac = sub(surface_.positions[s.vertex], surface_.positions[a]);
+      const double length = vec::length(ab);
       if (length > 0.0) {
-        s.third = {dot(ac, ab) / length, norm(cross(ab, ac)) / length};
+        s.third = {dot(ac, ab) / length, vec::length(cross(ab, ac)) / length};
       } else {
-        s.third = {0.0, norm(ac)};
+        s.third = {0.0, vec::length(ac)};
       }
     }
   }
@@ -69,9 +68,9 @@ void Propagator::markEmittingVertices() {
   for (std::uint32_t f = 0; f < surface_.triangleCount(); ++f) {
     for (int i = 0; i < 3; ++i) {
       const Vec3d& p = surface_.positions[surface_.triangles[f][i]];
-      const Vec3d u = minus(surface_.positions[surface_.triangles[f][(i + 1) % 3]], p);
-      const Vec3d v = minus(surface_.positions[surface_.triangles[f][(i + 2) % 3]], p);
-      angle[surface_.triangles[f][i]] += std::atan2(norm(cross(u, v)), dot(u, v));
+      const Vec3d u = sub(surface_.positions[surface_.triangles[f][(i + 1) % 3]], p);
+      const Vec3d v = sub(surface_.positions[surface_.triangles[f][(i + 2) % 3]], p);
+      angle[surface_.triangles[f][i]] += std::atan2(vec::length(cross(u, v)), dot(u, v));
     }
   }
   const double zeroLength = kRelativeTolerance * surface_.diagonal;
@@ -182,7 +181,7 @@ void Propagator::addSource(const SurfacePoint& point) {
   const Vec3d p = point.position(surface_);
   for (int i = 0; i < 3; ++i) {
     const std::uint32_t corner = surface_.triangles[f][i];
-    relaxVertex(corner, norm(minus(surface_.positions[corner], p)));
+    relaxVertex(corner, vec::length(sub(surface_.positions[corner], p)));
   }
   // One window per edge of the face, the source unfolded into that edge's frame from its weights.
   for (int j = 0; j < 3; ++j) {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "geodesic/fmm.h"
-#include "geodesic/sources.h"
+#include "bake/geodesic/sources.h"
 
 namespace bake::geodesic {
 namespace {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <span>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake::geodesic {
 

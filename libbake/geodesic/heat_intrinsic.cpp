@@ -18,6 +18,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "bake/core/vec.h"
+
 namespace bake::geodesic {
 namespace {
 
@@ -33,11 +35,9 @@ struct Side {
 // the face's edge 2 - s, edge i joining corners i and i + 1).
 constexpr std::array<int, 3> kReversedTail{0, 2, 1};
 
-Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using vec::cross;
+using vec::dot;
+using vec::sub;
 
 // Faces around edge e ordered by the angle of their third corner about the axis a -> b.
 std::vector<std::uint32_t> facesInCyclicOrder(const Surface& surface, std::uint32_t e) {

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geodesic/surface.h"
+#include "bake/geodesic/surface.h"
 
 namespace bake::geodesic {
 

@@ -25,7 +25,7 @@
 
 #include <Eigen/Dense>
 
-#include "geodesic/heat.h"
+#include "bake/geodesic/heat.h"
 #include "geodesic/heat_cholmod.h"
 #include "geodesic/heat_intrinsic.h"
 #include "geodesic/heat_operators.h"

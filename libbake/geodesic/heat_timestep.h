@@ -3,7 +3,7 @@
 // meshes; heatTimeStep() bounds t from below by the surface's geodesic extent (see the .cpp).
 #pragma once
 
-#include "geodesic/surface.h"
+#include "bake/geodesic/surface.h"
 
 namespace bake::geodesic {
 

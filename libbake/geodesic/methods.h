@@ -9,4 +9,4 @@
 
 #include "geodesic/exact.h"
 #include "geodesic/fmm.h"
-#include "geodesic/heat.h"
+#include "bake/geodesic/heat.h"

@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 
 namespace bake::geodesic {
 

@@ -157,9 +157,6 @@ Status mergeGeodesicRoot(json& assembled, const glb::Package& package, const Obj
   return {};
 }
 
-ExtensionReferences noReferences(const json&) { return {}; }
-void nothingToRenumber(json&, const Renumbering&) {}
-
 }  // namespace
 }  // namespace bake::geodesic::assembly
 
@@ -170,8 +167,6 @@ const pipe::detail::TechniqueRules& assembleRules() {
   static const TechniqueRules rules{.extension = fmt::kExtension,
                                     .blobAlignment = 16,
                                     .adapt = adaptGeodesic,
-                                    .references = noReferences,
-                                    .renumber = nothingToRenumber,
                                     .mergeRoot = mergeGeodesicRoot};
   return rules;
 }

@@ -4,21 +4,23 @@
 // and edge regions.
 #include "geodesic/snap.h"
 
+#include "bake/core/vec.h"
+
 #include <cmath>
 #include <limits>
 
 namespace bake::geodesic {
 namespace {
 
-Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using vec::dot;
+using vec::sub;
 
 // Barycentric weights of the point of triangle (a, b, c) nearest to p.
 std::array<double, 3> closestWeights(const Vec3d& p, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
-  const Vec3d ab = minus(b, a), ac = minus(c, a), ap = minus(p, a);
+  const Vec3d ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
-  const Vec3d bp = minus(p, b);
+  const Vec3d bp = sub(p, b);
   const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
   const double vc = d1 * d4 - d3 * d2;
@@ -26,7 +28,7 @@ std::array<double, 3> closestWeights(const Vec3d& p, const Vec3d& a, const Vec3d
     const double v = d1 / (d1 - d3);
     return {1.0 - v, v, 0.0};
   }
-  const Vec3d cp = minus(p, c);
+  const Vec3d cp = sub(p, c);
   const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
   const double vb = d5 * d2 - d1 * d6;
@@ -46,14 +48,14 @@ std::array<double, 3> closestWeights(const Vec3d& p, const Vec3d& a, const Vec3d
 }
 
 double squaredDistance(const Vec3d& a, const Vec3d& b) {
-  const Vec3d d = minus(a, b);
+  const Vec3d d = sub(a, b);
   return dot(d, d);
 }
 
 }  // namespace
 
 SnappedPoint snapToSurface(const Surface& surface, const Vec3d& query) {
-  const Vec3d p = minus(query, surface.origin);
+  const Vec3d p = sub(query, surface.origin);
   SnappedPoint best;
   double bestSquared = std::numeric_limits<double>::infinity();
   for (std::uint32_t t = 0; t < surface.triangleCount(); ++t) {

@@ -1,5 +1,5 @@
 // Source points: construction helpers shared by the solvers and the bake.
-#include "geodesic/sources.h"
+#include "bake/geodesic/sources.h"
 
 namespace bake::geodesic {
 

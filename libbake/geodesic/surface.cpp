@@ -1,7 +1,7 @@
 // Building the geodesic surface: weld, drop faces with a repeated corner and repeated faces, then
 // derive edges, incidence lists, components and scale measures. Vertex indices of the input survive
 // through vertexMap so fields can be written back per input vertex.
-#include "geodesic/surface.h"
+#include "bake/geodesic/surface.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // stage is timed in the report, and the report states the quality figures next to their targets:
 // tone error against the style's target tones, nesting violations against zero (nesting holds by
 // construction), ink variation and low-frequency power against a uniform ink distribution.
-#include "hatching/bake.h"
+#include "bake/hatching/bake.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +13,10 @@
 #include <sstream>
 
 #include "bake_formats/tam.h"
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "core/path.h"
 #include "core/progress.h"
-#include "core/session.h"
+#include "bake/core/session.h"
 #include "hatching/bake_stages.h"
 
 namespace bake::hatching {

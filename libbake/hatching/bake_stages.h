@@ -11,14 +11,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/report.h"
-#include "io/glb.h"
+#include "bake/core/report.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
-#include "io/mesh.h"
-#include "hatching/bake.h"
+#include "bake/io/mesh.h"
+#include "bake/hatching/bake.h"
 #include "hatching/build.h"
 #include "hatching/quality.h"
-#include "hatching/style.h"
+#include "bake/hatching/style.h"
 
 namespace bake::hatching {
 

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "bake_formats/tam.h"
+#include "core/json_read.h"
 #include "hatching/bake_stages.h"
 
 namespace bake::hatching {
@@ -124,7 +125,7 @@ Status dropFinestLevels(ktx2::Texture& texture, int count) {
   texture.width = texture.levelWidth(std::uint32_t(count));
   texture.height = texture.levelHeight(std::uint32_t(count));
   texture.levels.erase(texture.levels.begin(), texture.levels.begin() + count);
-  json metadata = json::parse(texture.text(fmt::kMetadataKey));
+  BAKE_ASSIGN_OR_RETURN(json metadata, parseJsonText(texture.text(fmt::kMetadataKey), "the TAM's metadata"));
   metadata["skippedLevels"] = count;
   metadata["strokeLevels"] = std::max(0, metadata["strokeLevels"].get<int>() - count);
   texture.setText(fmt::kMetadataKey, metadata.dump());

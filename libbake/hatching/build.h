@@ -18,9 +18,9 @@
 #include <memory>
 #include <vector>
 
-#include "core/status.h"
-#include "stroke/paintstroke.h"
-#include "hatching/style.h"
+#include "bake/core/status.h"
+#include "bake/stroke/paintstroke.h"
+#include "bake/hatching/style.h"
 
 namespace bake::hatching {
 

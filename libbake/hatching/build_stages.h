@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "stroke/paintstroke.h"
-#include "hatching/style.h"
+#include "bake/stroke/paintstroke.h"
+#include "bake/hatching/style.h"
 
 namespace bake::hatching::detail {
 

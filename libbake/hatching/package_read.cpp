@@ -94,7 +94,9 @@ Status checkTam(const ktx2::Texture& tam, const HatchingParams& p, const Locatio
   const std::string metadata = tam.text(fmt::kMetadataKey);
   if (!metadata.empty()) {
     BAKE_RETURN_IF_ERROR(checkJsonDepth(metadata, where.file).atElement(name + " metadata"));
-    const nlohmann::json meta = nlohmann::json::parse(metadata, nullptr, false);
+    // The metadata is advisory: text that is not JSON leaves nothing to compare.
+    const Result<nlohmann::json> parsed = parseJsonText(metadata, where.file);
+    const nlohmann::json meta = parsed.isOk() ? parsed.value() : nlohmann::json();
     if (meta.is_object() && meta.contains("tones") && meta["tones"].is_array()) {
       const nlohmann::json& tones = meta["tones"];
       bool same = tones.size() == p.tones.size();

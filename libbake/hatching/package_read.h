@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
 
 namespace bake::hatching {

@@ -8,7 +8,7 @@
 
 #include "bake_formats/scene.h"
 #include "core/json_keys.h"
-#include "hatching/style.h"
+#include "bake/hatching/style.h"
 
 namespace bake::hatching {
 namespace {

@@ -8,7 +8,7 @@
 // darkest layer short of solid ink so its strokes still read as strokes. The stroke image of the
 // `image` kind is resolved against the style file's folder and read as ink alpha: its alpha channel
 // when it has one, else the darkness (1 - grey) of its first channels.
-#include "hatching/style.h"
+#include "bake/hatching/style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,10 +20,10 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/tam.h"
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 
 namespace bake::hatching {
 namespace {

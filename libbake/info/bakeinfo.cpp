@@ -1,4 +1,4 @@
-#include "info/bakeinfo.h"
+#include "bake/info/bakeinfo.h"
 
 #include "info/describe.h"
 

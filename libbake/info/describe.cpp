@@ -11,8 +11,8 @@
 #include <cstring>
 #include <sstream>
 
-#include "core/atomic_file.h"
-#include "io/glb.h"
+#include "bake/core/atomic_file.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
 #include "techniques/registry.h"
 

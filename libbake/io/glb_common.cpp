@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 
 namespace bake::glb {
 

@@ -11,11 +11,11 @@
 #include <cstring>
 #include <limits>
 
-#include "core/atomic_file.h"
-#include "core/input_file.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/input_file.h"
 #include "core/json_read.h"
 #include "io/draco_codec.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 
 namespace bake::glb {
 namespace {
@@ -572,9 +572,8 @@ Result<Package> toPackage(const Document& doc) {
 }
 
 Result<json> parseJson(const std::string& text, const std::string& name) {
-  BAKE_RETURN_IF_ERROR(checkJsonDepth(text, name));
-  json root = json::parse(text, nullptr, false);
-  if (root.is_discarded() || !root.is_object()) return invalidInput("the glTF JSON is not a valid JSON object", {name, "JSON"});
+  BAKE_ASSIGN_OR_RETURN(json root, parseJsonText(text, name, "the glTF JSON is not valid JSON"));
+  if (!root.is_object()) return invalidInput("the glTF JSON is not a JSON object", {name, "JSON"});
   return root;
 }
 

@@ -5,8 +5,8 @@
 #include <array>
 #include <functional>
 
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 
 namespace bake::glb {
 

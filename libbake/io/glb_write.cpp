@@ -11,10 +11,10 @@
 #include <cstring>
 #include <set>
 
-#include "core/atomic_file.h"
-#include "core/version.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/version.h"
 #include "io/draco_codec.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 
 namespace bake::glb {
 namespace {

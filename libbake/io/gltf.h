@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "core/status.h"
-#include "io/mesh.h"
+#include "bake/core/status.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 

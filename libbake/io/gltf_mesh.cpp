@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "io/glb_scene.h"
 #include "io/gltf.h"
 #include "io/mesh_place.h"

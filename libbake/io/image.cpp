@@ -5,10 +5,10 @@
 // target (with the same extension, since OIIO chooses its writer by name), which is flushed and
 // renamed over the target only when complete. Images embedded in packages are read from memory where
 // the format's reader takes it, else through a private temporary file, with the same conversions.
-#include "io/image.h"
+#include "bake/io/image.h"
 
-#include "core/atomic_file.h"
-#include "core/limits.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/limits.h"
 #include "core/output_plan.h"
 #include "core/path.h"
 #include "core/private_copy.h"

@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/status.h"
-#include "io/image.h"
+#include "bake/core/status.h"
+#include "bake/io/image.h"
 
 namespace bake {
 

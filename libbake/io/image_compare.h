@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "core/status.h"
-#include "io/image.h"
+#include "bake/core/status.h"
+#include "bake/io/image.h"
 
 namespace bake {
 

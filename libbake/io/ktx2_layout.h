@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bake_formats/ktx2.h"
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "io/ktx2.h"
 
 namespace bake::ktx2::layout {

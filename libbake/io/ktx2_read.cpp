@@ -14,8 +14,8 @@
 #include <memory>
 
 #include "bake_formats/ktx2.h"
-#include "core/atomic_file.h"
-#include "core/limits.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/limits.h"
 #include "io/ktx2.h"
 #include "io/ktx2_layout.h"
 

@@ -13,8 +13,8 @@
 #include <limits>
 
 #include "bake_formats/ktx2.h"
-#include "core/atomic_file.h"
-#include "core/version.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/version.h"
 #include "io/ktx2.h"
 #include "io/ktx2_layout.h"
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 

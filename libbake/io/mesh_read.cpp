@@ -22,7 +22,7 @@
 //   and skips triangles that collapse by it, which we count as removed degenerate faces.
 // - Element names in errors: "line N" (1-based) for text files, "face N" / "triangle N" / "vertex N"
 //   (0-based, in file order) otherwise.
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/Options.hh>
@@ -39,9 +39,9 @@
 #include <streambuf>
 #include <string_view>
 
-#include "core/atomic_file.h"
-#include "core/input_file.h"
-#include "core/limits.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/input_file.h"
+#include "bake/core/limits.h"
 #include "core/path.h"
 #include "core/private_copy.h"
 #include "io/gltf.h"

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake::meshscan {
 

@@ -21,7 +21,7 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "io/svg_path.h"
 
 namespace bake::svg {

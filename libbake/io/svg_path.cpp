@@ -24,7 +24,7 @@ struct Tokens {
     skip();
     return i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '-' || s[i] == '+' || s[i] == '.');
   }
-  std::string problem;  // why the last number failed, for the message
+  std::string problem = {};  // why the last number failed, for the message
   bool number(double& out) {
     if (!atNumber()) return expected();
     const char* begin = s.c_str() + i;

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "io/planar_path.h"
 
 namespace bake::svg {

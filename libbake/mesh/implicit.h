@@ -8,7 +8,7 @@
 #include <array>
 #include <functional>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 

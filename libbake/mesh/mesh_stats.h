@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 

@@ -1,7 +1,7 @@
 // Procedural example images. Periodicity comes from construction: sines with whole cycles per tile,
 // and cellular dimples whose feature points are looked up with wrapped cell indices, so the left and
 // right (top and bottom) edges continue each other.
-#include "mesh/patterns.h"
+#include "bake/mesh/patterns.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,15 +1,15 @@
 // bakeshape's run: generate, check, encode by extension, commit atomically with the usual report.
-#include "mesh/shape_tool.h"
+#include "bake/mesh/shape_tool.h"
 
 #include <cstdio>
 #include <string>
 
 #include "core/path.h"
-#include "core/session.h"
-#include "io/glb.h"
-#include "io/image.h"
+#include "bake/core/session.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
 #include "mesh/mesh_stats.h"
-#include "mesh/patterns.h"
+#include "bake/mesh/patterns.h"
 
 namespace bake {
 namespace {

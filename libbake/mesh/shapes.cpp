@@ -1,6 +1,6 @@
 // Signed distance fields of the generated shapes, blended with a polynomial smooth minimum (Quilez,
 // "smooth minimum") so the rings of the pretzel join without creases.
-#include "mesh/shapes.h"
+#include "bake/mesh/shapes.h"
 
 #include <algorithm>
 #include <cmath>

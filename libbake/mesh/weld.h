@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 

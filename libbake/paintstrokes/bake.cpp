@@ -4,17 +4,17 @@
 // the untrusting reader, and stage the output so it is committed only when everything succeeded. The
 // report states the quantisation errors measured against the input next to their bounds, the repairs,
 // the counts and the stage times.
-#include "paintstrokes/bake.h"
+#include "bake/paintstrokes/bake.h"
 
 #include <cmath>
 #include <map>
 #include <optional>
 
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "core/path.h"
 #include "core/progress.h"
-#include "core/session.h"
-#include "paintstrokes/generators.h"
+#include "bake/core/session.h"
+#include "bake/paintstrokes/generators.h"
 #include "paintstrokes/input.h"
 #include "paintstrokes/package.h"
 #include "paintstrokes/shadow.h"

@@ -9,19 +9,18 @@
 #include <numbers>
 #include <random>
 
-#include "paintstrokes/model.h"
+#include "bake/core/vec.h"
+#include "bake/paintstrokes/model.h"
 
 namespace bake::paintstrokes::detail {
 
-inline Vec3d add(const Vec3d& a, const Vec3d& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline Vec3d scale(const Vec3d& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+using vec::add;
+using vec::cross;
+using vec::dot;
+using vec::length;
+using vec::scale;
+using vec::sub;
 inline Vec3d mul(const Vec3d& a, const Vec3d& b) { return {a[0] * b[0], a[1] * b[1], a[2] * b[2]}; }
-inline double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double length(const Vec3d& a) { return std::sqrt(dot(a, a)); }
 inline Vec3d lerp(const Vec3d& a, const Vec3d& b, double t) { return add(a, scale(sub(b, a), t)); }
 // `a` scaled to unit length, or `fallback` when it is (nearly) zero or not finite.
 inline Vec3d normalized(const Vec3d& a, const Vec3d& fallback) {

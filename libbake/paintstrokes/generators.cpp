@@ -11,7 +11,7 @@
 
 #include "bake_formats/paintstrokes.h"
 #include "core/json_keys.h"
-#include "paintstrokes/generators.h"
+#include "bake/paintstrokes/generators.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "bake_formats/paintstrokes.h"
-#include "io/image.h"
-#include "io/mesh.h"
+#include "bake/io/image.h"
+#include "bake/io/mesh.h"
 #include "paintstrokes/generator_math.h"
-#include "paintstrokes/generators.h"
+#include "bake/paintstrokes/generators.h"
 
 namespace bake::paintstrokes {
 namespace {

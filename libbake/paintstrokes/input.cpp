@@ -8,8 +8,9 @@
 // follows the path, so the message names the stroke and control point where parsing stopped.
 //
 // CSV: one header row naming the columns, then one control point per row; consecutive rows with the
-// same stroke id form one stroke, in order. Numbers are read with strtod over the whole field, so
-// "nan" and "inf" are read (and refused by validation with their place) while "1.2.3" is an error here.
+// same stroke id form one stroke, in order; '#' starts a comment line. Lines, fields and numbers are
+// read as in every CSV we take (core/csv_read.h): "nan" and "inf" are read (and refused by validation
+// with their place) while "1.2.3" is an error here.
 #include "paintstrokes/input.h"
 
 #include <algorithm>
@@ -18,11 +19,12 @@
 #include <cstdlib>
 #include <map>
 
-#include "core/atomic_file.h"
-#include "core/input_file.h"
+#include "bake/core/atomic_file.h"
+#include "core/csv_read.h"
+#include "bake/core/input_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "bake_formats/paintstrokes.h"
 
 namespace bake::paintstrokes {
@@ -215,12 +217,9 @@ std::string pointElement(std::size_t stroke, std::size_t point) {
 
 Result<StrokeInput> parseStrokeJson(const std::string& text, const std::string& source) {
   BAKE_RETURN_IF_ERROR(checkJsonDepth(text, source));
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception&) {
-    return parseFailure(text, source);
-  }
+  Result<json> parsed = parseJsonText(text, source);
+  if (!parsed.isOk()) return parseFailure(text, source);  // names the stroke where parsing stopped
+  json doc = std::move(parsed).value();
   const Reader r{source};
   BAKE_RETURN_IF_ERROR(r.keys(doc, "", {"$schema", "description", "version", "units", "styles", "strokes", "generators"}));
   if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<std::int64_t>() != 1)
@@ -264,66 +263,28 @@ enum Column { kStroke, kX, kY, kZ, kRadius, kR, kG, kB, kOpacity, kReflectance, 
 constexpr const char* kColumnNames[kColumnCount] = {"stroke", "x",  "y",  "z",  "radius", "r",     "g",    "b",
                                                     "opacity", "reflectance", "nx", "ny", "nz", "depth", "style"};
 
-std::string trim(const std::string& s) {
-  const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return fields;
-}
-
-bool parseNumber(const std::string& field, double& out) {
-  if (field.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(field.c_str(), &end);
-  // Overflow gives +-HUGE_VAL with ERANGE: kept as infinity, which validation refuses with its place.
-  return *end == '\0';
-}
-
-std::vector<std::string> splitLines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    lines.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-  return lines;
-}
-
 }  // namespace
 
 Result<StrokeInput> parseStrokeCsv(const std::string& text, const std::string& source) {
   const Reader r{source};
-  const std::vector<std::string> lines = splitLines(text);
+  const std::vector<CsvLine> lines = splitCsv(text, CsvComments::LineStart);
   std::size_t headerLine = 0;
-  while (headerLine < lines.size() && (trim(lines[headerLine]).empty() || trim(lines[headerLine])[0] == '#')) ++headerLine;
+  while (headerLine < lines.size() && lines[headerLine].fields.empty()) ++headerLine;
   if (headerLine >= lines.size()) return r.fail("", "no header row (expected at least stroke,x,y,z,radius)");
   std::array<int, kColumnCount> column;
   column.fill(-1);
-  const std::vector<std::string> header = splitFields(lines[headerLine]);
+  const std::vector<std::string>& header = lines[headerLine].fields;
+  const std::string headerElement = "line " + std::to_string(lines[headerLine].number);
   for (std::size_t c = 0; c < header.size(); ++c) {
     const auto* name = std::find(std::begin(kColumnNames), std::end(kColumnNames), header[c]);
-    const std::string element = "line " + std::to_string(headerLine + 1);
-    if (name == std::end(kColumnNames)) return r.fail(element, "unknown column \"" + header[c] + "\"");
-    if (column[name - std::begin(kColumnNames)] >= 0) return r.fail(element, "column \"" + header[c] + "\" appears twice");
+    if (name == std::end(kColumnNames)) return r.fail(headerElement, "unknown column \"" + header[c] + "\"");
+    if (column[name - std::begin(kColumnNames)] >= 0) return r.fail(headerElement, "column \"" + header[c] + "\" appears twice");
     column[name - std::begin(kColumnNames)] = int(c);
   }
   for (int k : {kStroke, kX, kY, kZ, kRadius})
-    if (column[k] < 0) return r.fail("line " + std::to_string(headerLine + 1), std::string("column \"") + kColumnNames[k] + "\" is missing");
+    if (column[k] < 0) return r.fail(headerElement, std::string("column \"") + kColumnNames[k] + "\" is missing");
   std::uint64_t rows = 0;
-  for (std::size_t l = headerLine + 1; l < lines.size(); ++l) rows += !trim(lines[l]).empty() && trim(lines[l])[0] != '#';
+  for (std::size_t l = headerLine + 1; l < lines.size(); ++l) rows += !lines[l].fields.empty();
   BAKE_RETURN_IF_ERROR(checkBudget(Budget::ControlPoints, rows, "control points", {source, ""}));
 
   StrokeInput input;
@@ -332,10 +293,9 @@ Result<StrokeInput> parseStrokeCsv(const std::string& text, const std::string& s
   std::map<std::string, std::size_t> seen;  // stroke id -> stroke index
   std::string currentId;
   for (std::size_t l = headerLine + 1; l < lines.size(); ++l) {
-    const std::string line = trim(lines[l]);
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> fields = splitFields(line);
-    const std::string lineElement = "line " + std::to_string(l + 1);
+    const std::vector<std::string>& fields = lines[l].fields;
+    if (fields.empty()) continue;
+    const std::string lineElement = "line " + std::to_string(lines[l].number);
     if (fields.size() != header.size())
       return r.fail(lineElement, std::to_string(fields.size()) + " fields, the header names " + std::to_string(header.size()));
     const std::string& id = fields[column[kStroke]];
@@ -353,7 +313,7 @@ Result<StrokeInput> parseStrokeCsv(const std::string& text, const std::string& s
     double values[kColumnCount] = {};
     for (int k = kX; k < kStyle; ++k) {
       if (column[k] < 0) continue;
-      if (!parseNumber(fields[column[k]], values[k]))
+      if (!parseCsvNumber(fields[column[k]], values[k]))
         return r.fail(element, std::string("column \"") + kColumnNames[k] + "\": \"" + fields[column[k]] + "\" is not a number");
     }
     p.position = {values[kX], values[kY], values[kZ]};
@@ -372,7 +332,7 @@ Result<StrokeInput> parseStrokeCsv(const std::string& text, const std::string& s
     if (column[kStyle] >= 0) {
       // A CSV defines no styles: a style column numbers default styles, created as they are named.
       double style = 0;
-      if (!parseNumber(fields[column[kStyle]], style) || style < 0 || style != std::floor(style) ||
+      if (!parseCsvNumber(fields[column[kStyle]], style) || style < 0 || style != std::floor(style) ||
           style >= format::paintstrokes::kMaxStyles)
         return r.fail(element, "style \"" + fields[column[kStyle]] + "\" is not an index from 0 to " +
                                    std::to_string(format::paintstrokes::kMaxStyles - 1));

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
-#include "paintstrokes/model.h"
+#include "bake/core/status.h"
+#include "bake/paintstrokes/model.h"
 
 namespace bake::paintstrokes {
 

@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/paintstrokes.h"
-#include "core/status.h"
-#include "io/glb.h"
-#include "paintstrokes/model.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
+#include "bake/paintstrokes/model.h"
 
 namespace bake::paintstrokes {
 

@@ -43,20 +43,6 @@ Status adaptPaintstrokes(glb::Package& package, const ObjectInput& input) {
   return {};
 }
 
-ExtensionReferences paintstrokeReferences(const json& extension) {
-  ExtensionReferences references;
-  const json& views = extension.value(fmt::kBufferViews, json::object());
-  for (const char* key : fmt::kArrayKeys)
-    if (views.contains(key)) references.blobs.push_back(indexAt(views, key));
-  return references;
-}
-
-void renumberPaintstrokes(json& extension, const Renumbering& renumbering) {
-  json& views = extension[fmt::kBufferViews];
-  for (const char* key : fmt::kArrayKeys)
-    if (views.contains(key)) views[key] = Renumbering::at(renumbering.blobs, indexAt(views, key));
-}
-
 }  // namespace
 }  // namespace bake::paintstrokes::assembly
 
@@ -67,8 +53,7 @@ const pipe::detail::TechniqueRules& assembleRules() {
   static const TechniqueRules rules{.extension = fmt::kExtension,
                                     .blobAlignment = fmt::kBufferAlignment,
                                     .adapt = adaptPaintstrokes,
-                                    .references = paintstrokeReferences,
-                                    .renumber = renumberPaintstrokes};
+                                    .bufferViews = {fmt::kBufferViews, fmt::kArrayKeys}};
   return rules;
 }
 

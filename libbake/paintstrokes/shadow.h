@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "paintstrokes/model.h"
+#include "bake/paintstrokes/model.h"
 
 namespace bake::paintstrokes {
 

@@ -25,7 +25,7 @@
 
 #include "bake_formats/paintstrokes.h"
 #include "paintstrokes/generator_math.h"
-#include "paintstrokes/generators.h"
+#include "bake/paintstrokes/generators.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostics.h"
-#include "core/limits.h"
-#include "core/status.h"
-#include "paintstrokes/model.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/limits.h"
+#include "bake/core/status.h"
+#include "bake/paintstrokes/model.h"
 
 namespace bake::paintstrokes {
 

@@ -39,6 +39,37 @@ int indexAt(const json& object, const char* key) {
   return object[key].get<int>();
 }
 
+ExtensionReferences BufferViewTable::references(const json& extension) const {
+  ExtensionReferences references;
+  if (!viewsKey) return references;
+  const json& views = extension.value(viewsKey, json::object());
+  for (const char* key : arrayKeys)
+    if (views.contains(key)) references.blobs.push_back(indexAt(views, key));
+  return references;
+}
+
+void BufferViewTable::renumber(json& extension, const Renumbering& renumbering) const {
+  if (!viewsKey || !extension.contains(viewsKey)) return;
+  json& views = extension[viewsKey];
+  for (const char* key : arrayKeys)
+    if (views.contains(key)) views[key] = Renumbering::at(renumbering.blobs, indexAt(views, key));
+}
+
+ExtensionReferences referencesOf(const TechniqueRules& rules, const json& extension) {
+  ExtensionReferences references = rules.bufferViews.references(extension);
+  if (!rules.references) return references;
+  ExtensionReferences more = rules.references(extension);
+  references.blobs.insert(references.blobs.end(), more.blobs.begin(), more.blobs.end());
+  references.images.insert(references.images.end(), more.images.begin(), more.images.end());
+  references.textures.insert(references.textures.end(), more.textures.begin(), more.textures.end());
+  return references;
+}
+
+void renumberReferences(const TechniqueRules& rules, json& extension, const Renumbering& renumbering) {
+  rules.bufferViews.renumber(extension, renumbering);
+  if (rules.renumber) rules.renumber(extension, renumbering);
+}
+
 }  // namespace detail
 
 namespace {
@@ -82,7 +113,7 @@ Reached reachedBy(const glb::Package& package, const TechniqueRules& rules) {
   for (json material : package.materials) {  // a copy: textureInfos hands out pointers
     for (json* info : textureInfos(material)) reached.textures.insert(detail::indexAt(*info, "index"));
     if (!detail::hasExtension(material, rules.extension)) continue;
-    const detail::ExtensionReferences references = rules.references(material["extensions"][rules.extension]);
+    const detail::ExtensionReferences references = detail::referencesOf(rules, material["extensions"][rules.extension]);
     reached.blobs.insert(references.blobs.begin(), references.blobs.end());
     reached.images.insert(references.images.begin(), references.images.end());
     reached.textures.insert(references.textures.begin(), references.textures.end());
@@ -178,7 +209,7 @@ void copyStructure(glb::Package package, const Renumbering& renumbering, const T
   for (json material : package.materials) {
     renumberTextureInfos(material, renumbering);
     if (detail::hasExtension(material, rules.extension))
-      rules.renumber(material["extensions"][rules.extension], renumbering);
+      detail::renumberReferences(rules, material["extensions"][rules.extension], renumbering);
     out.materials.push_back(std::move(material));
   }
   for (glb::Mesh& mesh : package.meshes) {

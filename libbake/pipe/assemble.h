@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 #include "pipe/scene.h"
 
 namespace bake::pipe {

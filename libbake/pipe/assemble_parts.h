@@ -5,13 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 #include "pipe/assemble.h"
 #include "pipe/scene.h"
 
@@ -47,6 +48,16 @@ struct Renumbering {
   }
 };
 
+// An extension that names each of its arrays by bufferView under one object, {VIEWS: {KEY: index}}
+// (grooves, paintstrokes): its references are those indices.
+struct BufferViewTable {
+  const char* viewsKey = nullptr;  // null: the technique has no such table
+  std::span<const char* const> arrayKeys;
+
+  ExtensionReferences references(const nlohmann::json& extension) const;
+  void renumber(nlohmann::json& extension, const Renumbering& renumbering) const;
+};
+
 // How one technique's packages are assembled.
 struct TechniqueRules {
   const char* extension;            // BAKE_<technique>
@@ -55,14 +66,20 @@ struct TechniqueRules {
   // keepUnused, removes what that material does not read (each removal reported). Data the material
   // stops referencing need not be removed from the package: the merge copies only what is referenced.
   Status (*adapt)(glb::Package& package, const ObjectInput& input);
-  // The indices a material's extension object holds.
-  ExtensionReferences (*references)(const nlohmann::json& extension);
+  // The indices a material's extension object holds (with bufferViews below, not needed).
+  ExtensionReferences (*references)(const nlohmann::json& extension) = nullptr;
   // Rewrites those indices to the assembled package's.
-  void (*renumber)(nlohmann::json& extension, const Renumbering& renumbering);
+  void (*renumber)(nlohmann::json& extension, const Renumbering& renumbering) = nullptr;
   // Merges the technique's root extension object (when it has one) into the assembled package's.
   Status (*mergeRoot)(nlohmann::json& assembledExtensions, const glb::Package& package, const ObjectInput& input) =
       nullptr;
+  // Indices held in a bufferView table, found and renumbered besides those of the two hooks above.
+  BufferViewTable bufferViews{};
 };
+
+// All the indices `rules` find in a material's extension object, and their renumbering.
+ExtensionReferences referencesOf(const TechniqueRules& rules, const nlohmann::json& extension);
+void renumberReferences(const TechniqueRules& rules, nlohmann::json& extension, const Renumbering& renumbering);
 
 // Whether a material JSON carries `extension` as an object.
 bool hasExtension(const nlohmann::json& material, const char* extension);

@@ -1,6 +1,6 @@
 // The bakepipe commands (pipe/commands.h): each reads the scene, makes the plan and prints it, writes
 // it as Ninja, assembles the packages it names, or runs bakeplay validate on the result.
-#include "pipe/commands.h"
+#include "bake/pipe/commands.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -9,10 +9,10 @@
 #include <set>
 #include <unistd.h>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/output_plan.h"
-#include "core/session.h"
-#include "io/glb.h"
+#include "bake/core/session.h"
+#include "bake/io/glb.h"
 #include "pipe/assemble.h"
 #include "pipe/ninja.h"
 #include "pipe/plan.h"

@@ -11,8 +11,8 @@
 #include <numbers>
 #include <set>
 
-#include "io/mesh.h"
-#include "mesh/shapes.h"
+#include "bake/io/mesh.h"
+#include "bake/mesh/shapes.h"
 #include "pipe/technique_hooks.h"
 #include "techniques/registry.h"
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "pipe/scene.h"
 
 namespace bake::pipe {

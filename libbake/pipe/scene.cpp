@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "bake_formats/scene.h"
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
 #include "pipe/technique_hooks.h"

@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake::pipe {
 

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json_keys.h"
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "pipe/plan.h"
 #include "pipe/scene.h"
 

@@ -2,7 +2,7 @@
 // margin, choose the projection, build the displacement map, find the iteration budget with the CPU
 // march against the analytic intersection, write the package. Each stage is timed in the report, and
 // the report states every error next to the reference it was measured against.
-#include "revolution/bake.h"
+#include "bake/revolution/bake.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +10,11 @@
 #include <filesystem>
 
 #include "bake_formats/revolution.h"
-#include "core/limits.h"
-#include "core/session.h"
-#include "io/glb.h"
-#include "io/image.h"
-#include "io/mesh.h"
+#include "bake/core/limits.h"
+#include "bake/core/session.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
+#include "bake/io/mesh.h"
 #include "revolution/bake_stages.h"
 #include "revolution/march.h"
 #include "revolution/profile_extract.h"

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "bake_formats/revolution.h"
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "revolution/bake_stages.h"
 #include "revolution/profile_geometry.h"
 

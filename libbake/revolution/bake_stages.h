@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/report.h"
-#include "io/glb.h"
-#include "revolution/bake.h"
+#include "bake/core/report.h"
+#include "bake/io/glb.h"
+#include "bake/revolution/bake.h"
 #include "revolution/displacement.h"
 #include "revolution/march.h"
 #include "revolution/profile_extract.h"

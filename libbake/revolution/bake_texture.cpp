@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/parallel.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "revolution/bake_stages.h"
 #include "revolution/profile_geometry.h"
 

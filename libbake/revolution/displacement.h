@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 
 namespace bake::revolution {
 

@@ -11,10 +11,10 @@
 #include <optional>
 #include <vector>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "bake_formats/revolution.h"
-#include "revolution/profile.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/profile.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 

@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "core/parallel.h"
+#include "bake/core/vec.h"
 #include "revolution/march.h"
 
 namespace bake::revolution {
@@ -32,10 +33,8 @@ struct RayOutcome {
   int fetches = 0;
 };
 
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+using vec::cross;
+using vec::dot;
 Vec3d normalised(const Vec3d& v) {
   const double n = std::sqrt(dot(v, v));
   return {v[0] / n, v[1] / n, v[2] / n};

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "revolution/march.h"
 
 namespace bake::revolution {

@@ -12,10 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/status.h"
-#include "io/glb.h"
-#include "revolution/projection.h"
-#include "revolution/shape_map.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
+#include "bake/revolution/projection.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 #include "revolution/profile_geometry.h"
 
 namespace bake::revolution {

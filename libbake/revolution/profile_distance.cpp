@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "revolution/profile_geometry.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 

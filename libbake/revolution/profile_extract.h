@@ -7,10 +7,10 @@
 #include <array>
 #include <string>
 
-#include "core/status.h"
-#include "io/mesh.h"
-#include "revolution/profile.h"
-#include "revolution/shape_map.h"
+#include "bake/core/status.h"
+#include "bake/io/mesh.h"
+#include "bake/revolution/profile.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 
 namespace bake::revolution {
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "revolution/profile_chain.h"
 #include "revolution/profile_extract.h"
 

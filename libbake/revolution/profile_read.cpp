@@ -1,20 +1,20 @@
 // Profile readers for JSON and CSV (profile.h; formats/revolution.md). Both give contours of points
 // with an optional bulge on the piece leaving each point (0: straight; tan(sweep / 4) of a circular
 // arc, counter-clockwise positive). JSON: {"contours": [{"closed": bool, "points": [[r, h], ...],
-// "bulges": [...]}]} or a bare list of points (one open contour). CSV: "r,h[,bulge]" per line, a
-// blank line starts a new contour, '#' starts a comment; a CSV contour whose last point repeats the
-// first is closed. Readers only parse: validateProfile checks the geometry.
+// "bulges": [...]}]} or a bare list of points (one open contour). CSV (split as every CSV we read,
+// core/csv_read.h): "r,h[,bulge]" per line, a blank line starts a new contour, '#' starts a comment
+// anywhere on a line; a contour whose last point repeats the first is closed. Readers only parse: validateProfile checks the geometry.
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.h"
-#include "core/input_file.h"
+#include "bake/core/atomic_file.h"
+#include "core/csv_read.h"
+#include "bake/core/input_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 
 namespace bake::revolution {
 namespace {
@@ -120,7 +120,7 @@ Result<Profile> readProfileJson(const std::string& path) {
 
 Result<Profile> readProfileCsv(const std::string& path) {
   BAKE_ASSIGN_OR_RETURN(const std::vector<std::uint8_t> bytes, readFileBytes(path));
-  std::istringstream in(std::string(withoutByteOrderMark({reinterpret_cast<const char*>(bytes.data()), bytes.size()})));
+  const std::string_view text = withoutByteOrderMark({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
   Profile profile;
   profile.source = path;
   std::vector<Point2> points;
@@ -135,44 +135,23 @@ Result<Profile> readProfileCsv(const std::string& path) {
     points.clear();
     bulges.clear();
   };
-  std::string line;
-  std::size_t lineNumber = 0;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    const auto hash = line.find('#');
-    const bool hadComment = hash != std::string::npos;
-    if (hadComment) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) {
-      if (!hadComment) finishContour();  // a comment line does not split a contour
+  for (const CsvLine& line : splitCsv(text, CsvComments::Anywhere)) {
+    if (line.fields.empty()) {
+      if (!line.comment) finishContour();  // a comment line does not split a contour
       continue;
     }
     std::vector<double> values;
-    std::stringstream fields(line);
-    std::string field;
     bool bad = false;
-    while (std::getline(fields, field, ',')) {
-      const auto first = field.find_first_not_of(" \t\r");
-      if (first == std::string::npos) {
-        bad = true;
-        break;
-      }
-      const std::string trimmed = field.substr(first, field.find_last_not_of(" \t\r") - first + 1);
-      std::size_t used = 0;
+    for (const std::string& field : line.fields) {
       double value = 0;
-      try {
-        value = std::stod(trimmed, &used);
-      } catch (const std::exception&) {
-        bad = true;
-        break;
-      }
-      if (used != trimmed.size()) {
+      if (!parseCsvNumber(field, value)) {
         bad = true;
         break;
       }
       values.push_back(value);
     }
     const std::string where = contourPoint(profile.contours.size(), points.size()) + " (line " +
-                              std::to_string(lineNumber) + ")";
+                              std::to_string(line.number) + ")";
     if (bad || values.size() < 2 || values.size() > 3)
       return invalidInput("expected \"r,h\" or \"r,h,bulge\"", {path, where});
     for (double v : values)

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "io/svg_drawing.h"
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 
 namespace bake::revolution {
 namespace {

@@ -21,8 +21,8 @@
 // that one scores lower by more than 0.05, i.e. about 5 % less distortion: below that the difference
 // does not show, and the earlier map is the simpler one (cylindrical has no parameter and keeps the
 // texture's rows level; a pointed cone measures 2 % better under a spherical map centred below it).
-#include "core/vec.h"
-#include "revolution/projection.h"
+#include "bake/core/vec.h"
+#include "bake/revolution/projection.h"
 
 #include <algorithm>
 #include <cmath>

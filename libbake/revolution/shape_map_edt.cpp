@@ -22,7 +22,7 @@
 #include <limits>
 
 #include "core/parallel.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "core/parallel.h"
 #include "revolution/profile_geometry.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 namespace {

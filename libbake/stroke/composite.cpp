@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 
 namespace bake::stroke {
 

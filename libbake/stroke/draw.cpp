@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "stroke/coverage.h"
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 #include "stroke/stroke_stages.h"
 
 namespace bake::stroke::detail {

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 #include "stroke/stroke_stages.h"
 
 namespace bake::stroke {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "stroke/coverage.h"
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 
 namespace bake::stroke::detail {
 

@@ -9,9 +9,9 @@
 
 #include "core/output_plan.h"
 #include "core/path.h"
-#include "core/session.h"
+#include "bake/core/session.h"
 #include "gl/context.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "render/geodesic.h"
 #include "render/paintstrokes.h"
 #include "render/renderer.h"

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "core/options.h"
-#include "core/diagnostics.h"
-#include "core/status.h"
+#include "bake/core/options.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 

@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "core/output_plan.h"
-#include "core/session.h"
+#include "bake/core/session.h"
 #include "gl/context.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "render/geodesic.h"
 #include "render/renderer.h"
 #include "render/target.h"

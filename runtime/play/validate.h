@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "core/options.h"
-#include "core/diagnostics.h"
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/options.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 #include "io/image_compare.h"
 
 namespace bake::play {

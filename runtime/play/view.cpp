@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "gl/context.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "render/renderer.h"
 #include "render/target.h"
 

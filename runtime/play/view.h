@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "core/diagnostics.h"
-#include "core/status.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
 #include "play/render.h"
 
 namespace bake::play {

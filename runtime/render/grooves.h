@@ -16,7 +16,7 @@
 #include <bake_formats/grooves.h>
 
 #include "grooves/package/package.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
 

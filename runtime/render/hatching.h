@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
 #include "render/renderer.h"
 #include "hatching/package_read.h"

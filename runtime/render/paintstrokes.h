@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "render/renderer.h"
 #include "paintstrokes/package.h"
 

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "render/paintstrokes.h"
 
 namespace bake::play {

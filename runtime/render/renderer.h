@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "gl/shader.h"
 #include "scene/scene.h"
 

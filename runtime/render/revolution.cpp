@@ -15,7 +15,7 @@
 #include <map>
 #include <tuple>
 
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "render/standard.h"
 
 namespace bake::play {

@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "render/gpu_mesh.h"
 #include "revolution/package_read.h"
 #include "render/renderer.h"

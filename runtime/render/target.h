@@ -2,8 +2,8 @@
 // light, so EXR output keeps the full range) and a 24-bit depth buffer, read back as a top-row-first image.
 #pragma once
 
-#include "core/status.h"
-#include "io/image.h"
+#include "bake/core/status.h"
+#include "bake/io/image.h"
 
 namespace bake::play {
 

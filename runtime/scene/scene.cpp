@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "core/json_keys.h"
-#include "core/vector_text.h"
+#include "bake/core/vector_text.h"
 #include "io/glb_scene.h"
 
 namespace bake::play {

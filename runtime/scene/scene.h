@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "core/diagnostics.h"
-#include "core/status.h"
-#include "io/glb.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
+#include "bake/io/glb.h"
 #include "scene/math.h"
 
 namespace bake::play {

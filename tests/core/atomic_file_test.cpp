@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <set>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/temporaries.h"
 #include "support/golden.h"
 

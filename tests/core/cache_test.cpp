@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/cache.h"
+#include "bake/core/cache.h"
 #include "common/cli.h"
-#include "core/session.h"
+#include "bake/core/session.h"
 #include "support/golden.h"
 
 namespace bake {

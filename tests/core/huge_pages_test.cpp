@@ -1,5 +1,5 @@
 // When a tool re-executes itself with glibc's huge-page tunable (core/huge_pages.h).
-#include "core/huge_pages.h"
+#include "bake/core/huge_pages.h"
 
 #include <gtest/gtest.h>
 

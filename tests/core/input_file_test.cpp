@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/hash.h"
-#include "core/input_file.h"
-#include "core/limits.h"
+#include "bake/core/input_file.h"
+#include "bake/core/limits.h"
 #include "support/golden.h"
 
 namespace bake {

@@ -1,13 +1,13 @@
 // Budgets (core/limits.h): settings, names, the check and its message, and the early checks in the
 // readers that must refuse an input before allocating for it.
-#include "core/limits.h"
+#include "bake/core/limits.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "support/golden.h"
 
 namespace bake {

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/output_plan.h"
 #include "support/golden.h"
 

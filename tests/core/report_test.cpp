@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/hash.h"
 #include "core/progress.h"
-#include "core/report.h"
+#include "bake/core/report.h"
 #include "support/golden.h"
 
 namespace bake {

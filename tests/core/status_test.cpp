@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/diagnostics.h"
-#include "core/status.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/status.h"
 
 namespace bake {
 namespace {

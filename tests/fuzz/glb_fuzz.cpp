@@ -4,7 +4,7 @@
 // the describers of bakeinfo.
 #include <span>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "techniques/registry.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

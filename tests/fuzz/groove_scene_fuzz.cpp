@@ -1,6 +1,6 @@
 // Groove scene JSON (groovebake's input): parsing, checking and finishing the scene (paths, SVG path
 // data, cross-sections, flattening).
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "fuzz_support.h"
 #include "grooves/input/scene.h"
 

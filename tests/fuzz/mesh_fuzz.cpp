@@ -4,8 +4,8 @@
 #include <cstring>
 
 #include "fuzz_support.h"
-#include "geodesic/surface.h"
-#include "io/mesh.h"
+#include "bake/geodesic/surface.h"
+#include "bake/io/mesh.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "fuzz_support.h"
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 
 namespace {
 

@@ -1,10 +1,10 @@
 // Stroke lists (strokebake's input, formats/paintstroke-input.md): JSON when the text opens with '{'
 // (after blanks), CSV otherwise; then the tree generators the list names (grow generators read meshes,
 // which the mesh target covers) and the validation and repair every bake runs.
-#include "core/diagnostics.h"
-#include "core/limits.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/limits.h"
 #include "fuzz_support.h"
-#include "paintstrokes/generators.h"
+#include "bake/paintstrokes/generators.h"
 #include "paintstrokes/input.h"
 #include "paintstrokes/validate.h"
 

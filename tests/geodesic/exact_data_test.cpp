@@ -13,7 +13,7 @@
 
 #include "cgal_geodesic.h"
 #include "geodesic/exact.h"
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 #include "support/data.h"
 
 namespace bake::geodesic {

@@ -13,9 +13,9 @@
 #include <string>
 
 #include "geodesic/methods.h"
-#include "geodesic/surface.h"
-#include "io/glb.h"
-#include "io/mesh.h"
+#include "bake/geodesic/surface.h"
+#include "bake/io/glb.h"
+#include "bake/io/mesh.h"
 
 namespace bake::geodesic {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "geodesic/bake.h"
-#include "io/glb.h"
+#include "bake/geodesic/bake.h"
+#include "bake/io/glb.h"
 
 namespace bake::geodesic {
 namespace {

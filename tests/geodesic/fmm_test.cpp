@@ -13,8 +13,8 @@
 #include <numbers>
 
 #include "geodesic/fmm.h"
-#include "geodesic/sources.h"
-#include "io/mesh.h"
+#include "bake/geodesic/sources.h"
+#include "bake/io/mesh.h"
 
 namespace bake::geodesic {
 namespace {

@@ -15,9 +15,9 @@
 #include <string>
 
 #include "geodesic/exact.h"
-#include "geodesic/heat.h"
+#include "bake/geodesic/heat.h"
 #include "geodesic/heat_meshes.h"
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake::geodesic {
 namespace {

@@ -1,6 +1,6 @@
 // The heat method: its intrinsic triangulation (tufted cover, mollification, Delaunay flips), the time
 // step rule, and distances against analytic answers (a sphere: R * angle; a plane: Euclidean).
-#include "geodesic/heat.h"
+#include "bake/geodesic/heat.h"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "geodesic/methods.h"
-#include "geodesic/surface.h"
-#include "io/mesh.h"
+#include "bake/geodesic/surface.h"
+#include "bake/io/mesh.h"
 #include "support/data.h"
 
 namespace bake::geodesic {

@@ -1,10 +1,10 @@
-#include "geodesic/surface.h"
+#include "bake/geodesic/surface.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "geodesic/sources.h"
+#include "bake/geodesic/sources.h"
 
 namespace bake::geodesic {
 namespace {

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/reference/reference.h"
 #include "grooves/oracle/shade.h"
 #include "groove_support.h"

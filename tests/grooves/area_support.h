@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/oracle/area_surface.h"
 #include "grooves/reference/reference.h"
 #include "grooves/input/scene.h"

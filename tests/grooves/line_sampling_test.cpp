@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/oracle/line_sampling_section.h"
 #include "grooves/input/scene.h"
 

@@ -11,7 +11,7 @@
 
 #include "bake_formats/grooves.h"
 #include "grooves/package/package.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "support/golden.h"
 
 namespace bake::grooves {

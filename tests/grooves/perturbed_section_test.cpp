@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/oracle/line_sampling_section.h"
 #include "grooves/reference/reference.h"
 #include "grooves/input/scene.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/input/generators.h"
 #include "grooves/input/scene.h"
 #include "support/node_check.h"

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/bake/grid.h"
 #include "grooves/oracle/line_sampling_section.h"
 #include "grooves/reference/reference.h"

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/input/scene.h"
 #include "grooves/input/svg_file.h"
 

@@ -9,12 +9,12 @@
 
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.h"
-#include "io/glb.h"
+#include "bake/core/atomic_file.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
 #include "support/node_check.h"
-#include "hatching/bake.h"
+#include "bake/hatching/bake.h"
 #include "hatching/bake_stages.h"
 
 namespace bake::hatching {

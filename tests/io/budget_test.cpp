@@ -8,9 +8,9 @@
 #include <fstream>
 #include <string>
 
-#include "core/limits.h"
-#include "io/image.h"
-#include "io/mesh.h"
+#include "bake/core/limits.h"
+#include "bake/io/image.h"
+#include "bake/io/mesh.h"
 #include "support/golden.h"
 
 namespace bake {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "grooves/package/package.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "io/ktx2.h"
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 namespace bake {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
-#include "core/atomic_file.h"
-#include "io/glb.h"
+#include "bake/core/atomic_file.h"
+#include "bake/io/glb.h"
 #include "support/golden.h"
 #include "support/node_check.h"
 

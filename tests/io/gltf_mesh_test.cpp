@@ -2,7 +2,7 @@
 
 #include <fstream>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "io/gltf.h"
 #include "support/golden.h"
 

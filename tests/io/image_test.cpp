@@ -1,6 +1,6 @@
 // Image input and output: exact round trips for every storage type, PNG alpha kept as stored,
 // byte-identical repeated writes, atomic replacement, and clear errors for bad files and requests.
-#include "io/image.h"
+#include "bake/io/image.h"
 
 #include <gtest/gtest.h>
 

@@ -15,9 +15,9 @@
 #include <sstream>
 
 #include "bake_formats/ktx2.h"
-#include "core/atomic_file.h"
-#include "core/limits.h"
-#include "core/version.h"
+#include "bake/core/atomic_file.h"
+#include "bake/core/limits.h"
+#include "bake/core/version.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
 #include "support/node_check.h"

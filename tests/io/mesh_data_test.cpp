@@ -19,7 +19,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 #include "mesh/mesh_stats.h"
 #include "support/data.h"
 #include "support/golden.h"

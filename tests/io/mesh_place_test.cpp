@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 #include "io/mesh_place.h"
 
 namespace bake {

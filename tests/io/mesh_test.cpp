@@ -1,6 +1,6 @@
 // Mesh reading: small OBJ / OFF / PLY / STL files written from inline strings, checked for counts and
 // values, and a table of malformed inputs that must fail with a specific exit code, message and line.
-#include "io/mesh.h"
+#include "bake/io/mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "mesh/shapes.h"
+#include "bake/mesh/shapes.h"
 
 #include <gtest/gtest.h>
 

@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "io/glb.h"
-#include "io/image.h"
-#include "paintstrokes/generators.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
+#include "bake/paintstrokes/generators.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -3,7 +3,7 @@
 // control point for malformed documents (parse errors included).
 #include <gtest/gtest.h>
 
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "paintstrokes/input.h"
 
 namespace bake::paintstrokes {

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/paintstrokes.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "paintstrokes/package.h"
 #include "support/golden.h"
 

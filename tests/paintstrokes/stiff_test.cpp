@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/glb.h"
-#include "paintstrokes/generators.h"
+#include "bake/io/glb.h"
+#include "bake/paintstrokes/generators.h"
 #include "paintstrokes/package.h"
 #include "paintstrokes/validate.h"
 

@@ -16,18 +16,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/diagnostics.h"
-#include "geodesic/bake.h"
+#include "bake/core/diagnostics.h"
+#include "bake/geodesic/bake.h"
 #include "grooves/bake/grid.h"
 #include "grooves/package/package.h"
 #include "grooves/input/scene.h"
-#include "io/glb.h"
-#include "io/image.h"
-#include "mesh/patterns.h"
-#include "mesh/shape_tool.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
+#include "bake/mesh/patterns.h"
+#include "bake/mesh/shape_tool.h"
 #include "pipe/scene.h"
-#include "revolution/bake.h"
-#include "hatching/bake.h"
+#include "bake/revolution/bake.h"
+#include "bake/hatching/bake.h"
 
 namespace bake::test {
 

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "geodesic/bake.h"
+#include "bake/geodesic/bake.h"
 #include "grooves/package/package.h"
 #include "pipe/assemble.h"
 #include "pipe/assemble_support.h"

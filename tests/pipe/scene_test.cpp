@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "pipe/scene.h"
+#include "pipe/technique_hooks.h"
 
 namespace bake::pipe {
 namespace {
@@ -28,12 +29,18 @@ void expectError(const json& document, const std::string& element, const std::st
 }
 
 TEST(PipeScene, ReadsTheExampleScenes) {
-  for (const char* name : {"geodesic", "revolution", "hatching", "grooves"}) {
-    const Result<Scene> scene = readScene(fs::path(BAKE_SOURCE_DIR) / "pipelines" / name / "scene.json");
+  // Every example folder with a scene (one per technique in the registry: none is left out).
+  std::size_t scenes = 0;
+  for (const fs::directory_entry& folder : fs::directory_iterator(fs::path(BAKE_SOURCE_DIR) / "pipelines")) {
+    const fs::path file = folder.path() / "scene.json";
+    if (!fs::exists(file)) continue;
+    const Result<Scene> scene = readScene(file);
     ASSERT_TRUE(scene.isOk()) << scene.status().describe();
-    EXPECT_EQ(scene->name, name);
+    EXPECT_EQ(scene->name, folder.path().filename().string());
     EXPECT_FALSE(scene->objects.empty());
+    ++scenes;
   }
+  EXPECT_EQ(scenes, sceneTechniques().size());
   const Result<Scene> geodesic = readScene(kGeodesic + "scene.json");
   ASSERT_TRUE(geodesic.isOk());
   EXPECT_EQ(geodesic->objects[0].fieldNames, (std::vector<std::string>{"left tip", "right tip", "rims"}));

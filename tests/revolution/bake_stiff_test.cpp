@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bake_formats/revolution.h"
-#include "io/glb.h"
-#include "revolution/bake.h"
+#include "bake/io/glb.h"
+#include "bake/revolution/bake.h"
 #include "support/golden.h"
 
 namespace bake::revolution {

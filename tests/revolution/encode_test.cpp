@@ -8,7 +8,7 @@
 #include <random>
 
 #include "revolution/profile_shapes.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 namespace {

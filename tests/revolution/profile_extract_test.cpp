@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/glb.h"
-#include "revolution/bake.h"
+#include "bake/io/glb.h"
+#include "bake/revolution/bake.h"
 #include "revolution/profile_extract.h"
 #include "support/golden.h"
 

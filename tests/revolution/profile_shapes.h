@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-#include "revolution/profile.h"
+#include "bake/revolution/profile.h"
 
 namespace bake::revolution::test {
 

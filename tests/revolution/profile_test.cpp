@@ -11,7 +11,7 @@
 
 #include "revolution/profile_geometry.h"
 #include "revolution/profile_shapes.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 #include "support/golden.h"
 
 namespace bake::revolution {

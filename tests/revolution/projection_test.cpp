@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "revolution/projection.h"
+#include "bake/revolution/projection.h"
 
 namespace bake::revolution {
 namespace {

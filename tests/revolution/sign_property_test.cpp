@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "revolution/reference/exact_reference.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution {
 namespace {

@@ -11,8 +11,8 @@
 
 #include <cstdio>
 
-#include "core/diagnostics.h"
-#include "io/image.h"
+#include "bake/core/diagnostics.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "pipe/assemble.h"
 #include "pipe/assemble_support.h"

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.h"
-#include "io/image.h"
+#include "bake/core/atomic_file.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "play/render.h"
 #include "support/golden.h"

@@ -15,8 +15,8 @@
 #include <numbers>
 #include <optional>
 
-#include "io/glb.h"
-#include "io/image.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "play/render.h"
 #include "play/validate.h"

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/image.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "support/golden.h"
 

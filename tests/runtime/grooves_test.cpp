@@ -24,7 +24,7 @@
 #include "grooves/reference/reference.h"
 #include "grooves/input/scene.h"
 #include "grooves/oracle/shade.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "play/validate.h"
 #include "render/grooves.h"
 #include "render/target.h"

@@ -15,18 +15,18 @@
 #include <optional>
 #include <set>
 
-#include "core/vec.h"
-#include "io/glb.h"
-#include "io/image.h"
+#include "bake/core/vec.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "io/ktx2.h"
-#include "mesh/shapes.h"
+#include "bake/mesh/shapes.h"
 #include "play/render.h"
 #include "play/validate.h"
 #include "render/hatching.h"
 #include "render/renderer.h"
 #include "render/target.h"
-#include "hatching/bake.h"
+#include "bake/hatching/bake.h"
 #include "runtime/gl_test.h"
 #include "runtime/golden_image.h"
 #include "support/golden.h"

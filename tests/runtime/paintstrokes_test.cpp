@@ -17,7 +17,7 @@
 #include <tuple>
 #include <vector>
 
-#include "io/glb.h"
+#include "bake/io/glb.h"
 #include "play/validate.h"
 #include "render/paintstrokes.h"
 #include "render/target.h"

@@ -16,13 +16,13 @@
 #include <numbers>
 #include <optional>
 
-#include "core/vec.h"
-#include "io/glb.h"
-#include "io/image.h"
+#include "bake/core/vec.h"
+#include "bake/io/glb.h"
+#include "bake/io/image.h"
 #include "io/image_compare.h"
 #include "play/render.h"
 #include "play/validate.h"
-#include "revolution/bake.h"
+#include "bake/revolution/bake.h"
 #include "revolution/march.h"
 #include "render/revolution.h"
 #include "runtime/gl_test.h"

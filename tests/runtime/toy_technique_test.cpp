@@ -6,7 +6,7 @@
 
 #include <GL/glcorearb.h>
 
-#include "core/diagnostics.h"
+#include "bake/core/diagnostics.h"
 #include "info/describe.h"
 #include "pipe/assemble.h"
 #include "pipe/assemble_parts.h"

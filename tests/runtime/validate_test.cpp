@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "play/validate.h"
 #include "support/golden.h"
 

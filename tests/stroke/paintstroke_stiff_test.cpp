@@ -1,6 +1,6 @@
 // Stiff cases for the paintstroke rasterizer: dots, zero and huge radii, strokes much longer than the
 // image, huge, tiny and non-finite coordinates, hairpins. Output must be finite and correct, or empty.
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 #include "stroke/stroke_builders.h"
 
 #include <gtest/gtest.h>

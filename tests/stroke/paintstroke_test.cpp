@@ -1,6 +1,6 @@
 // Paintstroke rasterizer: spline, coverage profile, ink conservation, breadthwise opacity, taper,
 // wrap-around and multiplicative compositing.
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 #include "stroke/stroke_builders.h"
 
 #include <gtest/gtest.h>

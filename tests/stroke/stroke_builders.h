@@ -1,7 +1,7 @@
 // Small builders of control points and straight strokes shared by the paintstroke tests.
 #pragma once
 
-#include "stroke/paintstroke.h"
+#include "bake/stroke/paintstroke.h"
 
 namespace bake::stroke::test {
 

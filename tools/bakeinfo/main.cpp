@@ -2,7 +2,7 @@
 #include <cstdio>
 
 #include "common/cli.h"
-#include "info/bakeinfo.h"
+#include "bake/info/bakeinfo.h"
 
 int main(int argc, char** argv) {
   bake::info::Settings settings;

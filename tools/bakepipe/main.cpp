@@ -2,7 +2,7 @@
 // they leave out, `ninja` writes them as a Ninja file, `assemble` merges the baked packages into one
 // scene package, `validate` runs bakeplay validate on it.
 #include "common/cli.h"
-#include "pipe/commands.h"
+#include "bake/pipe/commands.h"
 
 namespace {
 

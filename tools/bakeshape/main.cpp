@@ -1,8 +1,8 @@
 // bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
 #include "common/cli.h"
-#include "core/session.h"
-#include "mesh/patterns.h"
-#include "mesh/shape_tool.h"
+#include "bake/core/session.h"
+#include "bake/mesh/patterns.h"
+#include "bake/mesh/shape_tool.h"
 
 int main(int argc, char** argv) {
   bake::ShapeToolSettings settings;

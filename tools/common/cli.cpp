@@ -8,9 +8,9 @@
 #include <new>
 #include <set>
 
-#include "core/input_file.h"
-#include "core/limits.h"
-#include "core/version.h"
+#include "bake/core/input_file.h"
+#include "bake/core/limits.h"
+#include "bake/core/version.h"
 
 namespace bake {
 

@@ -11,10 +11,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/diagnostics.h"
-#include "core/options.h"
-#include "core/session.h"
-#include "core/status.h"
+#include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
+#include "bake/core/session.h"
+#include "bake/core/status.h"
 
 namespace bake {
 

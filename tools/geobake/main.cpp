@@ -6,9 +6,9 @@
 #include <map>
 
 #include "common/cli.h"
-#include "core/session.h"
-#include "core/vector_text.h"
-#include "geodesic/bake.h"
+#include "bake/core/session.h"
+#include "bake/core/vector_text.h"
+#include "bake/geodesic/bake.h"
 
 int main(int argc, char** argv) {
   using namespace bake::geodesic;

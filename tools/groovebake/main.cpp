@@ -4,9 +4,9 @@
 #include <string>
 
 #include "common/cli.h"
-#include "core/huge_pages.h"
-#include "core/session.h"
-#include "grooves/bake/bake.h"
+#include "bake/core/huge_pages.h"
+#include "bake/core/session.h"
+#include "bake/grooves/bake/bake.h"
 
 int main(int argc, char** argv) {
   // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten

@@ -5,9 +5,9 @@
 #include <map>
 
 #include "common/cli.h"
-#include "core/session.h"
-#include "core/vector_text.h"
-#include "revolution/bake.h"
+#include "bake/core/session.h"
+#include "bake/core/vector_text.h"
+#include "bake/revolution/bake.h"
 
 int main(int argc, char** argv) {
   using namespace bake::revolution;

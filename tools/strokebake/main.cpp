@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "common/cli.h"
-#include "core/session.h"
-#include "core/vector_text.h"
-#include "paintstrokes/bake.h"
+#include "bake/core/session.h"
+#include "bake/core/vector_text.h"
+#include "bake/paintstrokes/bake.h"
 
 int main(int argc, char** argv) {
   using namespace bake::paintstrokes;

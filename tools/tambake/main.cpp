@@ -6,10 +6,10 @@
 #include <string>
 
 #include "common/cli.h"
-#include "core/session.h"
-#include "core/vector_text.h"
-#include "hatching/bake.h"
-#include "hatching/style.h"
+#include "bake/core/session.h"
+#include "bake/core/vector_text.h"
+#include "bake/hatching/bake.h"
+#include "bake/hatching/style.h"
 
 int main(int argc, char** argv) {
   using namespace bake::hatching;

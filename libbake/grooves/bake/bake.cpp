@@ -3,13 +3,13 @@
 // records, pack the package, decode it again and measure the stored fp32 geometry against the scene's
 // double geometry (the bake's error against its stated reference), then stage the output so it is
 // committed only when everything succeeded. Each stage is timed in the report.
-#include "grooves/bake/bake.h"
+#include "bake/grooves/bake/bake.h"
 
 #include <chrono>
 
 #include "core/path.h"
 #include "core/progress.h"
-#include "core/session.h"
+#include "bake/core/session.h"
 #include "grooves/bake/grid_stages.h"
 #include "grooves/package/package.h"
 

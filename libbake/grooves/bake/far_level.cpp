@@ -2,7 +2,7 @@
 // (arcs into chords of at most 1/64 turn), wrapped into the domain when the scene repeats (clipped to
 // it when not), and cut again at the far grid's lines; each piece adds its length times 2 wmax to its
 // cell in its class. Prefix sums over both axes make the summed-area table.
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/bake/far_level.h"
 
 #include <algorithm>
@@ -26,7 +26,7 @@ std::vector<Piece> centrePieces(const Primitive& p) {
   return pieces;
 }
 
-Vec2 lerp(Vec2 a, Vec2 b, double t) { return {a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)}; }
+using planar::lerp;
 
 // The parameters in (0, 1) where the piece crosses the lines u = k * step (axis 0) or v = k * step.
 void crossings(const Piece& piece, int axis, double step, std::vector<double>& out) {

@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "core/parallel.h"
 #include "grooves/bake/grid_stages.h"
 

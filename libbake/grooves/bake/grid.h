@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "grooves/bake/far_level.h"
 #include "grooves/input/scene.h"
 

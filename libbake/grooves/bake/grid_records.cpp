@@ -121,21 +121,21 @@ std::vector<Vec2> pathCrossings(const Primitive& a, const Primitive& b, Vec2 shi
   std::vector<Vec2> points;
   auto lineLine = [&](Vec2 p, Vec2 t, Vec2 q, Vec2 s) {
     const double d = cross(t, s);
-    if (std::abs(d) > 1e-15) points.push_back(add(p, mul(cross(sub(q, p), s) / d, t)));
+    if (std::abs(d) > 1e-15) points.push_back(add(p, scaled(cross(sub(q, p), s) / d, t)));
   };
   auto lineCircle = [&](Vec2 p, Vec2 t, Vec2 c, double r) {
     const Vec2 f = sub(p, c);
     const double half = dot(f, t), disc = half * half - (dot(f, f) - r * r);
     if (disc < 0) return;
-    for (const double sign : {-1.0, 1.0}) points.push_back(add(p, mul(-half + sign * std::sqrt(disc), t)));
+    for (const double sign : {-1.0, 1.0}) points.push_back(add(p, scaled(-half + sign * std::sqrt(disc), t)));
   };
   auto circleCircle = [&](Vec2 c0, double r0, Vec2 c1, double r1) {
     const Vec2 d = sub(c1, c0);
     const double dist = std::hypot(d.u, d.v);
     if (dist == 0 || dist > r0 + r1 || dist < std::abs(r0 - r1)) return;
     const double along = (dist * dist + r0 * r0 - r1 * r1) / (2 * dist), across = std::sqrt(std::max(0.0, r0 * r0 - along * along));
-    const Vec2 e = mul(1 / dist, d), mid = add(c0, mul(along, e));
-    for (const double sign : {-1.0, 1.0}) points.push_back(add(mid, mul(sign * across, leftNormal(e))));
+    const Vec2 e = scaled(1 / dist, d), mid = add(c0, scaled(along, e));
+    for (const double sign : {-1.0, 1.0}) points.push_back(add(mid, scaled(sign * across, leftNormal(e))));
   };
   const bool aLine = a.kind == Primitive::Kind::Segment, bLine = b.kind == Primitive::Kind::Segment;
   const Vec2 bStart = add(b.a, shift), bCentre = add(b.centre, shift);

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/bake/grid_stages.h"
 
 namespace bake::grooves::grid_detail {
@@ -66,8 +66,8 @@ Polygon segmentRegion(const Primitive& p, const PrimitiveJoints& joints, double 
   for (const double side : {-1.0, 1.0}) {
     const double s0 = slabMeetsJoint(p.a, t, n, side, w, joints.start, -cap, -cap, p.length + cap) - slack;
     const double s1 = slabMeetsJoint(p.a, t, n, side, w, joints.end, p.length + cap, -cap, p.length + cap) + slack;
-    corners.push_back(add(p.a, add(mul(s0, t), mul(side * w, n))));
-    corners.push_back(add(p.a, add(mul(s1, t), mul(side * w, n))));
+    corners.push_back(add(p.a, add(scaled(s0, t), scaled(side * w, n))));
+    corners.push_back(add(p.a, add(scaled(s1, t), scaled(side * w, n))));
   }
   return makePolygon(std::move(corners));
 }
@@ -199,7 +199,7 @@ void intersect(const Polygon& a, const Polygon& b, Vec2 shift, Overlap& out) {
       const Vec2 p = current[i], q = current[(i + 1) % count];
       const double sp = cross(edge, sub(p, e0)), sq = cross(edge, sub(q, e0));
       if (sp >= 0) next[kept++] = p;
-      if ((sp >= 0) != (sq >= 0)) next[kept++] = add(p, mul(sp / (sp - sq), sub(q, p)));
+      if ((sp >= 0) != (sq >= 0)) next[kept++] = add(p, scaled(sp / (sp - sq), sub(q, p)));
     }
     std::swap(current, next);
     count = kept;
@@ -231,7 +231,7 @@ double Overlap::area() const {
 Vec2 Overlap::centre() const {
   Vec2 sum;
   for (int k = 0; k < count; ++k) sum = add(sum, points[k]);
-  return count ? mul(1.0 / count, sum) : sum;
+  return count ? scaled(1.0 / count, sum) : sum;
 }
 
 bool Overlap::contains(Vec2 x) const {

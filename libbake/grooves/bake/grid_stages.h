@@ -11,12 +11,12 @@
 
 namespace bake::grooves::grid_detail {
 
-inline Vec2 add(Vec2 a, Vec2 b) { return {a.u + b.u, a.v + b.v}; }
-inline Vec2 sub(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
-inline Vec2 mul(double s, Vec2 a) { return {s * a.u, s * a.v}; }
-inline double dot(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
-inline double cross(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
-inline Vec2 leftNormal(Vec2 t) { return {-t.v, t.u}; }
+using planar::add;
+using planar::cross;
+using planar::dot;
+using planar::leftNormal;
+using planar::scaled;
+using planar::sub;
 
 // A convex polygon, counter-clockwise, that contains the region of one primitive.
 struct Polygon {

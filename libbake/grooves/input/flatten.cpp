@@ -11,18 +11,15 @@
 #include <functional>
 #include <numbers>
 
-#include "core/limits.h"
-#include "core/vec.h"
+#include "bake/core/limits.h"
+#include "bake/core/vec.h"
 #include "grooves/input/scene.h"
 
 namespace bake::grooves {
 namespace {
 
-Vec2 operator+(Vec2 a, Vec2 b) { return {a.u + b.u, a.v + b.v}; }
-Vec2 operator-(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
-Vec2 operator*(double s, Vec2 a) { return {s * a.u, s * a.v}; }
-double cross(Vec2 a, Vec2 b) { return a.u * b.v - a.v * b.u; }
-double norm(Vec2 a) { return std::hypot(a.u, a.v); }
+using planar::cross;
+using planar::length;
 
 std::string showNumber(double x) {
   char text[32];
@@ -83,7 +80,7 @@ Primitive primitiveThrough(Vec2 a, Vec2 m, Vec2 b) {
   Primitive p;
   p.a = a;
   p.b = b;
-  const double chord = norm(b - a);
+  const double chord = length(b - a);
   const double area = cross(m - a, b - a);
   if (chord == 0 || std::abs(area) <= 1e-12 * chord * chord) {
     p.kind = Primitive::Kind::Segment;
@@ -97,7 +94,7 @@ Primitive primitiveThrough(Vec2 a, Vec2 m, Vec2 b) {
   const Vec2 c = a + Vec2{(ab.v * am2 - am.v * ab2) / d, (am.u * ab2 - ab.u * am2) / d};
   p.kind = Primitive::Kind::Arc;
   p.centre = c;
-  p.radius = norm(a - c);
+  p.radius = length(a - c);
   p.startAngle = std::atan2(a.v - c.v, a.u - c.u);
   double delta = std::atan2(b.v - c.v, b.u - c.u) - p.startAngle;
   const bool ccw = area > 0;  // m right of the chord a->b: the centre is on the left, counter-clockwise
@@ -112,12 +109,12 @@ Primitive primitiveThrough(Vec2 a, Vec2 m, Vec2 b) {
 }
 
 double distanceTo(const Primitive& p, Vec2 q) {
-  if (p.kind == Primitive::Kind::Arc) return std::abs(norm(q - p.centre) - p.radius);
+  if (p.kind == Primitive::Kind::Arc) return std::abs(length(q - p.centre) - p.radius);
   const Vec2 ab = p.b - p.a;
   const double len2 = ab.u * ab.u + ab.v * ab.v;
   double t = len2 > 0 ? ((q.u - p.a.u) * ab.u + (q.v - p.a.v) * ab.v) / len2 : 0;
   t = std::clamp(t, 0.0, 1.0);
-  return norm(q - (p.a + t * ab));
+  return length(q - (p.a + t * ab));
 }
 
 struct Flattener {
@@ -131,7 +128,7 @@ struct Flattener {
 
   Status checkCurvature(double t) const {
     const Vec2 d1 = curve.d1(t), d2 = curve.d2(t);
-    const double speed = norm(d1);
+    const double speed = length(d1);
     const double k = std::abs(cross(d1, d2));
     if (speed == 0) return Status::ok();  // a cusp of zero speed is caught as a corner-free point
     const double radius = speed * speed * speed / k;
@@ -208,7 +205,7 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
       Primitive p;
       p.a = piece.p[0];
       p.b = piece.p[1];
-      p.length = norm(p.b - p.a);
+      p.length = length(p.b - p.a);
       if (!(p.length > 0))
         return invalidInput(label + ": " + segment + " at " + showPoint(p.a) + ": zero-length segment", {source, ""});
       startTangent = endTangent = p.tangentAt(0);
@@ -245,13 +242,13 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
       }
     } else {
       const Curve curve = curveOf(piece);
-      double length = 0;  // rough length, to refuse degenerate curves
+      double roughLength = 0;  // to refuse degenerate curves
       double magnitude = 0;  // largest coordinate, against the tolerance below
       for (int i = 0; i < 64; ++i) {
-        length += norm(curve.f((i + 1) / 64.0) - curve.f(i / 64.0));
+        roughLength += length(curve.f((i + 1) / 64.0) - curve.f(i / 64.0));
         magnitude = std::max({magnitude, std::abs(curve.f(i / 64.0).u), std::abs(curve.f(i / 64.0).v)});
       }
-      if (!(length > 0))
+      if (!(roughLength > 0))
         return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": zero-length curve", {source, ""});
       // Doubles carry about 16 digits: deviations below 1e-10 of the coordinates are rounding noise,
       // and a curve that far out would only split until the depth limit.
@@ -264,8 +261,8 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
       // The curve's own end tangents decide the joints (a Bezier may have a zero derivative at an
       // end: the flattened piece's tangent stands in then).
       const Vec2 d0 = curve.d1(0), d1 = curve.d1(1);
-      startTangent = norm(d0) > 0 ? (1 / norm(d0)) * d0 : out[before].tangentAt(0);
-      endTangent = norm(d1) > 0 ? (1 / norm(d1)) * d1 : out.back().tangentAt(1);
+      startTangent = length(d0) > 0 ? (1 / length(d0)) * d0 : out[before].tangentAt(0);
+      endTangent = length(d1) > 0 ? (1 / length(d1)) * d1 : out.back().tangentAt(1);
     }
     // The joint with the previous piece: a corner when the tangent turns (polyline vertices).
     if (before > first) {

@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.h"
+#include "bake/core/atomic_file.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "core/limits.h"
+#include "bake/core/limits.h"
 #include "grooves/input/generators.h"
 #include "io/svg_path.h"
 #include "grooves/input/svg_file.h"

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "grooves/input/scene.h"
-#include "io/image.h"
+#include "bake/io/image.h"
 
 namespace bake::grooves {
 

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "bake_formats/grooves.h"
-#include "core/status.h"
+#include "bake/core/status.h"
 #include "grooves/bake/grid.h"
 #include "grooves/input/scene.h"
-#include "io/glb.h"
+#include "bake/io/glb.h"
 
 namespace bake::grooves {
 

@@ -57,20 +57,6 @@ Status adaptGrooves(glb::Package& package, const ObjectInput& input) {
   return {};
 }
 
-ExtensionReferences grooveReferences(const json& extension) {
-  ExtensionReferences references;
-  const json& views = extension.value(fmt::kBufferViews, json::object());
-  for (const char* key : fmt::kArrayKeys)
-    if (views.contains(key)) references.blobs.push_back(indexAt(views, key));
-  return references;
-}
-
-void renumberGrooves(json& extension, const Renumbering& renumbering) {
-  json& views = extension[fmt::kBufferViews];
-  for (const char* key : fmt::kArrayKeys)
-    if (views.contains(key)) views[key] = Renumbering::at(renumbering.blobs, indexAt(views, key));
-}
-
 }  // namespace
 }  // namespace bake::grooves::assembly
 
@@ -81,8 +67,7 @@ const pipe::detail::TechniqueRules& assembleRules() {
   static const TechniqueRules rules{.extension = fmt::kExtension,
                                     .blobAlignment = fmt::kBufferAlignment,
                                     .adapt = adaptGrooves,
-                                    .references = grooveReferences,
-                                    .renumber = renumberGrooves};
+                                    .bufferViews = {fmt::kBufferViews, fmt::kArrayKeys}};
   return rules;
 }
 

@@ -32,23 +32,23 @@
 #include <utility>
 #include <vector>
 
-#include "core/vec.h"
+#include "bake/core/vec.h"
 #include "grooves/reference/reference.h"
 
 namespace bake::grooves {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Vec2 add(Vec2 a, Vec2 b) { return {a.u + b.u, a.v + b.v}; }
-Vec2 sub(Vec2 a, Vec2 b) { return {a.u - b.u, a.v - b.v}; }
-Vec2 scaled(double s, Vec2 a) { return {s * a.u, s * a.v}; }
-double dot(Vec2 a, Vec2 b) { return a.u * b.u + a.v * b.v; }
-double length(Vec2 a) { return std::hypot(a.u, a.v); }
+using planar::add;
+using planar::dot;
+using planar::leftNormal;
+using planar::length;
+using planar::scaled;
+using planar::sub;
 Vec2 unit(Vec2 a) {
   const double n = length(a);
   return n > 0 ? scaled(1 / n, a) : Vec2{};
 }
-Vec2 leftNormal(Vec2 t) { return {-t.v, t.u}; }
 
 // A profile as segments: P(q) = slope[k] q + intercept[k] on [b[k], b[k+1]], 0 outside [b0, bLast].
 struct ProfileTable {
@@ -81,7 +81,7 @@ int segmentOf(const ProfileTable& p, double q) {
   return static_cast<int>(above - p.b.begin()) - 1;
 }
 
-struct Box {
+struct PlaneBounds {
   Vec2 lo{kInf, kInf}, hi{-kInf, -kInf};
   void take(Vec2 p) {
     lo = {std::min(lo.u, p.u), std::min(lo.v, p.v)};
@@ -104,7 +104,7 @@ struct Component {
   Vec2 joint0, mitre0, joint1, mitre1;  // region: (x - joint0).mitre0 >= 0 and (x - joint1).mitre1 <= 0
   double grooveWidth = 0;               // the groove's wmax, perturbation included
   double gradSMax = 1;                  // bound of |grad s| over the region
-  Box box;
+  PlaneBounds box;
   bool linear() const { return !arc && perturbation.kind == Perturbation::Kind::None; }
 };
 
@@ -446,7 +446,7 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
       // (Nearly folded-back corners reach far: bounded by the domain size, beyond which the grid ends.)
       const double cosine = std::min(dot(c.mitre0, p.tangentAt(0)), dot(c.mitre1, p.tangentAt(1)));
       const double grow = std::min(1.01 * groove.wmax / std::max(cosine, 1e-9), 2 * domainSize);
-      Box box;
+      PlaneBounds box;
       box.take(p.a);
       box.take(p.b);
       if (c.arc) {
@@ -484,7 +484,7 @@ void ReferenceSurface::Impl::buildComponents(const GrooveScene& scene) {
 }
 
 void ReferenceSurface::Impl::buildGrid() {
-  Box bounds;
+  PlaneBounds bounds;
   bounds.take({0, 0});
   bounds.take({period[0], period[1]});
   if (!wrap) {

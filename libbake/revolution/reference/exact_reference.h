@@ -9,8 +9,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "revolution/profile.h"
-#include "revolution/shape_map.h"
+#include "bake/revolution/profile.h"
+#include "bake/revolution/shape_map.h"
 
 namespace bake::revolution::reference {
 
