@@ -387,7 +387,7 @@ def tam(d, run):
         "against the tone error and the uniformity of the ink.\n\n"
         "**Reference:** the style's target tones (exact values): the largest |tone − target| over all "
         "images, over its tolerance max(0.25 %, 0.8 / N); uniformity by the largest window coefficient of "
-        "variation (CV) and low-frequency power over the images in scope (`libbake/hatching/quality.h`).\n\n"
+        "variation (CV) and low-frequency power over the images in scope (`libbake/hatching/bake/quality.h`).\n\n"
         "**Peers in this run:** no outside implementation; K = 1 (the first random candidate, no "
         "selection) is the baseline the time ratios refer to.")
     base = {r["resolution"]: num(r["seconds"]) for r in rows if r["candidates"] == "1"}

@@ -13,7 +13,7 @@ debian_packages=(
   libeigen3-dev libsuitesparse-dev libzstd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
-  libembree-dev libsvgpp-dev libopencv-dev gnuplot-nox xvfb xauth
+  libopencv-dev gnuplot-nox xvfb xauth help2man
   clang libclang-rt-14-dev time python3
 )
 

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bench_geodesic.h"
-#include "geodesic/farthest.h"
 #include "bake/io/mesh.h"
+#include "bench_geodesic.h"
+#include "geodesic/input/farthest.h"
 
 namespace bake::bench {
 namespace {

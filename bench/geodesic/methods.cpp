@@ -8,7 +8,7 @@
 
 #include "bench_geodesic.h"
 #include "cgal_geodesic.h"
-#include "geodesic/methods.h"
+#include "geodesic/bake/methods.h"
 
 namespace bake::bench {
 namespace {

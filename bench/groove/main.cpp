@@ -28,10 +28,10 @@
 #include <nlohmann/json.hpp>
 
 #include "grooves/bake/grid.h"
-#include "grooves/reference/reference.h"
-#include "grooves/oracle/render.h"
 #include "grooves/input/scene.h"
+#include "grooves/oracle/render.h"
 #include "grooves/oracle/shade.h"
+#include "grooves/reference/reference.h"
 #include "runtime_view.h"
 
 namespace {

@@ -6,10 +6,10 @@
 #include <GL/glcorearb.h>
 
 #include "bake/core/diagnostics.h"
+#include "bake/io/glb.h"
 #include "gl/context.h"
 #include "gl/shader.h"
 #include "grooves/package/package.h"
-#include "bake/io/glb.h"
 #include "render/grooves.h"
 #include "render/target.h"
 #include "scene/scene.h"

@@ -8,10 +8,10 @@
 #include <memory>
 
 #include "bake/core/status.h"
-#include "grooves/bake/grid.h"
-#include "grooves/oracle/render.h"
-#include "grooves/input/scene.h"
 #include "bake/io/image.h"
+#include "grooves/bake/grid.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/render.h"
 
 namespace bake::grooves {
 

@@ -19,8 +19,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "core/parallel.h"
 #include "bake/revolution/shape_map.h"
+#include "core/parallel.h"
 
 namespace {
 

@@ -19,9 +19,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "revolution/march.h"
 #include "bake/revolution/profile.h"
 #include "bake/revolution/shape_map.h"
+#include "revolution/oracle/march.h"
 
 namespace {
 

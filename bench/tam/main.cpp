@@ -2,7 +2,7 @@
 // evenly spaced up to darkness 0.9, 4 stroke levels, hatching; --kind cross-hatching crosses from
 // tone 3 on, --kind stippling draws dots 1.5-2.5 px wide), sweeping the candidate count K and the
 // finest resolution. Per (K, resolution): the median construction time over --repeats builds and the
-// quality figures of hatching/quality.h (deterministic for the seed): the largest tone error and its ratio
+// quality figures of hatching/bake/quality.h (deterministic for the seed): the largest tone error and its ratio
 // to the tolerance max(0.25 %, 0.8 / N), the largest coefficient of variation over quarter-tile
 // windows and the largest low-frequency power share, over the images the uniformity targets apply to
 // and over all stroke images. Writes tam.csv (and, with --detail, images.csv: every image's figures);
@@ -18,8 +18,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "hatching/build.h"
-#include "hatching/quality.h"
+#include "hatching/bake/build.h"
+#include "hatching/bake/quality.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 # series over K = 1 .. 32 (points labelled with K), against the median construction time:
 #   1. the largest tone error over the stroke images, relative to its tolerance max(0.25 %, 0.8 / N);
 #   2. the largest coefficient of variation of the darkness over quarter-tile windows (images in the
-#      uniformity scope of hatching/quality.h; dashed: every stroke image), the 0.08 target marked;
+#      uniformity scope of hatching/bake/quality.h; dashed: every stroke image), the 0.08 target marked;
 #   3. the largest low-frequency power share (same scope; dashed: every image), the 3 % target marked.
 # Usage: gnuplot -e "dir='build-bench/results'; resolutions='64 128 256 512'" bench/tam/plot.gp
 # tam.csv: 1 candidates, 2 resolution, 3 seconds, 4 max_tone_error, 5 max_tone_error_over_tolerance,

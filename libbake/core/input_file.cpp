@@ -12,8 +12,8 @@
 #include <mutex>
 
 #include "bake/core/atomic_file.h"
-#include "core/hash.h"
 #include "bake/core/limits.h"
+#include "core/hash.h"
 
 namespace bake {
 namespace fs = std::filesystem;

@@ -10,4 +10,10 @@ std::string lowercaseExtension(const std::filesystem::path& path) {
   return extension;
 }
 
+Status checkWrittenExtension(const std::string& path, const std::string& option, const std::string& extension,
+                             const std::string& what) {
+  if (lowercaseExtension(path) == extension) return {};
+  return usageError(option + " " + path + ": " + what + " is a " + extension + " file");
+}
+
 }  // namespace bake

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <mutex>
 #include <string>
+#include <vector>
 
 namespace bake {
 
@@ -24,6 +26,8 @@ class Progress {
   // The text drawn for a given state; public so tests can check it without a terminal.
   static std::string render(const std::string& label, std::uint64_t done, std::uint64_t total,
                             int width = 30);
+  // ", about 2 min 5 s left" from the time spent on `done` of `total`; empty while too early to tell.
+  static std::string remaining(double elapsedSeconds, std::uint64_t done, std::uint64_t total);
 
  private:
   std::string label_;
@@ -31,8 +35,24 @@ class Progress {
   bool enabled_;
   bool finished_ = false;
   std::FILE* stream_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point lastDraw_{};
   std::uint64_t lastDrawn_ = ~std::uint64_t(0);
+};
+
+// One bar over `tasks` tasks of `units` units each, fed from the threads that run them (a field per
+// thread, say): each task says how far it got, the bar shows the sum.
+class TaskProgress {
+ public:
+  TaskProgress(std::string label, std::size_t tasks, std::uint64_t units, bool enabled);
+  void set(std::size_t task, std::uint64_t done);
+  bool enabled() const { return progress_.enabled(); }
+
+ private:
+  std::mutex mutex_;
+  Progress progress_;
+  std::vector<std::uint64_t> done_;
+  std::uint64_t units_ = 0, sum_ = 0;
 };
 
 // True when stderr is a terminal and --quiet was not given.

@@ -3,8 +3,8 @@
 #include <bake_formats/report.h>
 
 #include "bake/core/atomic_file.h"
-#include "core/hash.h"
 #include "bake/core/input_file.h"
+#include "core/hash.h"
 
 namespace bake {
 namespace fs = std::filesystem;

@@ -2,8 +2,8 @@
 // per-vertex distance fields geobake writes.
 #include <bake_formats/geodesic.h>
 
-#include "geodesic/package_read.h"
-#include "geodesic/pipe.h"
+#include "geodesic/package/package_read.h"
+#include "geodesic/pipe/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {

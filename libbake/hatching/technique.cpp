@@ -2,8 +2,8 @@
 // writes, drawn by real-time hatching.
 #include <bake_formats/tam.h>
 
-#include "hatching/package_read.h"
-#include "hatching/pipe.h"
+#include "hatching/package/package_read.h"
+#include "hatching/pipe/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {

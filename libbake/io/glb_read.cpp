@@ -13,9 +13,9 @@
 
 #include "bake/core/atomic_file.h"
 #include "bake/core/input_file.h"
+#include "bake/io/glb.h"
 #include "core/json_read.h"
 #include "io/draco_codec.h"
-#include "bake/io/glb.h"
 
 namespace bake::glb {
 namespace {

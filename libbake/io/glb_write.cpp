@@ -13,8 +13,8 @@
 
 #include "bake/core/atomic_file.h"
 #include "bake/core/version.h"
-#include "io/draco_codec.h"
 #include "bake/io/glb.h"
+#include "io/draco_codec.h"
 
 namespace bake::glb {
 namespace {

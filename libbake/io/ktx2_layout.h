@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "bake_formats/ktx2.h"
 #include "bake/core/status.h"
+#include "bake_formats/ktx2.h"
 #include "io/ktx2.h"
 
 namespace bake::ktx2::layout {

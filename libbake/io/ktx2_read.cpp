@@ -13,9 +13,9 @@
 #include <limits>
 #include <memory>
 
-#include "bake_formats/ktx2.h"
 #include "bake/core/atomic_file.h"
 #include "bake/core/limits.h"
+#include "bake_formats/ktx2.h"
 #include "io/ktx2.h"
 #include "io/ktx2_layout.h"
 

@@ -12,9 +12,9 @@
 #include <cstring>
 #include <limits>
 
-#include "bake_formats/ktx2.h"
 #include "bake/core/atomic_file.h"
 #include "bake/core/version.h"
+#include "bake_formats/ktx2.h"
 #include "io/ktx2.h"
 #include "io/ktx2_layout.h"
 

@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <string>
 
-#include "core/path.h"
 #include "bake/core/session.h"
 #include "bake/io/glb.h"
 #include "bake/io/image.h"
-#include "mesh/mesh_stats.h"
 #include "bake/mesh/patterns.h"
+#include "core/path.h"
+#include "mesh/mesh_stats.h"
 
 namespace bake {
 namespace {

@@ -4,8 +4,8 @@
 #include <bake_formats/paintstrokes.h>
 
 #include "info/describe.h"
-#include "paintstrokes/package.h"
-#include "paintstrokes/pipe.h"
+#include "paintstrokes/package/package.h"
+#include "paintstrokes/pipe/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {

@@ -1,5 +1,5 @@
 // Scene assembly (pipe/assemble.h): the generic merge. Each object's package is read, adapted by its
-// technique's rules (<module>/pipe_assemble.cpp: the scene's material, unread data unreferenced), and
+// technique's rules (<module>/pipe/assemble.cpp: the scene's material, unread data unreferenced), and
 // then copied into the scene package: only the bufferViews, images, textures and samplers its
 // materials reach (all of the package's data when unused data are kept), renumbered, with its meshes,
 // materials and nodes, the nodes under one new node per object. Vertex data are not copied as

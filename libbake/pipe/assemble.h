@@ -3,7 +3,7 @@
 // scale; its material replaced by the scene's; meshes, materials, images, textures and blobs
 // renumbered; and, unless asked to keep them, the data no material reads not copied: unread geodesic
 // fields, an unread displacement map or base colour, an unread threshold texture, special-case
-// records a material does not read. Per-technique rules live in each module's pipe_assemble.cpp.
+// records a material does not read. Per-technique rules live in each module's pipe/assemble.cpp.
 //
 // Cameras and KHR_lights_punctual lights of the packages are not copied (the scene's cameras frame
 // the view; each omission is listed). Meshes are written uncompressed, whatever the packages used.

@@ -1,5 +1,5 @@
 // The parts of scene assembly (pipe/assemble.h) shared by the generic merge (assemble.cpp) and the
-// per-technique rules (<module>/pipe_assemble.cpp, which the technique's scene hooks point at): what
+// per-technique rules (<module>/pipe/assemble.cpp, which the technique's scene hooks point at): what
 // an object's package is adapted against, how the indices a technique's extension holds are found
 // and renumbered, and the shape of a technique's rules.
 #pragma once

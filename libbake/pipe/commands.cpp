@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include "bake/core/atomic_file.h"
-#include "core/output_plan.h"
 #include "bake/core/session.h"
 #include "bake/io/glb.h"
+#include "core/output_plan.h"
 #include "pipe/assemble.h"
 #include "pipe/ninja.h"
 #include "pipe/plan.h"

@@ -1,7 +1,7 @@
 // What the scene pipeline needs of a technique beyond its registry row (techniques/registry.h): what
 // its objects and materials may say in a scene file (formats/scene.md), the baker step that bakes one
 // object with what the object's material does not read left out, and how its packages are assembled.
-// Each technique's module defines its hooks (<module>/pipe_plan.cpp, <module>/pipe_assemble.cpp) and
+// Each technique's module defines its hooks (<module>/pipe/plan.cpp, <module>/pipe/assemble.cpp) and
 // its registry row points at them; a technique without hooks is not offered in scene files.
 #pragma once
 
@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/json_keys.h"
 #include "bake/core/status.h"
+#include "core/json_keys.h"
 #include "pipe/plan.h"
 #include "pipe/scene.h"
 

@@ -1,8 +1,8 @@
 // The revolution technique's row in the registry (techniques/registry.h): shape maps revolbake writes.
 #include <bake_formats/revolution.h>
 
-#include "revolution/package_read.h"
-#include "revolution/pipe.h"
+#include "revolution/package/package_read.h"
+#include "revolution/pipe/pipe.h"
 #include "techniques/registry.h"
 
 namespace bake::techniques {

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stroke/coverage.h"
 #include "bake/stroke/paintstroke.h"
+#include "stroke/coverage.h"
 #include "stroke/stroke_stages.h"
 
 namespace bake::stroke::detail {

@@ -11,8 +11,8 @@
 #include <limits>
 #include <vector>
 
-#include "stroke/coverage.h"
 #include "bake/stroke/paintstroke.h"
+#include "stroke/coverage.h"
 
 namespace bake::stroke::detail {
 

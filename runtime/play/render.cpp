@@ -7,11 +7,11 @@
 #include <chrono>
 #include <cmath>
 
+#include "bake/core/session.h"
+#include "bake/io/image.h"
 #include "core/output_plan.h"
 #include "core/path.h"
-#include "bake/core/session.h"
 #include "gl/context.h"
-#include "bake/io/image.h"
 #include "render/geodesic.h"
 #include "render/paintstrokes.h"
 #include "render/renderer.h"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 #include "render/renderer.h"
 #include "scene/scene.h"

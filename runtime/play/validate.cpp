@@ -5,10 +5,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/output_plan.h"
 #include "bake/core/session.h"
-#include "gl/context.h"
 #include "bake/io/image.h"
+#include "core/output_plan.h"
+#include "gl/context.h"
 #include "render/geodesic.h"
 #include "render/renderer.h"
 #include "render/target.h"
@@ -154,8 +154,14 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
     return usageError("give one --golden per package (" + std::to_string(settings.packages.size()) + "), or none");
   }
   if (settings.size < 16 || settings.size > 4096) return usageError("--size must be 16 to 4096");
-  if (!settings.viewsDirectory.empty() && !std::filesystem::is_directory(settings.viewsDirectory)) {
-    return ioError("--views: not a directory", {settings.viewsDirectory, ""});
+  if (!settings.viewsDirectory.empty()) {
+    // Made when missing (with its parents), as `mkdir -p` would.
+    std::error_code error;
+    std::filesystem::create_directories(settings.viewsDirectory, error);
+    if (!std::filesystem::is_directory(settings.viewsDirectory)) {
+      return ioError(std::string("--views: not a directory") + (error ? " and cannot be made: " + error.message() : ""),
+                     {settings.viewsDirectory, ""});
+    }
   }
   const OutputPlanScope planScope;
   {
@@ -174,7 +180,9 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
     for (std::size_t i = 0; i < settings.packages.size(); ++i) {
       const std::string& file = settings.packages[i];
       const Verdict verdict = validateOne(file, settings.goldens.empty() ? "" : settings.goldens[i], settings, session, i);
-      std::fprintf(out, "%s %s: %s\n", verdict.pass ? "PASS" : "FAIL", file.c_str(), verdict.detail.c_str());
+      // -q: only the failures are printed.
+      if (!verdict.pass || !settings.common.quiet)
+        std::fprintf(out, "%s %s: %s\n", verdict.pass ? "PASS" : "FAIL", file.c_str(), verdict.detail.c_str());
       verdicts.push_back({{"package", file}, {"pass", verdict.pass}, {"detail", verdict.detail}});
       failed += verdict.pass ? 0 : 1;
       unreadable += !verdict.pass && verdict.failure == ExitCode::Io ? 1 : 0;

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 #include "bake/io/glb.h"
 #include "io/image_compare.h"

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gl/context.h"
 #include "bake/io/image.h"
+#include "gl/context.h"
 #include "render/renderer.h"
 #include "render/target.h"
 

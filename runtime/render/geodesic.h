@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "geodesic/package_read.h"
+#include "geodesic/package/package_read.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
 

@@ -15,8 +15,8 @@
 
 #include <bake_formats/grooves.h>
 
-#include "grooves/package/package.h"
 #include "bake/io/glb.h"
+#include "grooves/package/package.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
 

@@ -8,7 +8,7 @@
 // stage picks the tone of each of the four triangles from its Lambert term, interpolates the two
 // nearest TAM layers and blends the four colours (§3.4 Algorithm 3).
 //
-// libbake's reader (hatching/package_read.h) reads and checks the material extension.
+// libbake's reader (hatching/package/package_read.h) reads and checks the material extension.
 #pragma once
 
 #include <array>
@@ -19,9 +19,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/io/glb.h"
+#include "hatching/package/package_read.h"
 #include "io/ktx2.h"
 #include "render/renderer.h"
-#include "hatching/package_read.h"
 
 namespace bake::play {
 

@@ -11,7 +11,7 @@
 // The reference (--stroke-tubes SIDESxSTEPS) draws the same strokes as fixed tubes tessellated on the
 // CPU at load, shaded by the same formulas from the true surface normal.
 //
-// libbake reads and checks the extension (paintstrokes/package.h); paintstrokes_tubes.cpp builds the tubes;
+// libbake reads and checks the extension (paintstrokes/package/package.h); paintstrokes_tubes.cpp builds the tubes;
 // paintstrokes.cpp uploads and draws.
 #pragma once
 
@@ -22,8 +22,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/io/glb.h"
+#include "paintstrokes/package/package.h"
 #include "render/renderer.h"
-#include "paintstrokes/package.h"
 
 namespace bake::play {
 
@@ -45,7 +45,7 @@ struct PaintstrokeOptions {
 // 1..1024 (STEPS defaults to SIDES / 2, at least 1).
 Result<PaintstrokeOptions> makePaintstrokeOptions(int quality, double tolerance, const std::string& tubes);
 
-// The package is read and checked by libbake (paintstrokes/package.h).
+// The package is read and checked by libbake (paintstrokes/package/package.h).
 using paintstrokes::readPaintstrokes;
 using paintstrokes::checkPaintstrokePackage;
 

@@ -1,5 +1,5 @@
 // The command-line options of the paintstroke renderer, and the fixed-tube reference. (The package is
-// read and checked by libbake: paintstrokes/package.h, readPaintstrokes.)
+// read and checked by libbake: paintstrokes/package/package.h, readPaintstrokes.)
 //
 // Tubes (the reference, and the coarse fixed-tessellation peer): per segment, `steps` + 1 rings of
 // `sides` vertices along the same Catmull-Rom path and radius the shaders evaluate (seed 002: "we

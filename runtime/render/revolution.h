@@ -7,7 +7,7 @@
 // Eq. 14-17, or arc length along the profile), the base colour, bump mapping from the displacement
 // map (Eq. 4-5) and Blinn-Phong; its depth is written so revolved objects intersect other geometry.
 //
-// libbake's reader (revolution/package_read.h) reads and checks the material extension;
+// libbake's reader (revolution/package/package_read.h) reads and checks the material extension;
 // revolution.cpp uploads the maps and draws.
 #pragma once
 
@@ -20,8 +20,8 @@
 
 #include "bake/io/glb.h"
 #include "render/gpu_mesh.h"
-#include "revolution/package_read.h"
 #include "render/renderer.h"
+#include "revolution/package/package_read.h"
 
 namespace bake::play {
 

@@ -11,8 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/json_keys.h"
 #include "bake/core/vector_text.h"
+#include "core/json_keys.h"
 #include "io/glb_scene.h"
 
 namespace bake::play {

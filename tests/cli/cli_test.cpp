@@ -15,8 +15,11 @@
 
 #include <chrono>
 #include <fstream>
+#include <cstdio>
 #include <map>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -291,6 +294,7 @@ class CliCase : public ::testing::TestWithParam<Case> {
       EXPECT_NE(result.err.find(expand(fragment)), std::string::npos) << "stderr lacks \"" << expand(fragment) << "\":\n" << result.err;
     }
     if (spec_.value("stderrEmpty", false)) EXPECT_EQ(result.err, "");
+    if (spec_.value("stdoutEmpty", false)) EXPECT_EQ(result.out, "");
     if (spec_.contains("stdoutGolden")) {
       std::string normalised = result.out;
       replaceAll(normalised, sourceDir().string(), "${source}");
@@ -483,6 +487,74 @@ TEST(BadInputCorpus, CoversEveryCategory) {
   for (const std::string& category : corpusCategories()) {
     EXPECT_GE(perCategory[category], 3) << "category " << category;
   }
+}
+
+// ---- Help in our words -------------------------------------------------------------------------
+
+// What `TOOL [SUBCOMMAND] --help` prints (stdout and stderr together).
+std::string helpOf(const std::string& tool, const std::string& subcommand) {
+  const std::string command = "'" + tool + "'" + (subcommand.empty() ? "" : " " + subcommand) + " --help 2>&1";
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+    pclose(pipe);
+  }
+  return out;
+}
+
+// The names listed under "Subcommands:" in a help text.
+std::vector<std::string> subcommandsIn(const std::string& help) {
+  std::vector<std::string> names;
+  std::istringstream lines(help);
+  bool inList = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("Subcommands:", 0) == 0) {
+      inList = true;
+    } else if (inList && line.rfind("  ", 0) == 0 && line.size() > 2 && line[2] != ' ') {
+      names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    } else if (inList && !line.empty() && line[0] != ' ') {
+      inList = false;
+    }
+  }
+  return names;
+}
+
+// The lines of `help` that show the parser's own words: CLI11's type names (ENUM:value in {a->0},
+// UINT, TEXT, NONNEGATIVE, REQUIRED) or a default as std::to_string writes it (2.500000).
+std::vector<std::string> foreignLines(const std::string& help) {
+  static const std::regex kForeign(R"(\b(ENUM|UINT|INT|FLOAT|TEXT|NUMBER|NONNEGATIVE|POSITIVE|REQUIRED)\b|->|OR \{|\{(true|false)\}|\d\.\d*00000\b)");
+  std::vector<std::string> found;
+  std::istringstream lines(help);
+  for (std::string line; std::getline(lines, line);)
+    if (std::regex_search(line, kForeign)) found.push_back(line);
+  return found;
+}
+
+TEST(HelpText, EveryToolAndSubcommandSpeaksOurWords) {
+  std::size_t helps = 0;
+  for (const auto& [name, path] : toolPaths()) {
+    const std::string help = helpOf(path, "");
+    ASSERT_NE(help.find("Usage:"), std::string::npos) << name << " --help printed:\n" << help;
+    std::vector<std::pair<std::string, std::string>> texts{{name, help}};
+    for (const std::string& sub : subcommandsIn(help)) texts.push_back({name + " " + sub, helpOf(path, sub)});
+    for (const auto& [what, text] : texts) {
+      ++helps;
+      EXPECT_NE(text.find("Usage:"), std::string::npos) << what << " --help";
+      for (const std::string& line : foreignLines(text)) ADD_FAILURE() << what << " --help: " << line;
+    }
+  }
+  EXPECT_GE(helps, toolPaths().size() + 6);  // bakeplay's three subcommands, bakepipe's three
+}
+
+TEST(HelpText, TheCheckFindsTheParsersWords) {
+  // The check itself, on lines CLI11 printed before the help had its own words.
+  EXPECT_EQ(foreignLines("  --method ENUM:value in {exact->0,fmm->2,heat->1} OR {0,2,1}=exact").size(), 1u);
+  EXPECT_EQ(foreignLines("  -j,--threads UINT:UINT in [0 - 1024]").size(), 1u);
+  EXPECT_EQ(foreignLines("  mesh TEXT REQUIRED          Input mesh").size(), 1u);
+  EXPECT_EQ(foreignLines("  --shadow-density FLOAT=2.500000").size(), 1u);
+  EXPECT_EQ(foreignLines("  --no-shadows{false}         Bake no shadow table").size(), 1u);
+  EXPECT_EQ(foreignLines("  --length X (default: 0.05)  Stroke length, POINTS and TEXTURES").size(), 0u);
 }
 
 }  // namespace

@@ -21,6 +21,12 @@ for tool in groovebake geobake; do
 done
 [ -f "$work/prefix/lib/cmake/BakeTools/BakeToolsConfig.cmake" ] || fail "no BakeToolsConfig.cmake installed"
 [ -f "$work/prefix/lib/cmake/BakeTools/BakeToolsConfigVersion.cmake" ] || fail "no BakeToolsConfigVersion.cmake installed"
+# The man pages (made by help2man from --help) are installed with the tools.
+if command -v help2man >/dev/null; then
+  for tool in groovebake geobake tambake; do
+    grep -qF -- '\-\-output' "$work/prefix/share/man/man1/$tool.1" 2>/dev/null || fail "no man page share/man/man1/$tool.1"
+  done
+fi
 # The image codec module is installed with the tools, and an installed tool loads that copy (not the
 # build tree's) the first time it writes an image.
 codec=$(find "$work/prefix" -name libbake_image_oiio.so | head -n 1)

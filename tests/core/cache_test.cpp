@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "bake/core/cache.h"
-#include "common/cli.h"
 #include "bake/core/session.h"
+#include "common/cli.h"
 #include "support/golden.h"
 
 namespace bake {

@@ -9,9 +9,9 @@
 #include <thread>
 
 #include "bake/core/atomic_file.h"
-#include "core/hash.h"
 #include "bake/core/input_file.h"
 #include "bake/core/limits.h"
+#include "core/hash.h"
 #include "support/golden.h"
 
 namespace bake {

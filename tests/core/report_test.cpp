@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
 #include "bake/core/atomic_file.h"
+#include "bake/core/report.h"
 #include "core/hash.h"
 #include "core/progress.h"
-#include "bake/core/report.h"
 #include "support/golden.h"
 
 namespace bake {
@@ -47,6 +47,13 @@ TEST(Report, RecordsInputsStagesAccuracyAndWarnings) {
 TEST(Progress, RendersABar) {
   EXPECT_EQ(Progress::render("solve", 5, 10, 10), "solve [#####     ] 50%");
   EXPECT_EQ(Progress::render("solve", 0, 0, 4), "solve [####] 100%");
+  // The time left, from the rate so far; nothing while too early to tell or when done.
+  EXPECT_EQ(Progress::remaining(1.0, 5, 10), "");
+  EXPECT_EQ(Progress::remaining(10.0, 0, 10), "");
+  EXPECT_EQ(Progress::remaining(10.0, 50, 100), ", about 10 s left");
+  EXPECT_EQ(Progress::remaining(60.0, 10, 100), ", about 9 min 0 s left");
+  EXPECT_EQ(Progress::remaining(3600.0, 25, 100), ", about 3 h 0 min left");
+  EXPECT_EQ(Progress::remaining(10.0, 100, 100), "");
   char drawn[128] = {};
   std::FILE* stream = ::fmemopen(drawn, sizeof drawn, "w");
   {
@@ -54,7 +61,7 @@ TEST(Progress, RendersABar) {
     progress.update(4);
   }
   std::fclose(stream);
-  EXPECT_STREQ(drawn, "\rx [##############################] 100%\n");
+  EXPECT_STREQ(drawn, "\rx [##############################] 100%\033[K\n");  // \033[K: clear the rest of the line
   char silent[64] = {};
   stream = ::fmemopen(silent, sizeof silent, "w");
   {

@@ -3,9 +3,9 @@
 // and the geodesic surface build (welding, duplicate faces, edges, components).
 #include <cstring>
 
-#include "fuzz_support.h"
 #include "bake/geodesic/surface.h"
 #include "bake/io/mesh.h"
+#include "fuzz_support.h"
 
 namespace {
 

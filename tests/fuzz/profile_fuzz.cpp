@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "fuzz_support.h"
 #include "bake/revolution/profile.h"
+#include "fuzz_support.h"
 
 namespace {
 

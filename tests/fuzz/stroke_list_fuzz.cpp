@@ -3,10 +3,10 @@
 // which the mesh target covers) and the validation and repair every bake runs.
 #include "bake/core/diagnostics.h"
 #include "bake/core/limits.h"
-#include "fuzz_support.h"
 #include "bake/paintstrokes/generators.h"
-#include "paintstrokes/input.h"
-#include "paintstrokes/validate.h"
+#include "fuzz_support.h"
+#include "paintstrokes/input/input.h"
+#include "paintstrokes/input/validate.h"
 
 // A control-point budget a thousand times below the default: a merely large list is the budget's
 // business (tested elsewhere) and would only reach libFuzzer's time-out here.

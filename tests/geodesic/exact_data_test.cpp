@@ -11,9 +11,9 @@
 #include <iostream>
 #include <queue>
 
-#include "cgal_geodesic.h"
-#include "geodesic/exact.h"
 #include "bake/io/mesh.h"
+#include "cgal_geodesic.h"
+#include "geodesic/bake/exact.h"
 #include "support/data.h"
 
 namespace bake::geodesic {

@@ -2,7 +2,7 @@
 // grids with perturbed triangulations, the unfolded straight line across a cube's edge, the unrolled
 // distance on a cylinder side, unfolded pages of a non-manifold book, other components unreachable,
 // and the combined field of several sources equal to the minimum of the single fields.
-#include "geodesic/exact.h"
+#include "geodesic/bake/exact.h"
 
 #include <gtest/gtest.h>
 

@@ -12,10 +12,10 @@
 #include <fstream>
 #include <string>
 
-#include "geodesic/methods.h"
 #include "bake/geodesic/surface.h"
 #include "bake/io/glb.h"
 #include "bake/io/mesh.h"
+#include "geodesic/bake/methods.h"
 
 namespace bake::geodesic {
 namespace {

@@ -12,9 +12,9 @@
 #include <map>
 #include <numbers>
 
-#include "geodesic/fmm.h"
 #include "bake/geodesic/sources.h"
 #include "bake/io/mesh.h"
+#include "geodesic/bake/fmm.h"
 
 namespace bake::geodesic {
 namespace {

@@ -14,10 +14,10 @@
 #include <utility>
 #include <string>
 
-#include "geodesic/exact.h"
 #include "bake/geodesic/heat.h"
-#include "geodesic/heat_meshes.h"
 #include "bake/io/mesh.h"
+#include "geodesic/bake/exact.h"
+#include "geodesic/heat_meshes.h"
 
 namespace bake::geodesic {
 namespace {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <thread>
 
-#include "geodesic/heat_intrinsic.h"
+#include "geodesic/bake/heat_intrinsic.h"
+#include "geodesic/bake/heat_timestep.h"
 #include "geodesic/heat_meshes.h"
-#include "geodesic/heat_timestep.h"
 
 namespace bake::geodesic {
 namespace {

@@ -1,4 +1,4 @@
-#include "geodesic/snap.h"
+#include "geodesic/input/snap.h"
 
 #include <gtest/gtest.h>
 

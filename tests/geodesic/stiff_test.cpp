@@ -8,9 +8,9 @@
 #include <functional>
 #include <string>
 
-#include "geodesic/methods.h"
 #include "bake/geodesic/surface.h"
 #include "bake/io/mesh.h"
+#include "geodesic/bake/methods.h"
 #include "support/data.h"
 
 namespace bake::geodesic {

@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/core/vec.h"
-#include "grooves/reference/reference.h"
-#include "grooves/oracle/shade.h"
 #include "groove_support.h"
+#include "grooves/oracle/shade.h"
+#include "grooves/reference/reference.h"
 
 namespace bake::grooves {
 namespace {

@@ -11,11 +11,11 @@
 #include <gtest/gtest.h>
 
 #include "bake/core/vec.h"
-#include "grooves/oracle/area_surface.h"
-#include "grooves/reference/reference.h"
-#include "grooves/input/scene.h"
-#include "grooves/oracle/shade_local.h"
 #include "grooves/groove_support.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/area_surface.h"
+#include "grooves/oracle/shade_local.h"
+#include "grooves/reference/reference.h"
 
 namespace bake::grooves::area_test {
 constexpr double kW = 0.01, kD = 0.005;  // the V-groove's half-width and depth

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "grooves/bake/far_level.h"
-#include "grooves/package/package.h"
-#include "grooves/oracle/shade.h"
 #include "groove_support.h"
+#include "grooves/bake/far_level.h"
+#include "grooves/oracle/shade.h"
+#include "grooves/package/package.h"
 
 namespace bake::grooves {
 namespace {

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "grooves/bake/grid.h"
-#include "grooves/input/scene.h"
 #include "grooves/groove_support.h"
+#include "grooves/input/scene.h"
 
 namespace bake::grooves {
 namespace {

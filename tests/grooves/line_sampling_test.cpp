@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/core/vec.h"
-#include "grooves/oracle/line_sampling_section.h"
 #include "grooves/input/scene.h"
+#include "grooves/oracle/line_sampling_section.h"
 
 namespace bake::grooves {
 namespace {

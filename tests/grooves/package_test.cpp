@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "bake/io/glb.h"
 #include "bake_formats/grooves.h"
 #include "grooves/package/package.h"
-#include "bake/io/glb.h"
 #include "support/golden.h"
 
 namespace bake::grooves {

@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/core/vec.h"
+#include "grooves/input/scene.h"
 #include "grooves/oracle/line_sampling_section.h"
 #include "grooves/reference/reference.h"
-#include "grooves/input/scene.h"
 
 namespace bake::grooves {
 namespace {

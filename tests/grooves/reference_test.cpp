@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "bake/core/vec.h"
-#include "grooves/reference/reference.h"
 #include "grooves/input/scene.h"
+#include "grooves/reference/reference.h"
 
 namespace bake::grooves {
 namespace {

@@ -10,10 +10,10 @@
 
 #include "bake/core/vec.h"
 #include "grooves/bake/grid.h"
-#include "grooves/oracle/line_sampling_section.h"
-#include "grooves/input/scene.h"
-#include "grooves/oracle/shade.h"
 #include "grooves/groove_support.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/line_sampling_section.h"
+#include "grooves/oracle/shade.h"
 
 namespace bake::grooves {
 namespace {

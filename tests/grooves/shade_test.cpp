@@ -10,11 +10,11 @@
 
 #include "bake/core/vec.h"
 #include "grooves/bake/grid.h"
-#include "grooves/oracle/line_sampling_section.h"
-#include "grooves/reference/reference.h"
-#include "grooves/input/scene.h"
-#include "grooves/oracle/shade.h"
 #include "grooves/groove_support.h"
+#include "grooves/input/scene.h"
+#include "grooves/oracle/line_sampling_section.h"
+#include "grooves/oracle/shade.h"
+#include "grooves/reference/reference.h"
 
 namespace bake::grooves {
 namespace {

@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "bake/core/atomic_file.h"
+#include "bake/hatching/bake.h"
 #include "bake/io/glb.h"
+#include "hatching/bake/bake_stages.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
 #include "support/node_check.h"
-#include "bake/hatching/bake.h"
-#include "hatching/bake_stages.h"
 
 namespace bake::hatching {
 namespace {

@@ -1,4 +1,4 @@
-// TAM construction (hatching/build.h): the quality targets on the default style, nesting across tones
+// TAM construction (hatching/bake/build.h): the quality targets on the default style, nesting across tones
 // (pixelwise) and resolutions (each placed stroke in every finer level), determinism across thread
 // counts, every stroke kind, wrapping tiles, the box-filtered mips, the threshold texture, style
 // errors, and the stiff cases (one tone, tone 0.99, an 8-texel tile, huge strokes, K = 1).
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "hatching/build.h"
-#include "hatching/quality.h"
+#include "hatching/bake/build.h"
+#include "hatching/bake/quality.h"
 
 namespace bake::hatching {
 namespace {

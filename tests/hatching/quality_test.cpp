@@ -1,4 +1,4 @@
-// TAM quality figures (hatching/quality.h) on synthetic images with known answers: uniform images,
+// TAM quality figures (hatching/bake/quality.h) on synthetic images with known answers: uniform images,
 // half-black images, pure cosines below and above 4 cycles per tile, windows of known darkness, and
 // hand-built maps with a known nesting violation, a non-monotone pair of tones and a missing stroke.
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hatching/quality.h"
+#include "hatching/bake/quality.h"
 
 namespace bake::hatching {
 namespace {

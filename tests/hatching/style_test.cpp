@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "bake/hatching/style.h"
 #include "bake/io/image.h"
 #include "support/golden.h"
-#include "bake/hatching/style.h"
 
 namespace bake::hatching {
 namespace {

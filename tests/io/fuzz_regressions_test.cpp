@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "grooves/package/package.h"
 #include "bake/io/glb.h"
-#include "io/ktx2.h"
 #include "bake/io/mesh.h"
+#include "grooves/package/package.h"
+#include "io/ktx2.h"
 
 namespace bake {
 namespace {

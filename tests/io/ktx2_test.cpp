@@ -14,10 +14,10 @@
 #include <random>
 #include <sstream>
 
-#include "bake_formats/ktx2.h"
 #include "bake/core/atomic_file.h"
 #include "bake/core/limits.h"
 #include "bake/core/version.h"
+#include "bake_formats/ktx2.h"
 #include "io/ktx2.h"
 #include "support/golden.h"
 #include "support/node_check.h"

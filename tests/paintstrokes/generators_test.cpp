@@ -1,4 +1,4 @@
-// Stroke generators (paintstrokes/grow.cpp, tree.cpp, generators.cpp): strokes grown on a mesh land on its
+// Stroke generators (paintstrokes/input/grow.cpp, tree.cpp, generators.cpp): strokes grown on a mesh land on its
 // surface, follow its normals, scatter in proportion to area and are identical for a seed; a tree has
 // the stroke count its branching gives, shrinking radii and continuous joints; generator entries with
 // bad values are refused naming the entry's member.

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "bake/core/limits.h"
-#include "paintstrokes/input.h"
+#include "paintstrokes/input/input.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "bake_formats/paintstrokes.h"
 #include "bake/io/glb.h"
-#include "paintstrokes/package.h"
+#include "bake_formats/paintstrokes.h"
+#include "paintstrokes/package/package.h"
 #include "support/golden.h"
 
 namespace bake::paintstrokes {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "paintstrokes/shadow.h"
+#include "paintstrokes/bake/shadow.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "bake/io/glb.h"
 #include "bake/paintstrokes/generators.h"
-#include "paintstrokes/package.h"
-#include "paintstrokes/validate.h"
+#include "paintstrokes/input/validate.h"
+#include "paintstrokes/package/package.h"
 
 namespace bake::paintstrokes {
 namespace {

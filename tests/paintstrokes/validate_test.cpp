@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "paintstrokes/validate.h"
+#include "paintstrokes/input/validate.h"
 
 namespace bake::paintstrokes {
 namespace {

@@ -18,16 +18,16 @@
 
 #include "bake/core/diagnostics.h"
 #include "bake/geodesic/bake.h"
-#include "grooves/bake/grid.h"
-#include "grooves/package/package.h"
-#include "grooves/input/scene.h"
+#include "bake/hatching/bake.h"
 #include "bake/io/glb.h"
 #include "bake/io/image.h"
 #include "bake/mesh/patterns.h"
 #include "bake/mesh/shape_tool.h"
-#include "pipe/scene.h"
 #include "bake/revolution/bake.h"
-#include "bake/hatching/bake.h"
+#include "grooves/bake/grid.h"
+#include "grooves/input/scene.h"
+#include "grooves/package/package.h"
+#include "pipe/scene.h"
 
 namespace bake::test {
 

@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "bake_formats/revolution.h"
 #include "bake/io/glb.h"
 #include "bake/revolution/bake.h"
+#include "bake_formats/revolution.h"
 #include "support/golden.h"
 
 namespace bake::revolution {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "revolution/bake_stages.h"
+#include "revolution/bake/bake_stages.h"
 
 namespace bake::revolution {
 namespace {

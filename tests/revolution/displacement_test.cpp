@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <numbers>
 
-#include "revolution/displacement.h"
+#include "revolution/bake/displacement.h"
 
 namespace bake::revolution {
 namespace {

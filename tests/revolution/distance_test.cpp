@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "revolution/profile_shapes.h"
 #include "bake/revolution/shape_map.h"
+#include "revolution/profile_shapes.h"
 
 namespace bake::revolution {
 namespace {

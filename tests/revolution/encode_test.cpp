@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "revolution/profile_shapes.h"
 #include "bake/revolution/shape_map.h"
+#include "revolution/profile_shapes.h"
 
 namespace bake::revolution {
 namespace {

@@ -15,7 +15,7 @@
 #include <random>
 #include <string>
 
-#include "revolution/march.h"
+#include "revolution/oracle/march.h"
 #include "revolution/profile_shapes.h"
 
 namespace bake::revolution {

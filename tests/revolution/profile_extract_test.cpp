@@ -10,7 +10,7 @@
 
 #include "bake/io/glb.h"
 #include "bake/revolution/bake.h"
-#include "revolution/profile_extract.h"
+#include "revolution/input/profile_extract.h"
 #include "support/golden.h"
 
 namespace bake::revolution {

@@ -9,9 +9,9 @@
 #include <limits>
 #include <numbers>
 
-#include "revolution/profile_geometry.h"
-#include "revolution/profile_shapes.h"
 #include "bake/revolution/shape_map.h"
+#include "revolution/input/profile_geometry.h"
+#include "revolution/profile_shapes.h"
 #include "support/golden.h"
 
 namespace bake::revolution {

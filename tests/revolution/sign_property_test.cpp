@@ -12,8 +12,8 @@
 #include <random>
 #include <sstream>
 
-#include "revolution/reference/exact_reference.h"
 #include "bake/revolution/shape_map.h"
+#include "revolution/reference/exact_reference.h"
 
 namespace bake::revolution {
 namespace {

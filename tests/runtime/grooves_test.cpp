@@ -19,17 +19,17 @@
 #include <optional>
 #include <sstream>
 
+#include "bake/io/glb.h"
 #include "grooves/bake/grid.h"
-#include "grooves/package/package.h"
-#include "grooves/reference/reference.h"
 #include "grooves/input/scene.h"
 #include "grooves/oracle/shade.h"
-#include "bake/io/glb.h"
+#include "grooves/package/package.h"
+#include "grooves/reference/reference.h"
 #include "play/validate.h"
 #include "render/grooves.h"
 #include "render/target.h"
-#include "runtime/golden_image.h"
 #include "runtime/gl_test.h"
+#include "runtime/golden_image.h"
 #include "scene/scene.h"
 #include "support/golden.h"
 

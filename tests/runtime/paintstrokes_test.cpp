@@ -18,12 +18,12 @@
 #include <vector>
 
 #include "bake/io/glb.h"
+#include "paintstrokes/package/package.h"
 #include "play/validate.h"
 #include "render/paintstrokes.h"
 #include "render/target.h"
 #include "runtime/gl_test.h"
 #include "scene/scene.h"
-#include "paintstrokes/package.h"
 #include "support/golden.h"
 
 namespace bake::play {

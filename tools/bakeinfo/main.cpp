@@ -1,8 +1,8 @@
 // bakeinfo: describes packages (.glb/.gltf with BAKE_* extensions, .ktx2) as text or JSON.
 #include <cstdio>
 
-#include "common/cli.h"
 #include "bake/info/bakeinfo.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   bake::info::Settings settings;

@@ -1,8 +1,8 @@
 // bakepipe: bakes only what a scene needs (formats/scene.md). `plan` prints the bake steps and what
 // they leave out, `ninja` writes them as a Ninja file, `assemble` merges the baked packages into one
 // scene package, `validate` runs bakeplay validate on it.
-#include "common/cli.h"
 #include "bake/pipe/commands.h"
+#include "common/cli.h"
 
 namespace {
 

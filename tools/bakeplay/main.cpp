@@ -12,12 +12,15 @@ const bake::CommonOptionSet kReportOnly = {.version = false, .report = true, .de
 
 void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::string& size) {
   command.add_option("scenes", view.scenes, "Packages (.glb/.gltf) that together make the scene; none: the bundled example");
-  command.add_option("--size", size, "Frame or window size WIDTHxHEIGHT")->capture_default_str();
-  command.add_option("--camera", view.camera, "Camera eye x,y,z or eye:target x,y,z:x,y,z (default: the file's camera, else framed)");
-  command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)");
+  command.add_option("--size", size, "Frame or window size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
+  command.add_option("--camera", view.camera, "Camera eye x,y,z or eye:target x,y,z:x,y,z (default: the file's camera, else framed)")
+      ->type_name("EYE[:TARGET]");
+  command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)")
+      ->type_name("X,Y,Z");
   command.add_option("--geotexture", view.geotexture,
                      "GeoTexture preset for every primitive with geodesic fields (isolines, sand-water, moss-granite, "
-                     "paint-metal-rust, water-lava, opacity-front, wave-displacement)");
+                     "paint-metal-rust, water-lava, opacity-front, wave-displacement)")
+      ->type_name("PRESET");
   command.add_option("--time", view.time, "Animation time in seconds (GeoTexture fronts with a speed)")->capture_default_str();
   command.add_option("--stroke-quality", view.strokeQuality,
                      "Paintstrokes: polygons across each segment, 0: 1 (flat), 1: 2, 2: 4")

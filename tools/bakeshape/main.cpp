@@ -1,8 +1,8 @@
 // bakeshape: generates the example and test shapes (sphere, torus, double torus, pretzel) as meshes.
-#include "common/cli.h"
 #include "bake/core/session.h"
 #include "bake/mesh/patterns.h"
 #include "bake/mesh/shape_tool.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   bake::ShapeToolSettings settings;
@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
                "and tileable example images (colour textures, height maps) when the output ends in .png.",
                "bakeshape"};
   app.add_option("shape", settings.shape.name, "A shape: " + names + "; or, with a .png output, a pattern: " + patterns)
+      ->type_name("NAME")
       ->required();
   app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj), or pattern image (.png)")->required();
   app.add_option("--resolution", settings.shape.resolution,

@@ -1,11 +1,14 @@
 #include "common/cli.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <memory>
 #include <new>
+#include <regex>
 #include <set>
 
 #include "bake/core/input_file.h"
@@ -106,7 +109,7 @@ Status checkNumber(const CLI::Option& option, const std::string& type, const std
 
 // Options that name files: an empty value names no file.
 bool namesAFile(const CLI::Option& option) {
-  static const std::set<std::string> kFileOptions{"output", "report", "depfile", "threshold", "package", "views",
+  static const std::set<std::string> kFileOptions{"output", "report", "depfile", "threshold", "package", "views", "base-color", "golden", "screenshot",
                                                   "sources", "apply-to", "cache-dir", "height-map", "out-dir"};
   for (const std::string& name : option.get_lnames()) {
     if (kFileOptions.count(name)) return true;
@@ -128,6 +131,155 @@ Status checkOptionValues(const CLI::App& app) {
     if (!sub->get_name().empty() && sub->parsed()) BAKE_RETURN_IF_ERROR(checkOptionValues(*sub));
   }
   return {};
+}
+
+bool namesADirectory(const CLI::Option& option) {
+  static const std::set<std::string> kDirectoryOptions{"views", "cache-dir", "out-dir", "tools"};
+  for (const std::string& name : option.get_lnames()) {
+    if (kDirectoryOptions.count(name)) return true;
+  }
+  return false;
+}
+
+// ---- Help and errors in our words -------------------------------------------------------------
+// CLI11 shows its own type names ("ENUM:value in {exact->0,fmm->2} OR {0,2}", "UINT:UINT in [0 -
+// 1024]", "TEXT"), defaults as std::to_string wrote them ("2.500000") and messages such as "Check
+// dijkstra value in {...} FAILED". The help below says what to type (exact|fmm, N (0 to 1024),
+// FILE, default 2.5) and the errors say what was wrong in the same words.
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
+// The names of an enumeration or a set of allowed values, from "...{a->0,b->1}..." or "...{a,b}...".
+std::vector<std::string> choicesIn(const std::string& text) {
+  const std::size_t open = text.find('{'), close = text.find('}', open);
+  if (open == std::string::npos || close == std::string::npos) return {};
+  std::vector<std::string> names;
+  for (const std::string& item : splitList(text.substr(open + 1, close - open - 1))) {
+    names.push_back(item.substr(0, item.find("->")));
+  }
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
+
+// A number as users write it: "2.5", not "2.500000".
+std::string plainNumber(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return text;
+  char buffer[64];
+  const auto written = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, written.ptr);
+}
+
+// " (0 to 1024)" from CLI11's range and sign validators in the type name.
+std::string rangeIn(const std::string& type) {
+  const std::size_t open = type.find('['), close = type.find(']', open);
+  if (open != std::string::npos && close != std::string::npos) {
+    std::string range = type.substr(open + 1, close - open - 1);
+    if (const std::size_t dash = range.find(" - "); dash != std::string::npos) range.replace(dash, 3, " to ");
+    return " (" + range + ")";
+  }
+  if (type.find("NONNEGATIVE") != std::string::npos) return " (0 or more)";
+  if (type.find("POSITIVE") != std::string::npos) return " (more than 0)";
+  return "";
+}
+
+std::string valueLabel(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  if (type.find('{') != std::string::npos) return joined(choicesIn(type), "|");
+  const std::string base = type.substr(0, type.find(':'));
+  if (base == "INT" || base == "UINT") return "N" + rangeIn(type);
+  if (base == "FLOAT" || base == "NUMBER") return "X" + rangeIn(type);
+  if (base == "TEXT") {
+    if (namesADirectory(option)) return "DIR";
+    return option.get_positional() || namesAFile(option) ? "FILE" : "VALUE";
+  }
+  return type;  // a name the tool gave: "X,Y,Z", "NAME=N", ...
+}
+
+class HelpFormatter : public CLI::Formatter {
+ public:
+  // A flag declared "--no-shadows{false}" is shown as --no-shadows.
+  std::string make_option_name(const CLI::Option* option, bool positional) const override {
+    std::string name = CLI::Formatter::make_option_name(option, positional);
+    for (std::size_t open; (open = name.find('{')) != std::string::npos;) {
+      const std::size_t close = name.find('}', open);
+      if (close == std::string::npos) break;
+      name.erase(open, close - open + 1);
+    }
+    return name;
+  }
+
+  std::string make_option_opts(const CLI::Option* option) const override {
+    std::string out;
+    if (option->get_type_size() != 0) {
+      const std::string label = valueLabel(*option);
+      if (!label.empty()) out += " " + label;
+      if (option->get_expected_max() == CLI::detail::expected_max_vector_size) out += " ...";
+      if (!option->get_default_str().empty()) out += " (default: " + plainNumber(option->get_default_str()) + ")";
+      if (option->get_required()) out += " (required)";
+    }
+    if (!option->get_needs().empty()) {
+      std::vector<std::string> names;
+      for (const CLI::Option* other : option->get_needs()) names.push_back(other->get_name());
+      out += " (needs " + joined(names, ", ") + ")";
+    }
+    if (!option->get_excludes().empty()) {
+      std::vector<std::string> names;
+      for (const CLI::Option* other : option->get_excludes()) names.push_back(other->get_name());
+      out += " (not with " + joined(names, ", ") + ")";
+    }
+    return out;
+  }
+};
+
+void useHelpFormatter(CLI::App& app, const std::shared_ptr<CLI::Formatter>& formatter) {
+  app.formatter(formatter);
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) useHelpFormatter(*sub, formatter);
+}
+
+// A parse error in our words (see above); messages already in words pass unchanged.
+std::string inOurWords(const std::string& message) {
+  std::smatch m;
+  // "--method: Check dijkstra value in {exact->0,...} OR {0,...} FAILED" (an enumeration)
+  static const std::regex kEnumeration(R"(^(.*): Check (.*) value in (\{[^}]*\}).* FAILED$)");
+  if (std::regex_match(message, m, kEnumeration)) {
+    return m[1].str() + ": '" + m[2].str() + "' is not one of " + joined(choicesIn(m[3].str()), ", ");
+  }
+  // "--orientation: sideways not in {toward-light,across-light}" (a set of values)
+  static const std::regex kMember(R"(^(.*): (.*) not in (\{[^}]*\})$)");
+  if (std::regex_match(message, m, kMember)) {
+    return m[1].str() + ": '" + m[2].str() + "' is not one of " + joined(choicesIn(m[3].str()), ", ");
+  }
+  // "--skip-levels: Number less then 0: (-1)" (CLI11's sign validators)
+  static const std::regex kSign(R"(^(.*): Number less (?:then|than) 0: \((.*)\)$)");
+  if (std::regex_match(message, m, kSign)) return m[1].str() + ": " + m[2].str() + " is below 0";
+  // "--threads: Value 2000 not in range 0 to 1024" (CLI11's Range, NonNegativeNumber, ...)
+  static const std::regex kRange(R"(^(.*): Value (.*) not in range \[?(.*?)(?: - | to )(.*?)\]?$)");
+  if (std::regex_match(message, m, kRange)) {
+    const std::string low = plainNumber(m[3].str()), high = m[4].str();
+    if (std::strtod(high.c_str(), nullptr) > 1e300) return m[1].str() + ": " + m[2].str() + " is below " + low;
+    return m[1].str() + ": " + m[2].str() + " is outside " + low + " to " + plainNumber(high);
+  }
+  // "Could not convert: --resolution = abc"
+  static const std::regex kConversion(R"(^Could not convert: (.*) = (.*)$)");
+  if (std::regex_match(message, m, kConversion)) return m[1].str() + ": '" + m[2].str() + "' is not a number";
+  return message;
 }
 
 bool isNumeric(const CLI::Option& option) {
@@ -157,6 +309,7 @@ GivenOptions givenOptions(const CLI::App& app) {
 
 int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
             const std::function<Status()>& body) {
+  useHelpFormatter(app, std::make_shared<HelpFormatter>());
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -166,7 +319,7 @@ int runTool(CLI::App& app, Diagnostics& diagnostics, int argc, char** argv,
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    diagnostics.error(std::string(e.what()) + " (run with --help for usage)");
+    diagnostics.error(inOurWords(e.what()) + " (run with --help for usage)");
     return int(ExitCode::Usage);
   }
   if (const Status values = checkOptionValues(app); !values.isOk()) {

@@ -5,10 +5,10 @@
 #include <cstdlib>
 #include <map>
 
-#include "common/cli.h"
 #include "bake/core/session.h"
 #include "bake/core/vector_text.h"
 #include "bake/geodesic/bake.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   using namespace bake::geodesic;
@@ -24,13 +24,15 @@ int main(int argc, char** argv) {
 
   auto* sources = app.add_option_group("Sources", "At least one kind is needed");
   sources->add_option("--source-vertex", settings.sourceVertices, "Source at this input vertex index (repeatable)");
-  sources->add_option("--source-point", points, "Source at the surface point nearest to X,Y,Z (repeatable)");
-  sources->add_option("--source-node", settings.sourceNodes, "Source at the named glTF node (repeatable)");
+  sources->add_option("--source-point", points, "Source at the surface point nearest to X,Y,Z (repeatable)")
+      ->type_name("X,Y,Z");
+  sources->add_option("--source-node", settings.sourceNodes, "Source at the named glTF node (repeatable)")->type_name("NAME");
   sources->add_option("--sources", settings.sourcesFile,
                       "JSON file of fields: {\"fields\": [{\"name\": ..., \"sources\": [{\"vertex\": i} | "
                       "{\"point\": [x, y, z]} | {\"node\": \"name\"}]}]}");
   sources->add_option("--fields", settings.onlyFields,
                       "Bake only these fields of the --sources file, by name (comma-separated or repeated)")
+      ->type_name("NAME")
       ->delimiter(',');
   sources->add_option("--auto-sources", settings.autoSources, "Add N sources by farthest-point sampling");
   app.add_flag("--combine", settings.combine,
@@ -62,7 +64,8 @@ int main(int argc, char** argv) {
                  "Heat method: time step t = m h^2 with this m (0: chosen from the mesh)")
       ->default_str("0");
   app.add_option("--geotexture", settings.geotexture,
-                 "Add a material choosing this GeoTexture preset for bakeplay (formats/geodesic-material.md)");
+                 "Add a material choosing this GeoTexture preset for bakeplay (formats/geodesic-material.md)")
+      ->type_name("PRESET");
   app.add_flag("--draco", settings.draco, "Compress the mesh with Draco (KHR_draco_mesh_compression)");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 

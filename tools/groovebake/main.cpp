@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <string>
 
-#include "common/cli.h"
 #include "bake/core/huge_pages.h"
 #include "bake/core/session.h"
 #include "bake/grooves/bake/bake.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <map>
 
-#include "common/cli.h"
 #include "bake/core/session.h"
 #include "bake/core/vector_text.h"
 #include "bake/revolution/bake.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   using namespace bake::revolution;
@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
                                                  {"mesh", ProfileKind::Mesh}};
   app.add_option("--input-kind", settings.kind, "Kind of profile when the extension does not say it")
       ->transform(CLI::CheckedTransformer(kinds));
-  app.add_option("--svg-path", settings.svgPathId, "SVG input: the id of the <path> to use (default: the first)");
+  app.add_option("--svg-path", settings.svgPathId, "SVG input: the id of the <path> to use (default: the first)")
+      ->type_name("ID");
   app.add_option("--texel-size", settings.imageTexelSize,
                  "Image input: object units per pixel (default: 1 / image height)");
   app.add_option("--resolution", settings.resolution, "Texels on the larger side of the shape map (vector and mesh inputs)")
@@ -53,7 +54,8 @@ int main(int argc, char** argv) {
   app.add_option("--repeat-v", settings.repeatV, "Texture repeats along the projection's v (default: 1)");
   app.add_option("--base-color", settings.baseColorTexture, "PNG embedded as the material's base colour texture");
   std::string position;
-  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation; axis along +y)");
+  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation; axis along +y)")
+      ->type_name("X,Y,Z");
   app.add_option("--target-error", settings.targetError,
                  "Silhouette mismatch the recorded iteration budget must reach (fraction of rays)")
       ->default_str("0.005");

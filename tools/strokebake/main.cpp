@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "common/cli.h"
 #include "bake/core/session.h"
 #include "bake/core/vector_text.h"
 #include "bake/paintstrokes/bake.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   using namespace bake::paintstrokes;
@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   app.add_option("input", settings.input, "Stroke list (.json, .csv) or mesh to grow strokes on")->required();
   app.add_option("-o,--output", settings.output, "Package to write (.glb)")->required();
   app.add_option("--light-dir", lightDirs, "Direction towards a light, x,y,z (repeatable, at most 16; default: the "
-                                           "runtime's light 0.4,0.8,0.45)");
+                                           "runtime's light 0.4,0.8,0.45)")
+      ->type_name("X,Y,Z");
   app.add_option("--shadow-density", settings.shadow.density, "Extinction per unit of relative depth along the light path")
       ->default_str(std::to_string(settings.shadow.density));
   app.add_option("--shadow-minimum", settings.shadow.minimum, "Reflectance scale of a point the light cannot reach, [0, 1]")
@@ -42,12 +43,14 @@ int main(int argc, char** argv) {
   growGroup->add_option("--tip-radius", grow.tipRadius, "Tip radius / root radius")->default_str(std::to_string(grow.tipRadius));
   growGroup->add_option("--bend", grow.bend, "Bend towards --bend-direction (0 straight, 1: tip displaced by the length)")
       ->default_str(std::to_string(grow.bend));
-  growGroup->add_option("--bend-direction", bendDirection, "Bend direction x,y,z")->default_str("0,-1,0");
+  growGroup->add_option("--bend-direction", bendDirection, "Bend direction x,y,z")->type_name("X,Y,Z")->default_str("0,-1,0");
   growGroup->add_option("--points", grow.pointsPerStroke, "Control points per stroke (>= 2)")
       ->default_str(std::to_string(grow.pointsPerStroke));
   growGroup->add_option("--seed", grow.seed, "Random seed")->default_str(std::to_string(grow.seed));
-  growGroup->add_option("--length-from", grow.lengthFrom, "Scale lengths by vertex:NAME (a scalar attribute) or texture:PATH");
-  growGroup->add_option("--colour-from", grow.colourFrom, "Colours from vertex (COLOR_0 / vertex colours) or texture:PATH");
+  growGroup->add_option("--length-from", grow.lengthFrom, "Scale lengths by vertex:NAME (a scalar attribute) or texture:PATH")
+      ->type_name("SOURCE");
+  growGroup->add_option("--color-from,--colour-from", grow.colourFrom, "Colours from vertex (COLOR_0 / vertex colours) or texture:PATH")
+      ->type_name("SOURCE");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runBaker("strokebake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {

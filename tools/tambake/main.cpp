@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <string>
 
-#include "common/cli.h"
 #include "bake/core/session.h"
 #include "bake/core/vector_text.h"
 #include "bake/hatching/bake.h"
 #include "bake/hatching/style.h"
+#include "common/cli.h"
 
 int main(int argc, char** argv) {
   using namespace bake::hatching;
@@ -37,18 +37,21 @@ int main(int argc, char** argv) {
   app.add_option("--tiles-per-unit", material.tilesPerUnit, "Hatching scale: TAM tiles per object unit")->default_str("1");
   app.add_option("--rotation", material.rotationDegrees, "Rotation of the strokes about the normal, degrees")->default_str("0");
   std::string translation;
-  app.add_option("--translation", translation, "Shift of the hatching along T and B, in tiles: U,V")->default_str("0,0");
+  app.add_option("--translation", translation, "Shift of the hatching along T and B, in tiles: U,V")
+      ->type_name("U,V")
+      ->default_str("0,0");
   app.add_option("--orientation", material.orientation, "Strokes toward-light (along the projected light) or across-light")
       ->check(CLI::IsMember({bake::format::tam::kOrientationTowardLight, bake::format::tam::kOrientationAcrossLight}))
       ->default_str(bake::format::tam::kOrientationTowardLight);
   std::string baseColour, position;
-  app.add_option("--base-colour", baseColour, "Colour material the TAM is combined with: R,G,B in [0, 1]");
-  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation)");
+  app.add_option("--base-color,--base-colour", baseColour, "Colour material the TAM is combined with: R,G,B in [0, 1]")
+      ->type_name("R,G,B");
+  app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation)")->type_name("X,Y,Z");
   app.add_option("--scale", material.scale, "Uniform scale of the object's node")->default_str("1");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runBaker("tambake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
-    if (!baseColour.empty()) { BAKE_ASSIGN_OR_RETURN(material.baseColour, bake::parseTriple(baseColour, "--base-colour", "R,G,B")); }
+    if (!baseColour.empty()) { BAKE_ASSIGN_OR_RETURN(material.baseColour, bake::parseTriple(baseColour, "--base-color", "R,G,B")); }
     if (!position.empty()) { BAKE_ASSIGN_OR_RETURN(material.position, bake::parseTriple(position, "--position")); }
     if (!translation.empty()) { BAKE_ASSIGN_OR_RETURN(material.translation, bake::parsePair(translation, "--translation")); }
     return {};

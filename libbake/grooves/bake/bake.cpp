@@ -7,9 +7,9 @@
 
 #include <chrono>
 
+#include "bake/core/session.h"
 #include "core/path.h"
 #include "core/progress.h"
-#include "bake/core/session.h"
 #include "grooves/bake/grid_stages.h"
 #include "grooves/package/package.h"
 
@@ -20,7 +20,7 @@ using nlohmann::json;
 namespace fmt = format::grooves;
 
 Status checkOptions(const Settings& settings) {
-  if (lowercaseExtension(settings.output) != ".glb") return usageError("-o " + settings.output + ": the package is a .glb file");
+  BAKE_RETURN_IF_ERROR(checkWrittenExtension(settings.output, "-o", ".glb", "the package"));
   if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize)) return usageError("--cell-size must be a finite number >= 0");
   if (settings.maxCells < 1) return usageError("--max-cells must be at least 1");
   return {};

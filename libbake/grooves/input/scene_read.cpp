@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 
 #include "bake/core/atomic_file.h"
+#include "bake/core/limits.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
-#include "bake/core/limits.h"
 #include "grooves/input/generators.h"
-#include "io/svg_path.h"
-#include "grooves/input/svg_file.h"
 #include "grooves/input/scene.h"
+#include "grooves/input/svg_file.h"
+#include "io/svg_path.h"
 
 namespace bake::grooves {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "bake/core/status.h"
-#include "grooves/input/scene.h"
 #include "bake/io/image.h"
+#include "grooves/input/scene.h"
 
 namespace bake::grooves {
 

@@ -8,8 +8,8 @@
 #include <cstdint>
 
 #include "grooves/bake/grid.h"
-#include "grooves/oracle/render.h"
 #include "grooves/input/scene.h"
+#include "grooves/oracle/render.h"
 
 namespace bake::grooves {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "grooves/bake/grid.h"
-#include "grooves/oracle/render.h"
 #include "grooves/input/scene.h"
+#include "grooves/oracle/render.h"
 
 namespace bake::grooves {
 

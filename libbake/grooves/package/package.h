@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "bake_formats/grooves.h"
 #include "bake/core/status.h"
+#include "bake/io/glb.h"
+#include "bake_formats/grooves.h"
 #include "grooves/bake/grid.h"
 #include "grooves/input/scene.h"
-#include "bake/io/glb.h"
 
 namespace bake::grooves {
 

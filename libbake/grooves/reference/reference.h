@@ -7,8 +7,8 @@
 
 #include <cstdint>
 
-#include "grooves/oracle/render.h"
 #include "grooves/input/scene.h"
+#include "grooves/oracle/render.h"
 
 namespace bake::grooves {
 

@@ -14,8 +14,8 @@
 
 #include "bake/core/atomic_file.h"
 #include "bake/core/cache.h"
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/report.h"
 
 namespace bake {

@@ -1,17 +1,17 @@
 // tambake: a style file to a tonal art map (formats/tam.md): a KTX2 2D array, one layer per tone, the
 // full mip chain (R8, or RGBA8 for coloured ink), the tone values in its metadata; optionally the
 // threshold texture and a glTF package applying the TAM to a mesh as a BAKE_hatching material. The
-// report gives the quality figures of hatching/quality.h next to the construction time.
+// report gives the quality figures of hatching/bake/quality.h next to the construction time.
 #pragma once
 
 #include <array>
 #include <string>
 
-#include "bake_formats/tam.h"
-#include "bake/core/options.h"
 #include "bake/core/cache.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
+#include "bake_formats/tam.h"
 
 namespace bake::hatching {
 

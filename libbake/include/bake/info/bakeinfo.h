@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 
 namespace bake::info {

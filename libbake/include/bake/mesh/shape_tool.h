@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/mesh/shapes.h"
 
 namespace bake {

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "bake/core/options.h"
 #include "bake/core/cache.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 #include "bake/paintstrokes/generators.h"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "bake/core/options.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 
 namespace bake::pipe {

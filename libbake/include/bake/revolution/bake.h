@@ -8,13 +8,13 @@
 #include <optional>
 #include <string>
 
-#include "bake_formats/revolution.h"
-#include "bake/core/options.h"
 #include "bake/core/cache.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 #include "bake/revolution/projection.h"
 #include "bake/revolution/shape_map.h"
+#include "bake_formats/revolution.h"
 
 namespace bake::revolution {
 

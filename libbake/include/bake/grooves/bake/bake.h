@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <string>
 
-#include "bake/core/options.h"
 #include "bake/core/cache.h"
 #include "bake/core/diagnostics.h"
+#include "bake/core/options.h"
 #include "bake/core/status.h"
 
 namespace bake::grooves {

@@ -1,0 +1,38 @@
+// Exact polyhedral geodesic distances by continuous-Dijkstra window propagation (Mitchell, Mount and
+// Papadimitriou 1987, as made practical by Surazhsky et al. 2005, with their endpoint filter: a window
+// that cannot beat a path through an endpoint of its edge is dropped). All sources propagate together,
+// so a combined min-field costs about as much as a single source. Stages: exact_window.cpp (window
+// geometry and unfolding), exact_propagate.cpp (edge lists, trimming, event queue), exact.cpp (entry).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "bake/geodesic/sources.h"
+#include "bake/geodesic/surface.h"
+
+namespace bake::geodesic {
+
+struct ExactOptions {
+  // Stop propagating beyond this distance (vertices farther away get kUnreachable); infinity = all.
+  double maxDistance = kUnreachable;
+  // Told now and then (every 16384 queue events, and at the end) how many vertices the front has
+  // reached, for a progress bar; never changes the result.
+  std::function<void(std::size_t reached)> onReached;
+};
+
+struct ExactStats {
+  std::size_t windowsCreated = 0;
+  std::size_t windowsPropagated = 0;
+  std::size_t pseudoSources = 0;  // saddle and boundary vertices that re-emitted
+  // The safety limit on windows (60 per edge + 10^6) was reached: the distances are then upper bounds
+  // (windows plus edge paths) rather than exact. Never seen on real meshes; it keeps bad input finite.
+  bool windowLimitReached = false;
+};
+
+std::vector<double> exactDistances(const Surface& surface, std::span<const SurfacePoint> sources,
+                                   const ExactOptions& options = {}, ExactStats* stats = nullptr);
+
+}  // namespace bake::geodesic

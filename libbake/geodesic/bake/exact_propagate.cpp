@@ -1,0 +1,431 @@
+// Continuous Dijkstra over windows (Surazhsky et al. 2005, sections 3.3-3.4 and 4): a binary heap with
+// lazy deletion orders windows by their nearest point and vertices by their distance. A window entering
+// a face is unfolded onto the face's two other edges; on every edge a new window is intersected with
+// the windows already there and each point keeps the smaller distance. A vertex whose distance becomes
+// final relaxes its edges (a valid path, so distances stay upper bounds even on broken input) and, when
+// geodesics can bend around it (saddle, boundary, non-manifold, a source), emits windows on the far
+// edge of every face around it. Windows that cannot beat a path through an edge's endpoint are dropped
+// before insertion (the filter of Surazhsky et al. section 4.2).
+#include "geodesic/bake/exact_propagate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "bake/core/vec.h"
+
+namespace bake::geodesic::exact {
+namespace {
+
+constexpr double kRelativeTolerance = 1e-10;
+
+using vec::cross;
+using vec::dot;
+using vec::sub;
+
+}  // namespace
+
+Propagator::Propagator(const Surface& surface, const ExactOptions& options)
+    : surface_(surface), options_(options) {
+  const std::size_t n = surface.vertexCount();
+  distance_.assign(n, kUnreachable);
+  emittedAt_.assign(n, kUnreachable);
+  emits_.assign(n, 0);
+  edgeHead_.assign(surface.edgeCount(), kNone);
+  windowCap_ = 60 * surface.edgeCount() + 1000000;
+  buildFaceSides();
+  markEmittingVertices();
+}
+
+void Propagator::buildFaceSides() {
+  sides_.resize(3 * surface_.triangleCount());
+  for (std::uint32_t f = 0; f < surface_.triangleCount(); ++f) {
+    const auto& tri = surface_.triangles[f];
+    const auto& te = surface_.triangleEdges[f];
+    for (int j = 0; j < 3; ++j) {
+      const std::uint32_t e = te[j];
+      const std::uint32_t a = surface_.edges[e][0], b = surface_.edges[e][1];
+      FaceSide& s = sides_[3 * f + j];
+      s.vertex = tri[(j + 2) % 3];
+      // Slot j+1 joins corners j+1 and j+2, slot j+2 joins corners j+2 and j.
+      const bool firstIsCornerJ = tri[j] == a;
+      s.edgeToFirst = firstIsCornerJ ? te[(j + 2) % 3] : te[(j + 1) % 3];
+      s.edgeToSecond = firstIsCornerJ ? te[(j + 1) % 3] : te[(j + 2) % 3];
+      const Vec3d ab = sub(surface_.positions[b], surface_.positions[a]);
+      const Vec3d ac = sub(surface_.positions[s.vertex], surface_.positions[a]);
+      const double length = vec::length(ab);
+      if (length > 0.0) {
+        s.third = {dot(ac, ab) / length, vec::length(cross(ab, ac)) / length};
+      } else {
+        s.third = {0.0, vec::length(ac)};
+      }
+    }
+  }
+}
+
+void Propagator::markEmittingVertices() {
+  std::vector<double> angle(surface_.vertexCount(), 0.0);
+  for (std::uint32_t f = 0; f < surface_.triangleCount(); ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const Vec3d& p = surface_.positions[surface_.triangles[f][i]];
+      const Vec3d u = sub(surface_.positions[surface_.triangles[f][(i + 1) % 3]], p);
+      const Vec3d v = sub(surface_.positions[surface_.triangles[f][(i + 2) % 3]], p);
+      angle[surface_.triangles[f][i]] += std::atan2(vec::length(cross(u, v)), dot(u, v));
+    }
+  }
+  const double zeroLength = kRelativeTolerance * surface_.diagonal;
+  for (std::uint32_t v = 0; v < surface_.vertexCount(); ++v) {
+    bool emits = angle[v] > 2.0 * std::numbers::pi + 1e-9;
+    for (std::uint32_t e : surface_.edgesOfVertex(v))
+      if (surface_.neighbourCountOfEdge(e) != 1 || surface_.edgeLengths[e] <= zeroLength) emits = true;
+    // A closed fan that does not reach every face around v means several fans (a bow-tie vertex).
+    const auto faces = surface_.facesOfVertex(v);
+    if (!emits && !faces.empty()) {
+      std::size_t visited = 0;
+      std::uint32_t face = faces[0], cameThrough = kNone;
+      do {
+        const int corner = surface_.cornerOf(face, v);
+        const std::uint32_t e1 = surface_.triangleEdges[face][corner];
+        const std::uint32_t e2 = surface_.triangleEdges[face][(corner + 2) % 3];
+        const std::uint32_t leave = e1 != cameThrough ? e1 : e2;
+        const auto across = surface_.facesOfEdge(leave);
+        face = across[0] == face ? across[1] : across[0];
+        cameThrough = leave;
+        ++visited;
+      } while (face != faces[0] && visited <= faces.size());
+      if (visited != faces.size()) emits = true;
+    }
+    emits_[v] = emits ? 1 : 0;
+  }
+}
+
+const Propagator::FaceSide& Propagator::side(std::uint32_t face, std::uint32_t edge) const {
+  const auto& te = surface_.triangleEdges[face];
+  const int j = te[0] == edge ? 0 : (te[1] == edge ? 1 : 2);
+  return sides_[3 * face + j];
+}
+
+// A 4-ary min-heap: half the depth of a binary heap, and the four children share a cache line or two,
+// which matters because popping dominates the queue's cost.
+void Propagator::push(double key, std::uint32_t item) {
+  std::size_t i = heap_.size();
+  heap_.push_back({key, item});
+  while (i > 0) {
+    const std::size_t parent = (i - 1) / 4;
+    if (heap_[parent].key <= key) break;
+    heap_[i] = heap_[parent];
+    i = parent;
+  }
+  heap_[i] = {key, item};
+}
+
+Propagator::Entry Propagator::popMin() {
+  const Entry top = heap_.front();
+  const Entry last = heap_.back();
+  heap_.pop_back();
+  const std::size_t n = heap_.size();
+  if (n == 0) return top;
+  std::size_t i = 0;
+  for (;;) {
+    const std::size_t first = 4 * i + 1;
+    if (first >= n) break;
+    std::size_t best = first;
+    const std::size_t end = std::min(first + 4, n);
+    for (std::size_t c = first + 1; c < end; ++c)
+      if (heap_[c].key < heap_[best].key) best = c;
+    if (heap_[best].key >= last.key) break;
+    heap_[i] = heap_[best];
+    i = best;
+  }
+  heap_[i] = last;
+  return top;
+}
+
+void Propagator::relaxVertex(std::uint32_t v, double distance) {
+  if (!(distance < distance_[v])) return;
+  if (distance_[v] == kUnreachable) ++reached_;
+  distance_[v] = distance;
+  // Only vertices that re-emit need their turn in the queue; the edge paths of the others are
+  // relaxed once at the end (closeOverEdges), which keeps the heap small.
+  if (emits_[v]) push(distance, v | kVertexBit);
+}
+
+void Propagator::closeOverEdges() {
+  // Edge paths are valid paths: a Dijkstra over them from every distance found bounds each vertex from
+  // above, so even a vertex no window reached (broken input) gets a finite distance when connected.
+  heap_.clear();
+  for (std::uint32_t v = 0; v < surface_.vertexCount(); ++v)
+    if (distance_[v] < kUnreachable) push(distance_[v], v);
+  while (!heap_.empty()) {
+    const Entry top = popMin();
+    if (top.key > distance_[top.item] || top.key > options_.maxDistance) continue;
+    for (std::uint32_t e : surface_.edgesOfVertex(top.item)) {
+      const auto& ends = surface_.edges[e];
+      const std::uint32_t other = ends[0] == top.item ? ends[1] : ends[0];
+      const double candidate = top.key + surface_.edgeLengths[e];
+      if (candidate < distance_[other]) {
+        distance_[other] = candidate;
+        push(candidate, other);
+      }
+    }
+  }
+}
+
+void Propagator::addSource(const SurfacePoint& point) {
+  const std::int64_t vertex = point.vertex(surface_);
+  if (vertex >= 0) {
+    emits_[vertex] = 1;
+    relaxVertex(static_cast<std::uint32_t>(vertex), 0.0);
+    return;
+  }
+  const std::uint32_t f = point.face;
+  const Vec3d p = point.position(surface_);
+  for (int i = 0; i < 3; ++i) {
+    const std::uint32_t corner = surface_.triangles[f][i];
+    relaxVertex(corner, vec::length(sub(surface_.positions[corner], p)));
+  }
+  // One window per edge of the face, the source unfolded into that edge's frame from its weights.
+  for (int j = 0; j < 3; ++j) {
+    const std::uint32_t e = surface_.triangleEdges[f][j];
+    const FaceSide& s = sides_[3 * f + j];
+    const double wb = point.barycentric[surface_.cornerOf(f, surface_.edges[e][1])];
+    const double wc = point.barycentric[(j + 2) % 3];
+    Window w;
+    w.b0 = 0.0;
+    w.b1 = surface_.edgeLengths[e];
+    w.sx = wb * w.b1 + wc * s.third.x;
+    w.sy = wc * s.third.y;
+    w.sigma = 0.0;
+    w.edge = e;
+    w.fromFace = f;
+    insertWindow(w);
+  }
+}
+
+void Propagator::run() {
+  constexpr std::size_t kReportEvery = 16384;
+  std::size_t events = 0;
+  while (!heap_.empty()) {
+    if (options_.onReached && ++events % kReportEvery == 0) options_.onReached(reached_);
+    const Entry top = popMin();
+    if (top.key > options_.maxDistance) break;
+    if (top.item & kVertexBit) {
+      processVertex(top.item & ~kVertexBit, top.key);
+    } else {
+      processWindow(top.item, top.key);
+    }
+  }
+  closeOverEdges();
+  if (options_.onReached) options_.onReached(reached_);
+}
+
+std::vector<double> Propagator::takeDistances() {
+  for (double& d : distance_)
+    if (d > options_.maxDistance) d = kUnreachable;
+  return std::move(distance_);
+}
+
+void Propagator::processVertex(std::uint32_t v, double key) {
+  if (key > distance_[v]) return;  // superseded by a shorter path
+  const double d = distance_[v];
+  for (std::uint32_t e : surface_.edgesOfVertex(v)) {
+    const std::uint32_t other = surface_.edges[e][0] == v ? surface_.edges[e][1] : surface_.edges[e][0];
+    relaxVertex(other, d + surface_.edgeLengths[e]);
+  }
+  if (emits_[v] && d < emittedAt_[v] - kRelativeTolerance * surface_.meanEdgeLength) {
+    emittedAt_[v] = d;
+    ++stats_.pseudoSources;
+    emitFromVertex(v);
+  }
+}
+
+void Propagator::emitFromVertex(std::uint32_t v) {
+  for (std::uint32_t f : surface_.facesOfVertex(v)) {
+    const int corner = surface_.cornerOf(f, v);
+    const int slot = (corner + 1) % 3;  // the edge facing v
+    const std::uint32_t e = surface_.triangleEdges[f][slot];
+    const FaceSide& s = sides_[3 * f + slot];
+    Window w;
+    w.b0 = 0.0;
+    w.b1 = surface_.edgeLengths[e];
+    w.sx = s.third.x;
+    w.sy = s.third.y;
+    w.sigma = distance_[v];
+    w.edge = e;
+    w.fromFace = f;
+    insertWindow(w);
+  }
+}
+
+void Propagator::processWindow(std::uint32_t id, double key) {
+  const Window w = windows_[id];
+  if (!w.alive || w.propagated) return;
+  const double length = surface_.edgeLengths[w.edge];
+  const double tolerance = kRelativeTolerance * length;
+  const double nearest = w.minDistance();
+  if (nearest > key + tolerance) {  // trimmed since it was queued: wait for its real turn
+    push(nearest, id);
+    return;
+  }
+  windows_[id].propagated = true;
+  // Vertex distances may have dropped since it was queued: the endpoint filter may now reject it.
+  if (dominatedByEndpoints(w, length)) return;
+  ++stats_.windowsPropagated;
+  const Point2 source{w.sx, -w.sy};
+  const Point2 first{0.0, 0.0}, second{length, 0.0};
+  for (std::uint32_t g : surface_.facesOfEdge(w.edge)) {
+    if (g == w.fromFace) continue;
+    const FaceSide& s = side(g, w.edge);
+    const FaceCrossing crossing = crossFace(w, length, s.third, tolerance);
+    if (crossing.reachesC)
+      relaxVertex(s.vertex, w.sigma + length2d(s.third.x - source.x, s.third.y - source.y));
+    if (crossing.onAC.valid)
+      emitChild(w, g, source, first, surface_.edges[w.edge][0], s.third, s.edgeToFirst, crossing.onAC);
+    if (crossing.onBC.valid)
+      emitChild(w, g, source, second, surface_.edges[w.edge][1], s.third, s.edgeToSecond, crossing.onBC);
+  }
+}
+
+void Propagator::emitChild(const Window& parent, std::uint32_t face, Point2 source, Point2 from,
+                           std::uint32_t fromVertex, Point2 to, std::uint32_t edge, const ChildRange& range) {
+  const double length = surface_.edgeLengths[edge];
+  const bool forward = surface_.edges[edge][0] == fromVertex;
+  const Point2 origin = forward ? from : to;
+  const Point2 end = forward ? to : from;
+  const Point2 s = sourceInFrame(source, origin, end);
+  Window child;
+  child.b0 = forward ? range.t0 * length : (1.0 - range.t1) * length;
+  child.b1 = forward ? range.t1 * length : (1.0 - range.t0) * length;
+  child.sx = s.x;
+  child.sy = s.y;
+  child.sigma = parent.sigma;
+  child.edge = edge;
+  child.fromFace = face;
+  insertWindow(child);
+}
+
+bool Propagator::dominatedByEndpoints(const Window& w, double length) const {
+  // sigma + |S - p| - x never increases along the edge, so checking the far end suffices.
+  const double tolerance = kRelativeTolerance * length;
+  const double viaFirst = distance_[surface_.edges[w.edge][0]];
+  const double viaSecond = distance_[surface_.edges[w.edge][1]];
+  return w.distanceAt(w.b1) - w.b1 > viaFirst + tolerance ||
+         w.distanceAt(w.b0) - (length - w.b0) > viaSecond + tolerance;
+}
+
+void Propagator::insertWindow(Window w) {
+  const double length = surface_.edgeLengths[w.edge];
+  if (!(length > kRelativeTolerance * surface_.diagonal)) return;  // zero-length edge: vertices carry it
+  const double tolerance = kRelativeTolerance * length;
+  w.b0 = std::clamp(w.b0, 0.0, length);
+  w.b1 = std::clamp(w.b1, w.b0, length);
+  if (!std::isfinite(w.sx) || !std::isfinite(w.sy) || !std::isfinite(w.sigma)) return;
+  if (w.b0 <= tolerance) relaxVertex(surface_.edges[w.edge][0], w.distanceAt(0.0));
+  if (w.b1 >= length - tolerance) relaxVertex(surface_.edges[w.edge][1], w.distanceAt(length));
+  if (w.b1 - w.b0 <= tolerance) return;
+  if (windows_.size() >= windowCap_) {
+    stats_.windowLimitReached = true;
+    return;
+  }
+  if (w.minDistance() > options_.maxDistance || dominatedByEndpoints(w, length)) return;
+
+  lost_.clear();
+  std::uint32_t id = edgeHead_[w.edge];
+  while (id != kNone && windows_[id].b0 < w.b1 - tolerance) {
+    const std::uint32_t next = windows_[id].next;
+    if (windows_[id].b1 > w.b0 + tolerance) trimAgainst(w, id);
+    id = next;
+  }
+  // What the existing windows did not keep becomes new windows.
+  double cursor = w.b0;
+  auto emitPiece = [&](double lo, double hi) {
+    if (hi - lo <= tolerance) return;
+    Window piece = w;
+    piece.b0 = lo;
+    piece.b1 = hi;
+    const auto newId = static_cast<std::uint32_t>(windows_.size());
+    windows_.push_back(piece);
+    linkSorted(newId);
+    push(piece.minDistance(), newId);
+    ++stats_.windowsCreated;
+  };
+  for (const Span& s : lost_) {
+    emitPiece(cursor, std::min(s.lo, w.b1));
+    cursor = std::max(cursor, s.hi);
+  }
+  emitPiece(cursor, w.b1);
+}
+
+void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
+  const Window old = windows_[existing];
+  const double length = surface_.edgeLengths[old.edge];
+  const double tolerance = kRelativeTolerance * length;
+  const double lo = std::max(incoming.b0, old.b0), hi = std::min(incoming.b1, old.b1);
+  std::array<double, 2> roots{};
+  const int rootCount = crossingPoints(incoming, old, lo, hi, roots);
+  std::array<double, 4> cuts{lo, 0.0, 0.0, 0.0};
+  int cutCount = 1;
+  for (int i = 0; i < rootCount; ++i) cuts[cutCount++] = roots[i];
+  cuts[cutCount++] = hi;
+
+  won_.clear();
+  auto append = [](std::vector<Span>& spans, double a, double b) {
+    if (!spans.empty() && spans.back().hi >= a) {
+      spans.back().hi = std::max(spans.back().hi, b);
+    } else {
+      spans.push_back({a, b});
+    }
+  };
+  for (int i = 0; i + 1 < cutCount; ++i) {
+    const double a = cuts[i], b = cuts[i + 1];
+    if (b <= a) continue;
+    const double mid = 0.5 * (a + b);
+    if (incoming.distanceAt(mid) < old.distanceAt(mid) - tolerance) {
+      append(won_, a, b);
+    } else {
+      append(lost_, a, b);
+    }
+  }
+  if (won_.empty()) return;
+
+  // The existing window keeps its range minus what the incoming one won (possibly two pieces).
+  pieces_.clear();
+  double cursor = old.b0;
+  for (const Span& s : won_) {
+    if (s.lo - cursor > tolerance) pieces_.push_back({cursor, s.lo});
+    cursor = std::max(cursor, s.hi);
+  }
+  if (old.b1 - cursor > tolerance) pieces_.push_back({cursor, old.b1});
+  if (pieces_.empty()) {
+    unlink(existing);
+    windows_[existing].alive = false;
+    return;
+  }
+  windows_[existing].b0 = pieces_[0].lo;
+  windows_[existing].b1 = pieces_[0].hi;
+  for (std::size_t i = 1; i < pieces_.size(); ++i) {
+    Window split = old;
+    split.b0 = pieces_[i].lo;
+    split.b1 = pieces_[i].hi;
+    const auto newId = static_cast<std::uint32_t>(windows_.size());
+    windows_.push_back(split);
+    linkSorted(newId);
+    if (!split.propagated) push(split.minDistance(), newId);
+  }
+}
+
+void Propagator::linkSorted(std::uint32_t id) {
+  Window& w = windows_[id];
+  std::uint32_t* link = &edgeHead_[w.edge];
+  while (*link != kNone && windows_[*link].b0 < w.b0) link = &windows_[*link].next;
+  w.next = *link;
+  *link = id;
+}
+
+void Propagator::unlink(std::uint32_t id) {
+  std::uint32_t* link = &edgeHead_[windows_[id].edge];
+  while (*link != kNone && *link != id) link = &windows_[*link].next;
+  if (*link == id) *link = windows_[id].next;
+}
+
+}  // namespace bake::geodesic::exact

@@ -1,0 +1,128 @@
+// Cotangent Laplacian, lumped mass and per-face hat gradients on an intrinsic triangulation, and the
+// per-field divergence of the normalised heat gradient (Crane, Weischedel and Wardetzky 2013, section
+// 3.2, steps II and III of Algorithm 1).
+//
+// Everything is computed from edge lengths alone (Sharp, Soliman and Crane 2019): each face is laid
+// out in its own plane, corner 0 at the origin and corner 1 on the x axis, and hat gradients are the
+// rotated opposite edges divided by twice the area. On an intrinsic Delaunay triangulation every
+// cotangent weight sum is non-negative, so L is an M-matrix and M + tL has a positive inverse: heat
+// is positive everywhere it has not underflowed.
+#include "geodesic/bake/heat_operators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace bake::geodesic {
+namespace {
+
+HeatFace layoutFace(const IntrinsicTriangulation& mesh, std::uint32_t f) {
+  // Halfedge 3f + i runs from corner i to corner i + 1, so its length is the side opposite corner i + 2.
+  const double l01 = mesh.lengthOf(3 * f), l12 = mesh.lengthOf(3 * f + 1), l20 = mesh.lengthOf(3 * f + 2);
+  HeatFace face{};
+  for (int i = 0; i < 3; ++i) face.vertices[i] = mesh.tail[3 * f + i];
+  face.area = triangleArea(l01, l12, l20);
+  if (!(face.area > 0.0) || !(l01 > 0.0)) return face;  // hat gradients stay zero
+  const std::array<double, 2> p0{0.0, 0.0}, p1{l01, 0.0};
+  const std::array<double, 2> p2{(l01 * l01 + l20 * l20 - l12 * l12) / (2.0 * l01), 2.0 * face.area / l01};
+  const std::array<std::array<double, 2>, 3> p{p0, p1, p2};
+  for (int i = 0; i < 3; ++i) {
+    // The edge opposite corner i, counter-clockwise, turned a quarter towards corner i.
+    const auto& from = p[(i + 1) % 3];
+    const auto& to = p[(i + 2) % 3];
+    face.hatGradient[i] = {-(to[1] - from[1]) / (2.0 * face.area), (to[0] - from[0]) / (2.0 * face.area)};
+  }
+  return face;
+}
+
+// Both sides of a face that no flip touched are the same triangle, mirrored; they contribute the same
+// divergence, so the doubled cover's faces are merged into one of double area where they coincide
+// (same corner vertices facing the same side lengths), halving the per-field work.
+std::vector<HeatFace> mergeMirroredFaces(const IntrinsicTriangulation& mesh, std::vector<HeatFace> faces) {
+  using Key = std::array<std::pair<std::uint32_t, double>, 3>;
+  std::map<Key, std::size_t> first;
+  std::vector<HeatFace> merged;
+  merged.reserve(faces.size() / 2 + 1);
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    Key key;
+    for (int i = 0; i < 3; ++i) key[i] = {mesh.tail[3 * f + i], mesh.lengthOf(3 * f + (i + 1) % 3)};
+    std::sort(key.begin(), key.end());
+    const auto [it, inserted] = first.try_emplace(key, merged.size());
+    if (inserted)
+      merged.push_back(faces[f]);
+    else
+      merged[it->second].area += faces[f].area;
+  }
+  return merged;
+}
+
+}  // namespace
+
+HeatOperators buildHeatOperators(const IntrinsicTriangulation& mesh, std::size_t vertexCount) {
+  HeatOperators ops;
+  ops.mass.assign(vertexCount, 0.0);
+  ops.laplacianDiagonal.assign(vertexCount, 0.0);
+  ops.faces.reserve(mesh.faceCount());
+  for (std::uint32_t f = 0; f < mesh.faceCount(); ++f) {
+    ops.faces.push_back(layoutFace(mesh, f));
+    for (std::uint32_t v : ops.faces.back().vertices) ops.mass[v] += ops.faces.back().area / 3.0;
+  }
+  double lengthSum = 0.0;
+  for (std::uint32_t e = 0; e < mesh.edgeCount(); ++e) {
+    lengthSum += mesh.length[e];
+    const std::uint32_t h = mesh.edgeHalfedge[e];
+    const std::uint32_t i = mesh.tail[h], j = mesh.tail[IntrinsicTriangulation::next(h)];
+    if (i == j) continue;  // a loop edge adds to and takes from the same vertex
+    double weight = 0.0;
+    for (std::uint32_t side : {h, mesh.twin[h]}) {
+      const double a = mesh.lengthOf(side), b = mesh.lengthOf(IntrinsicTriangulation::next(side)),
+                   c = mesh.lengthOf(IntrinsicTriangulation::prev(side));
+      weight += 0.5 * cotangentOpposite(a, b, c, triangleArea(a, b, c));
+    }
+    ops.edgeVertices.push_back({i, j});
+    ops.edgeWeights.push_back(weight);
+    ops.laplacianDiagonal[i] += weight;
+    ops.laplacianDiagonal[j] += weight;
+  }
+  ops.faces = mergeMirroredFaces(mesh, std::move(ops.faces));
+  if (mesh.edgeCount() > 0) ops.meanEdgeLength = lengthSum / static_cast<double>(mesh.edgeCount());
+  return ops;
+}
+
+Eigen::SparseMatrix<double, Eigen::ColMajor, int> assembleUpper(const HeatOperators& ops, double scale,
+                                                                std::span<const double> diagonal,
+                                                                std::span<const char> identityRows) {
+  const auto n = static_cast<int>(ops.laplacianDiagonal.size());
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(ops.edgeWeights.size() + ops.laplacianDiagonal.size());
+  for (std::size_t e = 0; e < ops.edgeWeights.size(); ++e) {
+    const auto [i, j] = ops.edgeVertices[e];
+    const bool cut = identityRows[i] || identityRows[j];
+    entries.emplace_back(std::min(i, j), std::max(i, j), cut ? 0.0 : -scale * ops.edgeWeights[e]);
+  }
+  for (int v = 0; v < n; ++v)
+    entries.emplace_back(v, v, identityRows[v] ? 1.0 : scale * ops.laplacianDiagonal[v] + diagonal[v]);
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  return matrix;
+}
+
+void divergenceOfNormalizedGradient(const HeatOperators& ops, std::span<const double> u,
+                                    std::span<double> rhs) {
+  for (const HeatFace& face : ops.faces) {
+    double gx = 0.0, gy = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      gx += u[face.vertices[i]] * face.hatGradient[i][0];
+      gy += u[face.vertices[i]] * face.hatGradient[i][1];
+    }
+    const double norm = std::hypot(gx, gy);
+    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
+    const double xx = -gx / norm, xy = -gy / norm;
+    for (int i = 0; i < 3; ++i)
+      rhs[face.vertices[i]] += face.area * (face.hatGradient[i][0] * xx + face.hatGradient[i][1] * xy);
+  }
+}
+
+}  // namespace bake::geodesic

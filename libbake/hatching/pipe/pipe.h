@@ -1,0 +1,12 @@
+// Hatching objects in scene pipelines (pipe/technique_hooks.h): what a scene may say of them, their
+// tambake step, and how their packages are assembled.
+#pragma once
+
+#include "pipe/technique_hooks.h"
+
+namespace bake::hatching {
+
+const pipe::TechniqueHooks& pipeHooks();              // pipe/plan.cpp
+const pipe::detail::TechniqueRules& assembleRules();  // pipe/assemble.cpp
+
+}  // namespace bake::hatching
