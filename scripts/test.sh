@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing, builds, and runs the tests with CTest.
-#   scripts/test.sh              the default tier (unit, cli, stiff, gl; about two minutes of tests on
+#   scripts/test.sh              the default tier (unit, cli, stiff, gl; about 75 s of tests on
 #                                2 cores): everything not labelled slow, normal build (build/)
 #   scripts/test.sh --slow       the slow tier: shared-data, million-triangle, example pipelines,
-#                                hostile matrix (about ten minutes)
+#                                hostile matrix (about four minutes)
 #   scripts/test.sh --all        both tiers
 #   scripts/test.sh --sanitize   ASan + UBSan build with clang (build-sanitize/): the default tier, the
 #                                hostile matrix and the example bakes

@@ -191,7 +191,7 @@ Status runValidate(const ValidateSettings& settings, Diagnostics& diagnostics, s
   session.report().setStatistic("verdicts", verdicts);
   Status outcome;
   if (failed > 0) {
-    // Exit 2 when every failed package failed because it could not be read (exit codes, README.md).
+    // Exit 2 when every failed package failed because it could not be read (exit codes, docs/conventions.md).
     outcome = Status(unreadable == failed ? ExitCode::Io : ExitCode::InvalidInput,
                      std::to_string(failed) + " of " + std::to_string(settings.packages.size()) + " packages failed validation");
   }

@@ -31,7 +31,7 @@ enum class Budget {
 };
 
 struct Budgets {
-  // The defaults keep every tool well under 8 GB (each budget's cost model is in README.md).
+  // The defaults keep every tool well under 8 GB (each budget's cost model is in docs/conventions.md).
   std::uint64_t inputBytes = std::uint64_t(256) << 20;
   std::uint64_t triangles = 50'000'000;
   std::uint64_t textureSide = 16384;

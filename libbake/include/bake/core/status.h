@@ -12,7 +12,7 @@
 
 namespace bake {
 
-// Process exit codes, shared by every tool (documented in README.md).
+// Process exit codes, shared by every tool (documented in docs/conventions.md).
 enum class ExitCode : int {
   Ok = 0,
   Usage = 1,         // bad command line
