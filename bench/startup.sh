@@ -28,8 +28,9 @@ bench_build "${tool_names[@]}"
 mkdir -p "$out/scratch"
 csv="$out/startup.csv"
 
-# Each line: GROUP<TAB>COMMAND (run through no shell: words split on spaces).
-commands="$out/commands.txt"
+# Each line: GROUP<TAB>COMMAND (run through no shell: words split on spaces). The list run stays in
+# scratch/; commands.txt, which the record keeps, names paths relative to the checkout.
+commands="$out/scratch/commands.tsv"
 : >"$commands"
 for tool in "${tool_names[@]}"; do
   printf 'ours\t%s --version\n' "$build/tools/$tool/$tool" >>"$commands"
@@ -61,4 +62,5 @@ with open(csv, "w") as f:
     for r in rows:
         f.write(f"{r[0]},{r[1]},{r[2]},{r[3]:.2f},{r[4]:.2f},{r[5]:.2f}\n")
 EOF
+sed -e "s|$here/||g" "$commands" >"$out/commands.txt"
 echo "startup: wrote $csv" >&2
