@@ -1,3 +1,4 @@
+#include <cstdio>
 #include "bake/core/vector_text.h"
 
 #include <cctype>
@@ -40,6 +41,12 @@ Result<std::array<double, 3>> parseTriple(const std::string& text, const std::st
 
 Result<std::array<double, 2>> parsePair(const std::string& text, const std::string& option, const char* form) {
   return parseVector<2>(text, option, form);
+}
+
+std::string numberText(double value, int digits) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
 }
 
 }  // namespace bake

@@ -10,6 +10,7 @@
 #include "bake/mesh/patterns.h"
 #include "core/path.h"
 #include "mesh/mesh_stats.h"
+#include "mesh/weld.h"
 
 namespace bake {
 namespace {
@@ -25,9 +26,17 @@ std::vector<std::uint8_t> encodeObj(const TriangleMesh& mesh) {
     std::snprintf(line, sizeof line, "vn %.7g %.7g %.7g\n", n[0], n[1], n[2]);
     text += line;
   }
+  for (const Vec2f& uv : mesh.texcoords) {
+    std::snprintf(line, sizeof line, "vt %.9g %.9g\n", uv[0], uv[1]);
+    text += line;
+  }
   const bool normals = !mesh.normals.empty();
+  const bool texcoords = !mesh.texcoords.empty();
   for (const Triangle& t : mesh.triangles) {
-    if (normals) {
+    if (texcoords) {
+      std::snprintf(line, sizeof line, "f %u/%u/%u %u/%u/%u %u/%u/%u\n", t[0] + 1, t[0] + 1, t[0] + 1, t[1] + 1,
+                    t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1, t[2] + 1);
+    } else if (normals) {
       std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1, t[2] + 1);
     } else {
       std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
@@ -45,6 +54,9 @@ Result<std::vector<std::uint8_t>> encodeGlb(const TriangleMesh& mesh, const std:
   flat.clear();
   for (const Vec3f& n : mesh.normals) flat.insert(flat.end(), n.begin(), n.end());
   if (!flat.empty()) primitive.attributes.push_back(glb::Attribute::fromFloats("NORMAL", 3, flat));
+  flat.clear();
+  for (const Vec2f& uv : mesh.texcoords) flat.insert(flat.end(), uv.begin(), uv.end());
+  if (!flat.empty()) primitive.attributes.push_back(glb::Attribute::fromFloats("TEXCOORD_0", 2, flat));
   for (const Triangle& t : mesh.triangles) primitive.indices.insert(primitive.indices.end(), t.begin(), t.end());
   glb::Package package;
   package.meshes.push_back({name, {std::move(primitive)}});
@@ -85,14 +97,19 @@ Status runShapeTool(const ShapeToolSettings& settings, Diagnostics& diagnostics)
       StageTimer timer(&session.report(), "polygonize");
       BAKE_ASSIGN_OR_RETURN(mesh, makeShape(settings.shape));
     }
-    const MeshStats stats = computeMeshStats(mesh);
+    // The surface's own topology: vertices split for a UV layout (seams, poles) welded back first.
+    TriangleMesh surface;
+    surface.positions = mesh.positions;
+    surface.triangles = mesh.triangles;
+    weldVertices(surface);
+    const MeshStats stats = computeMeshStats(surface);
     session.report().setStatistic("vertices", mesh.vertexCount());
     session.report().setStatistic("triangles", mesh.triangleCount());
     session.report().setStatistic("boundaryEdges", stats.boundaryEdges);
     session.report().setStatistic("nonManifoldEdges", stats.nonManifoldEdges);
     session.report().setStatistic("components", stats.components);
     // A closed surface: V - E + F = 2 - 2g, with E = 3F/2.
-    const long euler = long(mesh.vertexCount()) - long(mesh.triangleCount()) / 2;
+    const long euler = long(surface.vertexCount()) - long(surface.triangleCount()) / 2;
     session.report().setStatistic("genus", (2 - euler) / 2);
     std::vector<std::uint8_t> bytes;
     if (extension == ".obj") {

@@ -241,6 +241,7 @@ void copyStructure(glb::Package package, const Renumbering& renumbering, const T
   glb::Node object;
   object.name = input.object.name;
   object.translation = input.object.position;
+  object.rotation = input.object.rotation;
   object.scale = {input.object.scale, input.object.scale, input.object.scale};
   for (int root : topNodes(package)) object.children.push_back(root + nodeOffset);
   out.sceneRoots.push_back(int(out.nodes.size()));

@@ -1,6 +1,6 @@
 // Merges the baked packages of a scene into one scene package (formats/scene.md, "What the plan
-// leaves out"): each object's nodes under one node named after it, placed by the scene's position and
-// scale; its material replaced by the scene's; meshes, materials, images, textures and blobs
+// leaves out"): each object's nodes under one node named after it, placed by the scene's position,
+// rotation and scale; its material replaced by the scene's; meshes, materials, images, textures and blobs
 // renumbered; and, unless asked to keep them, the data no material reads not copied: unread geodesic
 // fields, an unread displacement map or base colour, an unread threshold texture, special-case
 // records a material does not read. Per-technique rules live in each module's pipe/assemble.cpp.

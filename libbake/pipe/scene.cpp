@@ -11,6 +11,7 @@
 
 #include "bake_formats/scene.h"
 #include "bake/core/atomic_file.h"
+#include "bake/core/vector_text.h"
 #include "core/json_keys.h"
 #include "core/json_read.h"
 #include "pipe/technique_hooks.h"
@@ -50,7 +51,7 @@ struct Vocabulary {
       for (const ReadsFlag& flag : hooks->reads) v.knownReads.push_back(flag.key);
     }
     for (const Owned& owned : v.objectKeys) v.knownObjectKeys.push_back(owned.key);
-    v.knownObjectKeys.insert(v.knownObjectKeys.end(), {"options", "position", "scale", "material"});
+    v.knownObjectKeys.insert(v.knownObjectKeys.end(), {"options", "position", "rotation", "scale", "material"});
     for (const Owned& owned : v.materialKeys) v.knownMaterialKeys.push_back(owned.key);
     v.knownMaterialKeys.push_back("reads");
     return v;
@@ -91,15 +92,25 @@ Result<Object> readObject(const SceneReader& r, const Vocabulary& v, const json&
   BAKE_ASSIGN_OR_RETURN(const TechniqueHooks* found, v.technique(r, node["technique"], child(where, "technique"), o.technique));
   const TechniqueHooks& hooks = *found;
   BAKE_ASSIGN_OR_RETURN(o.input, r.path(node["input"], child(where, "input")));
-  for (const Vocabulary::Owned& owned : v.objectKeys)
-    if (node.contains(owned.key) && o.technique != owned.technique)
-      return r.error(child(where, owned.key), "is for " + owned.technique + " objects only");
+  // A key some techniques own (several may: "mesh") is refused on the objects of any other.
+  for (const Vocabulary::Owned& owned : v.objectKeys) {
+    if (!node.contains(owned.key)) continue;
+    std::string owners;
+    bool ours = false;
+    for (const Vocabulary::Owned& other : v.objectKeys)
+      if (std::string_view(other.key) == owned.key) {
+        ours = ours || other.technique == o.technique;
+        owners += (owners.empty() ? "" : " and ") + other.technique;
+      }
+    if (!ours) return r.error(child(where, owned.key), "is for " + owners + " objects only");
+  }
   if (hooks.readObject) BAKE_RETURN_IF_ERROR(hooks.readObject(r, node, where, o));
   if (node.contains("options")) {
     BAKE_RETURN_IF_ERROR(r.object(node["options"], child(where, "options"), hooks.optionKeys));
     o.options = node["options"];
   }
   if (node.contains("position")) { BAKE_ASSIGN_OR_RETURN(o.position, r.vec3(node["position"], child(where, "position"))); }
+  if (node.contains("rotation")) { BAKE_ASSIGN_OR_RETURN(o.rotation, r.rotation(node["rotation"], child(where, "rotation"))); }
   if (node.contains("scale")) { BAKE_ASSIGN_OR_RETURN(o.scale, r.positive(node["scale"], child(where, "scale"))); }
   BAKE_ASSIGN_OR_RETURN(const std::string material, r.name(node["material"], child(where, "material")));
   const auto named = materials.find(material);
@@ -193,6 +204,17 @@ Result<std::array<double, 3>> SceneReader::vec3(const json& node, const std::str
   std::array<double, 3> v{};
   for (std::size_t k = 0; k < 3; ++k) { BAKE_ASSIGN_OR_RETURN(v[k], number(node[k], child(where, k))); }
   return v;
+}
+
+Result<std::array<double, 4>> SceneReader::rotation(const json& node, const std::string& where) const {
+  if (!node.is_array() || node.size() != 4) return error(where, "must be a unit quaternion [x, y, z, w] (glTF's rotation)");
+  std::array<double, 4> q{};
+  for (std::size_t k = 0; k < 4; ++k) { BAKE_ASSIGN_OR_RETURN(q[k], number(node[k], child(where, k))); }
+  const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(std::abs(length - 1) <= 1e-3))
+    return error(where, "must be a unit quaternion [x, y, z, w]: its length is " + numberText(length));
+  for (double& c : q) c /= length;
+  return q;
 }
 
 Result<std::string> SceneReader::name(const json& node, const std::string& where) const {

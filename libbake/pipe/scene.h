@@ -36,11 +36,12 @@ struct Object {
   std::string technique;  // a registry name (techniques/registry.h) whose row has scene hooks
   InputPath input;
   std::optional<InputPath> sources;    // geodesic
-  std::optional<InputPath> mesh;       // hatching
+  std::optional<InputPath> mesh;       // hatching (required), grooves (optional: else the preview plane)
   std::optional<InputPath> baseColor;  // revolution
   std::optional<InputPath> heightMap;  // revolution
   nlohmann::json options = nlohmann::json::object();  // as the scene gives them (formats/scene.md)
   std::array<double, 3> position{0, 0, 0};
+  std::array<double, 4> rotation{0, 0, 0, 1};  // unit quaternion x, y, z, w (glTF's)
   double scale = 1;
   std::size_t material = 0;  // index into Scene::materials
   // Geodesic: the field names of the sources file, in file order.

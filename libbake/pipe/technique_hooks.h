@@ -36,6 +36,7 @@ struct SceneReader : JsonReader {
   Result<int> integer(const nlohmann::json& node, const std::string& where, int lowest, int highest) const;
   Result<bool> boolean(const nlohmann::json& node, const std::string& where) const;
   Result<std::array<double, 3>> vec3(const nlohmann::json& node, const std::string& where) const;
+  Result<std::array<double, 4>> rotation(const nlohmann::json& node, const std::string& where) const;
   // Names become file names and node names: letters, digits, '-' and '_'.
   Result<std::string> name(const nlohmann::json& node, const std::string& where) const;
   Result<InputPath> path(const nlohmann::json& node, const std::string& where) const;

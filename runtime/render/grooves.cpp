@@ -2,7 +2,7 @@
 // BAKE_grooves arrays with libbake's reader, then upload every bufferView as it is into one immutable
 // storage buffer (each at an offset aligned for GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT and the
 // format's 256 bytes) and the grid header and counts into an 80-byte std140 uniform block. Per
-// instance: the mesh (POSITION, NORMAL when present, TEXCOORD_0) and the variant of shaders/grooves/
+// instance: the mesh (POSITION, NORMAL and TANGENT when present, TEXCOORD_0) and the variant of shaders/grooves/
 // its package needs:
 // mirrors compiled in only when a material mirrors, the special-case lookup only when the grid has
 // records, arrays sized to the package's longest profile and (up to 24) its primitive count. With
@@ -22,7 +22,7 @@ namespace {
 
 namespace fmt = format::grooves;
 
-constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2;
+constexpr int kPositionLocation = 0, kNormalLocation = 1, kTexcoordLocation = 2, kTangentLocation = 3;
 constexpr GLuint kHeaderBinding = 0;
 // Primitives kept per footprint (the shader's fixed arrays; a footprint over more is shaded from the
 // package's far level, or counted as truncated in a version 1 package that has none).
@@ -222,6 +222,10 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     if (primitive.find("NORMAL")) {
       variant.defines.push_back("HAS_NORMALS");
       locations["NORMAL"] = kNormalLocation;
+      if (const glb::Attribute* tangent = primitive.find("TANGENT"); tangent && tangent->components == 4) {
+        variant.defines.push_back("HAS_TANGENTS");
+        locations["TANGENT"] = kTangentLocation;
+      }
     }
     if (options_.shadingInputs) variant.defines.push_back("SHADING_INPUTS");
     Item item;

@@ -6,7 +6,8 @@
 // the CPU oracle libbake/grooves/oracle/shade.cpp computes it (line_sampling.glsl; special cases sampled by
 // area, area_sampling.glsl). The output is linear radiance (formats/groove-scene.md "Rendering
 // model"), no ambient term and no tone mapping.
-// Variants: HAS_NORMALS, HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES
+// Variants: HAS_NORMALS, HAS_TANGENTS (the mesh's TANGENT, glTF's convention, gives u and the
+// handedness of v = w · normal × u, as a baked mesh such as `groovebake --apply-to` has), HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES
 // (the package has records), HAS_AREA_SAMPLING (special cases sampled by area), AREA_SLOTS n,
 // MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1, A2, E, L to colour attachments
 // 1-3 and to alpha the special-case flag, 2, or 3 and 4 where area sampling fell back to line
@@ -17,6 +18,9 @@
 in vec3 vWorldPosition;
 in vec3 vNormal;
 in vec2 vTexcoord0;
+#ifdef HAS_TANGENTS
+in vec4 vTangent;
+#endif
 
 uniform vec3 uLightDir;      // towards the light, world space
 uniform vec3 uLightColour = vec3(1.0);
@@ -49,6 +53,16 @@ mat3 tangentFrame(vec3 normal, vec2 axis1, vec2 axis2) {
   return mat3(u, v, normal);
 }
 
+#ifdef HAS_TANGENTS
+// The frame of the interpolated TANGENT, made orthonormal around the normal (Gram-Schmidt).
+mat3 meshTangentFrame(vec3 normal) {
+  vec3 u = vTangent.xyz - normal * dot(normal, vTangent.xyz);
+  u = dot(u, u) > 0.0 ? normalize(u) : normalize(cross(abs(normal.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0), normal));
+  vec3 v = cross(normal, u) * (vTangent.w < 0.0 ? -1.0 : 1.0);
+  return mat3(u, v, normal);
+}
+#endif
+
 void main() {
   vec2 centre = vTexcoord0 * domainSize();
   vec2 axis1 = dFdx(centre), axis2 = dFdy(centre);
@@ -58,7 +72,11 @@ void main() {
 #else
   vec3 normal = normalize(geometric);
 #endif
+#ifdef HAS_TANGENTS
+  mat3 frame = meshTangentFrame(normal);
+#else
   mat3 frame = tangentFrame(normal, axis1, axis2);
+#endif
   vec3 toViewer = normalize(uCameraPos - vWorldPosition) * frame;  // (E.u, E.v, E.w)
   gLightDir = normalize(normalize(uLightDir) * frame);
   gLightRadiance = uLightColour;

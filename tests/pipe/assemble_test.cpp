@@ -43,6 +43,7 @@ Scene torusAndPlate() {
   torus.scale = 0.5;
   Object plate = objectOf("plate", "grooves", 1);
   plate.position = {-1, 0, 0};
+  plate.rotation = {0, 0.6, 0, 0.8};
   scene.objects = {torus, plate};
   Material sand = materialOf("sand", "geodesic");
   sand.fields = {"b"};
@@ -121,6 +122,8 @@ TEST(PipeAssemble, PlacesEachObjectUnderItsNode) {
   EXPECT_EQ(torus.scale, (std::array<double, 3>{0.5, 0.5, 0.5}));
   EXPECT_EQ(plate.name, "plate");
   EXPECT_EQ(plate.translation, (std::array<double, 3>{-1, 0, 0}));
+  EXPECT_EQ(plate.rotation, (std::array<double, 4>{0, 0.6, 0, 0.8}));
+  EXPECT_EQ(torus.rotation, (std::array<double, 4>{0, 0, 0, 1}));
   // Each object node holds its package's node, which draws that package's mesh.
   ASSERT_EQ(torus.children.size(), 1u);
   ASSERT_EQ(plate.children.size(), 1u);

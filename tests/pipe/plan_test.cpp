@@ -117,9 +117,16 @@ TEST(PipePlan, HatchingLeavesOutThresholdsAndTheLevelNoViewSamples) {
 
 TEST(PipePlan, GroovesLeaveOutRecordsOfTheFarRecordAndReportKindsThePatternLacks) {
   const Plan plan = planOf(exampleScene("grooves"));
-  EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"tiles: corner records", "record: special-case records"}));
+  EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"tiles: corner records", "column: intersection records",
+                                                         "column: corner records", "record: special-case records"}));
   EXPECT_TRUE(hasArgument(stepOf(plan, "groovebake:record"), "--no-special-cases"));
   EXPECT_FALSE(hasArgument(stepOf(plan, "groovebake:plate"), "--no-special-cases"));
+  // The column's grooves are drawn on the generated column (groovebake --apply-to), which the step
+  // waits for; the plate keeps its preview plane.
+  EXPECT_EQ(argumentAfter(stepOf(plan, "groovebake:column"), "--apply-to"), (kOut / "column.glb").string());
+  EXPECT_FALSE(hasArgument(stepOf(plan, "groovebake:plate"), "--apply-to"));
+  const auto& inputs = stepOf(plan, "groovebake:column").inputs;
+  EXPECT_NE(std::find(inputs.begin(), inputs.end(), kOut / "column.glb"), inputs.end());
 }
 
 TEST(PipePlan, KeepUnusedPlansTheFullBakes) {

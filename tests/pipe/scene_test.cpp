@@ -1,6 +1,8 @@
 // The scene description reader (pipe/scene.h): the example scenes, and errors that name the element.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "pipe/scene.h"
 #include "pipe/technique_hooks.h"
 
@@ -46,6 +48,17 @@ TEST(PipeScene, ReadsTheExampleScenes) {
   EXPECT_EQ(geodesic->objects[0].fieldNames, (std::vector<std::string>{"left tip", "right tip", "rims"}));
   EXPECT_EQ(geodesic->fieldsRead(geodesic->objects[0]), (std::vector<std::string>{"left tip"}));
   EXPECT_TRUE(geodesic->objects[0].input.generated);
+  // Grooves: the plate turned by its rotation, the column drawn on a generated mesh.
+  const Result<Scene> grooves = readScene(fs::path(BAKE_SOURCE_DIR) / "pipelines/grooves/scene.json");
+  ASSERT_TRUE(grooves.isOk()) << grooves.status().describe();
+  const auto named = [&](const std::string& name) {
+    return *std::find_if(grooves->objects.begin(), grooves->objects.end(), [&](const Object& o) { return o.name == name; });
+  };
+  EXPECT_NEAR(named("plate").rotation[1], -0.130526, 1e-6);
+  EXPECT_EQ(named("tiles").rotation, (std::array<double, 4>{0, 0, 0, 1}));
+  ASSERT_TRUE(named("column").mesh.has_value());
+  EXPECT_TRUE(named("column").mesh->generated);
+  EXPECT_FALSE(named("plate").mesh.has_value());
 }
 
 TEST(PipeScene, DefaultFieldIsTheFirst) {
@@ -84,6 +97,14 @@ TEST(PipeScene, ErrorsNameTheElement) {
   json reads = geodesicScene();
   reads["materials"][0]["reads"] = {{"threshold", true}};
   expectError(reads, "/materials/0/reads/threshold", "hatching materials only");
+  json mesh = geodesicScene();
+  mesh["objects"][0]["mesh"] = kGeodesic + "sources.json";
+  expectError(mesh, "/objects/0/mesh", "is for hatching and grooves objects only");
+  json rotation = geodesicScene();
+  rotation["objects"][0]["rotation"] = {0, 0, 0, 2};
+  expectError(rotation, "/objects/0/rotation", "length is 2");
+  rotation["objects"][0]["rotation"] = {0, 0, 1};
+  expectError(rotation, "/objects/0/rotation", "unit quaternion [x, y, z, w]");
   json camera = geodesicScene();
   camera["cameras"] = {{{"eye", {0, 0, 1}}, {"target", {0, 0, 1}}, {"yfov", 40}, {"width", 64}, {"height", 64}}};
   expectError(camera, "/cameras/0/target", "must differ from the eye");

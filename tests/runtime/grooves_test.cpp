@@ -20,10 +20,13 @@
 #include <sstream>
 
 #include "bake/io/glb.h"
+#include "bake/mesh/shapes.h"
 #include "grooves/bake/grid.h"
 #include "grooves/input/scene.h"
 #include "grooves/oracle/shade.h"
 #include "grooves/package/package.h"
+#include "grooves/package/surface.h"
+#include "mesh/tangent_frames.h"
 #include "grooves/reference/reference.h"
 #include "play/validate.h"
 #include "render/grooves.h"
@@ -73,6 +76,27 @@ Baked bake(const std::string& json, const std::string& name, std::optional<glb::
       attribute = glb::Attribute::fromFloats("TEXCOORD_0", 2, uv);
     }
   }
+  out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
+  const Status written = glb::write(out.file, *package);
+  EXPECT_TRUE(written.isOk()) << written.describe();
+  return out;
+}
+
+// The scene's package with its preview plane replaced by `surface` (groovebake --apply-to).
+Baked bakeOnSurface(const std::string& json, const std::string& name, const grooves::GrooveSurface& surface) {
+  Baked out;
+  auto scene = grooves::parseGrooveScene(json, name + ".json");
+  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+  if (!scene.isOk()) return out;
+  out.scene = std::move(scene).value();
+  auto grid = grooves::buildGrooveGrid(out.scene, {});
+  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
+  if (!grid.isOk()) return out;
+  out.grid = std::move(grid).value();
+  auto package = grooves::buildGroovePackage(out.scene, out.grid);
+  EXPECT_TRUE(package.isOk()) << package.status().describe();
+  if (!package.isOk()) return out;
+  grooves::applySurface(*package, surface);
   out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
   const Status written = glb::write(out.file, *package);
   EXPECT_TRUE(written.isOk()) << written.describe();
@@ -139,6 +163,7 @@ struct OracleFigures {
   double meanRadiance = 0;
   std::string worst;   // the worst pixel's inputs and values, for the failure message
   std::vector<float> radiance;  // the shader's image, RGBA
+  std::vector<float> inputs[3];  // the shader's shading inputs (F, A1; A2, E.uv; E.w, L), RGBA each
   // Pixels the CPU method sends to area sampling (§6): compared apart (the shader samples them by
   // area too, in fp32), and left out of the figures above. Pixels the shader line sampled instead
   // are counted apart and left out of the special figures: noSlot (no arena slot was free) and cut
@@ -201,6 +226,9 @@ class GroovesOracle : public test::GlTest {
                              in2 = targetBuffers.read(3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     figures.radiance = radiance;
+    figures.inputs[0] = in0;
+    figures.inputs[1] = in1;
+    figures.inputs[2] = in2;
     figures.statistics = renderer.statistics();
 
     // The CPU holds what the shader holds: a footprint over more primitives goes to the far level.
@@ -795,6 +823,173 @@ TEST_F(GroovesOracle, BakeplayFrameMatchesTheGoldenImage) {
 
 // ---------------------------------------------------------------------------------------------
 // Registration and package checks
+
+// Grooves on a curved mesh (groovebake --apply-to; seed 000 Figs. 1, 11, 13): the fluted column of
+// pipelines/grooves on bakeshape's column, its tangent frames computed by the library. Two checks:
+// the shader against the CPU method from the shader's own inputs (within 2/255, as on the plane), and
+// the shader's inputs against the CPU's own path through the same mesh: a ray from the camera through
+// each pixel centre hits the triangles (double precision, nothing shared with the renderer), the hit's
+// barycentrics give F, the normal and the TANGENT frame, E and L; the footprint edges are the change
+// of F over one pixel on the hit triangle's plane. The CPU method shaded from those inputs must match
+// the shader's image too.
+struct RayHit {
+  double t = 0;
+  std::size_t triangle = 0;
+  double b[3] = {0, 0, 0};  // barycentrics
+};
+
+std::optional<RayHit> castRay(const TriangleMesh& mesh, const Vec3d& origin, const Vec3d& direction) {
+  std::optional<RayHit> best;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Triangle& tri = mesh.triangles[i];
+    auto at = [&](int k) { const Vec3f& p = mesh.positions[tri[std::size_t(k)]]; return Vec3d{p[0], p[1], p[2]}; };
+    const Vec3d a = at(0), e1 = vec::sub(at(1), a), e2 = vec::sub(at(2), a);
+    const Vec3d p = vec::cross(direction, e2);
+    const double det = vec::dot(e1, p);
+    if (std::abs(det) < 1e-18) continue;
+    const Vec3d s = vec::sub(origin, a);
+    const double u = vec::dot(s, p) / det;
+    if (u < 0 || u > 1) continue;
+    const Vec3d q = vec::cross(s, e1);
+    const double v = vec::dot(direction, q) / det;
+    if (v < 0 || u + v > 1) continue;
+    const double t = vec::dot(e2, q) / det;
+    if (t <= 1e-9 || (best && t >= best->t)) continue;
+    best = RayHit{t, i, {1 - u - v, u, v}};
+  }
+  return best;
+}
+
+// Barycentrics of `point` in the plane of triangle i (outside the triangle too).
+std::array<double, 3> planeBarycentrics(const TriangleMesh& mesh, std::size_t i, const Vec3d& point) {
+  const Triangle& tri = mesh.triangles[i];
+  auto at = [&](int k) { const Vec3f& p = mesh.positions[tri[std::size_t(k)]]; return Vec3d{p[0], p[1], p[2]}; };
+  const Vec3d a = at(0), e1 = vec::sub(at(1), a), e2 = vec::sub(at(2), a), d = vec::sub(point, a);
+  const double d11 = vec::dot(e1, e1), d12 = vec::dot(e1, e2), d22 = vec::dot(e2, e2);
+  const double d1 = vec::dot(d, e1), d2 = vec::dot(d, e2), den = d11 * d22 - d12 * d12;
+  const double u = (d22 * d1 - d12 * d2) / den, v = (d11 * d2 - d12 * d1) / den;
+  return {1 - u - v, u, v};
+}
+
+struct CameraRays {
+  Vec3d eye, forward, right, up;
+  double halfHeight;  // tan(yfov / 2)
+  Vec3d through(double x, double y) const {  // window coordinates, y up, pixel centres at +0.5
+    const double nx = 2 * x / kSize - 1, ny = 2 * y / kSize - 1;
+    return vec::unit(vec::add(forward, vec::add(vec::scale(right, nx * halfHeight), vec::scale(up, ny * halfHeight))), forward);
+  }
+};
+
+TEST_F(GroovesOracle, FlutedColumnMatchesTheCpuThroughTheSameMesh) {
+  Result<TriangleMesh> column = makeShape({"column", 64});
+  ASSERT_TRUE(column.isOk()) << column.status().describe();
+  grooves::GrooveSurface surface;
+  surface.name = "column";
+  surface.mesh = std::move(column).value();
+  Result<TangentFrames> frames = computeTangentFrames(surface.mesh);
+  ASSERT_TRUE(frames.isOk()) << frames.status().describe();
+  surface.tangents = frames->tangents;
+  const Baked baked = bakeOnSurface(exampleScene("flutes.json"), "column", surface);
+  ASSERT_FALSE(baked.file.empty());
+  const Vec3 eye{0.32f, 0.05f, 0.78f}, target{0.13f, 0, 0.32f}, light{0.5f, 0.6f, 0.8f};
+  const OracleFigures f = compare(baked, eye, target, light, 0, {0, 1, 0});
+  expectWithinTwoLevels(f, "column");
+
+  // The CPU's own path through the mesh.
+  const TriangleMesh& mesh = surface.mesh;
+  CameraRays rays;
+  rays.eye = {eye[0], eye[1], eye[2]};
+  rays.forward = vec::unit(vec::sub({target[0], target[1], target[2]}, rays.eye), {0, 0, -1});
+  rays.right = vec::unit(vec::cross(rays.forward, {0, 1, 0}), {1, 0, 0});
+  rays.up = vec::cross(rays.right, rays.forward);
+  rays.halfHeight = std::tan(0.35);
+  const Vec3d toLight = vec::unit({light[0], light[1], light[2]}, {0, 0, 1});
+  const double domain[2] = {baked.scene.domain[0], baked.scene.domain[1]};
+  auto textureAt = [&](std::size_t i, const std::array<double, 3>& b) {
+    std::array<double, 2> uv{0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 2; ++c) uv[std::size_t(c)] += b[std::size_t(k)] * mesh.texcoords[mesh.triangles[i][std::size_t(k)]][std::size_t(c)];
+    return std::array<double, 2>{uv[0] * domain[0], uv[1] * domain[1]};
+  };
+  // F where the ray through window point (x, y) meets triangle i's plane.
+  auto textureOnPlane = [&](std::size_t i, double x, double y) {
+    const Triangle& tri = mesh.triangles[i];
+    const Vec3f& a = mesh.positions[tri[0]];
+    const Vec3d d = rays.through(x, y), n = vec::cross(vec::sub({mesh.positions[tri[1]][0], mesh.positions[tri[1]][1], mesh.positions[tri[1]][2]}, {a[0], a[1], a[2]}),
+                                                     vec::sub({mesh.positions[tri[2]][0], mesh.positions[tri[2]][1], mesh.positions[tri[2]][2]}, {a[0], a[1], a[2]}));
+    const double t = vec::dot(n, vec::sub({a[0], a[1], a[2]}, rays.eye)) / vec::dot(n, d);
+    return textureAt(i, planeBarycentrics(mesh, i, vec::add(rays.eye, vec::scale(d, t))));
+  };
+  grooves::SeedSettings asRuntime;
+  asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
+  const grooves::SeedShader oracle(baked.scene, baked.grid, asRuntime);
+  std::size_t compared = 0, over = 0;
+  double maxCentre = 0, maxAxis = 0, maxDirection = 0;
+  int maxLevels = 0;
+  std::vector<double> axisErrors;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t p = std::size_t(y) * kSize + std::size_t(x);
+      const float* a = &f.inputs[0][p * 4];
+      const float* b = &f.inputs[1][p * 4];
+      const float* c = &f.inputs[2][p * 4];
+      if (!(c[0] > 0.1f)) continue;  // not covered, or within ~6 degrees of the silhouette
+      const std::optional<RayHit> hit = castRay(mesh, rays.eye, rays.through(x + 0.5, y + 0.5));
+      if (!hit) continue;
+      const std::size_t i = hit->triangle;
+      const std::array<double, 3> bary{hit->b[0], hit->b[1], hit->b[2]};
+      const std::array<double, 2> centre = textureAt(i, bary);
+      const auto right = textureOnPlane(i, x + 1.0, y + 0.5), left = textureOnPlane(i, x + 0.0, y + 0.5);
+      const auto top = textureOnPlane(i, x + 0.5, y + 1.0), bottom = textureOnPlane(i, x + 0.5, y + 0.0);
+      const grooves::Vec2 axis1{right[0] - left[0], right[1] - left[1]}, axis2{top[0] - bottom[0], top[1] - bottom[1]};
+      Vec3d normal{0, 0, 0}, tangent{0, 0, 0};
+      double handedness = 0;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh.triangles[i][std::size_t(k)];
+        for (int j = 0; j < 3; ++j) {
+          normal[std::size_t(j)] += bary[std::size_t(k)] * mesh.normals[v][std::size_t(j)];
+          tangent[std::size_t(j)] += bary[std::size_t(k)] * surface.tangents[v][std::size_t(j)];
+        }
+        handedness += surface.tangents[v][3];
+      }
+      normal = vec::unit(normal, {0, 0, 1});
+      const Vec3d u = vec::unit(vec::sub(tangent, vec::scale(normal, vec::dot(normal, tangent))), {1, 0, 0});
+      const Vec3d w = vec::scale(vec::cross(normal, u), handedness < 0 ? -1 : 1);
+      const Vec3d point = vec::add(rays.eye, vec::scale(rays.through(x + 0.5, y + 0.5), hit->t));
+      const Vec3d view = vec::unit(vec::sub(rays.eye, point), {0, 0, 1});
+      const grooves::Vec3 toViewer{vec::dot(view, u), vec::dot(view, w), vec::dot(view, normal)};
+      grooves::Lighting lighting;
+      lighting.toLight = {vec::dot(toLight, u), vec::dot(toLight, w), vec::dot(toLight, normal)};
+      lighting.maxBounces = 0;
+
+      const double extent = std::max(std::hypot(axis1.u, axis1.v), std::hypot(axis2.u, axis2.v));
+      maxCentre = std::max(maxCentre, std::hypot(a[0] - centre[0], a[1] - centre[1]) / extent);
+      const double axisError = std::max(std::hypot(a[2] - axis1.u, a[3] - axis1.v), std::hypot(b[0] - axis2.u, b[1] - axis2.v)) / extent;
+      axisErrors.push_back(axisError);
+      maxAxis = std::max(maxAxis, axisError);
+      maxDirection = std::max({maxDirection, std::abs(b[2] - toViewer.u), std::abs(b[3] - toViewer.v), std::abs(c[0] - toViewer.w),
+                               std::abs(c[1] - lighting.toLight.u), std::abs(c[2] - lighting.toLight.v), std::abs(c[3] - lighting.toLight.w)});
+      const grooves::Rgb expected = oracle.shade({{centre[0], centre[1]}, axis1, axis2}, toViewer, lighting);
+      int levels = 0;
+      for (int k = 0; k < 3; ++k)
+        levels = std::max(levels, std::abs(quantised(f.radiance[p * 4 + std::size_t(k)]) - quantised(expected[std::size_t(k)])));
+      maxLevels = std::max(maxLevels, levels);
+      over += levels > 2 ? 1 : 0;
+      ++compared;
+    }
+  std::sort(axisErrors.begin(), axisErrors.end());
+  const double axis99 = axisErrors.empty() ? 0 : axisErrors[axisErrors.size() * 99 / 100];
+  std::printf("[ grooves ] column through the mesh: %zu pixels; F within %.3g footprints, footprint edges within %.3g "
+              "(99th percentile %.3g), E and L within %.3g; CPU-own inputs: max %d/255, %zu pixels over 2/255\n",
+              compared, maxCentre, maxAxis, axis99, maxDirection, maxLevels, over);
+  RecordProperty("column_mesh_pixels", int(compared));
+  RecordProperty("column_mesh_max_levels", maxLevels);
+  EXPECT_GT(compared, std::size_t(kSize * kSize / 4)) << "the column covers too little of the image";
+  EXPECT_LE(maxCentre, 0.01) << "the shader's footprint centre is off the CPU's ray hit";
+  EXPECT_LE(maxDirection, 2e-3) << "the shader's tangent frame differs from the mesh's TANGENT frame";
+  EXPECT_LE(axis99, 0.05) << "the shader's footprint edges differ from one pixel's change of F";
+  EXPECT_EQ(over, 0u) << "pixels where the CPU method through the mesh differs by more than 2/255";
+}
 
 TEST(GroovesPackage, RegisteredForTheExtension) {
   EXPECT_TRUE(RendererRegistry::builtIn().has(format::grooves::kExtension));

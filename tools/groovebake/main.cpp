@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
                "a glTF package whose BAKE_grooves material holds the groove grid: a uniform grid of\n"
                "per-cell primitive lists (CSR), the special-case records (intersections, ends, corners),\n"
                "and the primitives, grooves, profiles and materials in cell-local fp32, laid out for\n"
-               "direct GPU upload. A preview plane covers the domain.",
+               "direct GPU upload. A preview plane covers the domain, or --apply-to draws the grooves on a\n"
+               "UV-mapped mesh (its UV [0,1]^2 spans the domain; tangent frames computed where missing).",
                "groovebake"};
   app.add_option("scene", settings.scene, "Scene file (.json, formats/groove-scene.schema.json)")->required();
   app.add_option("-o,--output", settings.output, "Package to write (.glb)")->required();
@@ -29,6 +30,11 @@ int main(int argc, char** argv) {
       ->default_str(std::to_string(settings.maxCells));
   app.add_flag("--no-special-cases{false}", settings.specialCases,
                "Write no special-case records: every footprint is line-sampled (for patterns seen only from far)");
+  app.add_option("--apply-to", settings.applyTo,
+                 "Mesh to draw the grooves on instead of the preview plane (.obj .ply .off .stl .gltf .glb, with UVs)");
+  app.add_option("--max-stretch", settings.maxStretch,
+                 "Warn where the mesh's UV layout stretches the pattern (or scales it from the median) beyond this ratio")
+      ->default_str("1.5");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
   return bake::runBaker("groovebake", app, settings, diagnostics, argc, argv);

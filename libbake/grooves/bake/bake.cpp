@@ -6,12 +6,16 @@
 #include "bake/grooves/bake/bake.h"
 
 #include <chrono>
+#include <iomanip>
+#include <sstream>
 
 #include "bake/core/session.h"
+#include "bake/core/vector_text.h"
 #include "core/path.h"
 #include "core/progress.h"
 #include "grooves/bake/grid_stages.h"
 #include "grooves/package/package.h"
+#include "grooves/package/surface.h"
 
 namespace bake::grooves {
 namespace {
@@ -23,6 +27,8 @@ Status checkOptions(const Settings& settings) {
   BAKE_RETURN_IF_ERROR(checkWrittenExtension(settings.output, "-o", ".glb", "the package"));
   if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize)) return usageError("--cell-size must be a finite number >= 0");
   if (settings.maxCells < 1) return usageError("--max-cells must be at least 1");
+  if (!(settings.maxStretch >= 1) || !std::isfinite(settings.maxStretch))
+    return usageError("--max-stretch must be a finite ratio >= 1");
   return {};
 }
 
@@ -31,6 +37,8 @@ json optionsOf(const Settings& settings) {
           {"cellSize", settings.cellSize},
           {"maxCells", settings.maxCells},
           {"specialCases", settings.specialCases},
+          {"applyTo", settings.applyTo},
+          {"maxStretch", settings.maxStretch},
           {"threads", settings.common.threads}};
 }
 
@@ -94,6 +102,53 @@ void reportError(const StoredGeometryError& error, const GrooveGrid& grid, Repor
        {"maxJointNormalError", error.maxNormal}});
 }
 
+// The texture-space scale of the pattern on the surface and the stretch of its UV layout, in the
+// report, and a warning where the grooves will look distorted.
+void reportSurface(const Settings& settings, const GrooveScene& scene, const GrooveSurface& surface, BakeSession& session) {
+  const double unitsPerUv[2] = {scene.domain[0], scene.domain[1]};
+  const UvStretch stretch = measureUvStretch(surface.mesh, unitsPerUv, settings.maxStretch);
+  const std::string units = scene.units.empty() ? "texture units" : scene.units;
+  json tangents = {{"source", surface.tangentsFromMesh ? "mesh" : "computed"}};
+  if (!surface.tangentsFromMesh) {
+    tangents["splitVertices"] = surface.computed.splitVertices;
+    tangents["degenerateTriangles"] = surface.computed.degenerateTriangles;
+    tangents["fallbackVertices"] = surface.computed.fallbackVertices;
+    tangents["normalsComputed"] = surface.computed.normalsComputed;
+    if (!surface.tangentProblem.empty()) tangents["meshTangentsUnused"] = surface.tangentProblem;
+  }
+  session.report().setStatistic(
+      "surface", {{"mesh", settings.applyTo},
+                  {"vertices", surface.mesh.vertexCount()},
+                  {"triangles", surface.mesh.triangleCount()},
+                  {"textureScale", {{"unitsPerUv", {unitsPerUv[0], unitsPerUv[1]}}, {"units", units}}},
+                  {"worldPerTextureUnit", {{"median", stretch.medianScale}, {"min", stretch.minScale}, {"max", stretch.maxScale}}},
+                  {"maxStretch", stretch.maxStretch},
+                  {"maxStretchTriangle", stretch.worstTriangle},
+                  {"stretchLimit", settings.maxStretch},
+                  {"trianglesOverLimit", stretch.trianglesOver},
+                  {"areaShareOverLimit", stretch.areaShareOver},
+                  {"trianglesWithoutUvArea", stretch.noUvArea},
+                  {"tangents", tangents}});
+  Diagnostics& diagnostics = session.diagnostics();
+  if (stretch.trianglesOver > 0) {
+    std::ostringstream message;
+    message << settings.applyTo << ": the grooves will look distorted on " << stretch.trianglesOver << " of "
+            << surface.mesh.triangleCount() << " triangles (" << std::setprecision(3) << 100 * stretch.areaShareOver
+            << " % of the area): their UV layout stretches the pattern by more than " << settings.maxStretch
+            << " (--max-stretch), or scales it that much away from the median";
+    if (stretch.maxStretch > settings.maxStretch)
+      message << "; worst stretch " << stretch.maxStretch << " at triangle " << stretch.worstTriangle;
+    if (stretch.noUvArea > 0) message << "; " << stretch.noUvArea << " triangles have no UV area";
+    diagnostics.warning("uv-stretch", message.str());
+  }
+  if (!surface.tangentsFromMesh && surface.computed.fallbackVertices > 0)
+    diagnostics.warning("tangent-fallback", settings.applyTo + ": " + std::to_string(surface.computed.fallbackVertices) +
+                                                " vertices touch only triangles without UV area: their tangent is arbitrary");
+  diagnostics.info(settings.applyTo + ": 1 UV unit = " + numberText(unitsPerUv[0]) + " x " + numberText(unitsPerUv[1]) +
+                   " " + units + "; on the mesh 1 texture unit spans " + numberText(stretch.medianScale) +
+                   " world units (median), stretch up to " + numberText(stretch.maxStretch));
+}
+
 Status bake(const Settings& settings, BakeSession& session) {
   Report& report = session.report();
   Progress progress("baking grooves", 5, progressEnabled(session.diagnostics().quiet()));
@@ -137,6 +192,14 @@ Status bake(const Settings& settings, BakeSession& session) {
     BAKE_ASSIGN_OR_RETURN(const GroovePackage stored, decodeGroovePackage(package, settings.scene, false));
     reportError(storedGeometryError(scene, grid, stored), grid, report);
   }
+  if (!settings.applyTo.empty()) {
+    StageTimer timer(&report, "surface");
+    BAKE_ASSIGN_OR_RETURN(const GrooveSurface surface, readGrooveSurface(settings.applyTo));
+    session.addInput(settings.applyTo);
+    reportSurface(settings, scene, surface, session);
+    applySurface(package, surface);
+    BAKE_ASSIGN_OR_RETURN(bytes, glb::encode(package));
+  }
   progress.update(4);
   {
     StageTimer timer(&report, "write");
@@ -155,6 +218,7 @@ std::vector<std::string> inputFiles(const Settings& settings) {
   std::vector<std::string> inputs{settings.scene};
   if (Result<GrooveScene> scene = readGrooveScene(settings.scene); scene.isOk())
     inputs.insert(inputs.end(), scene->files.begin(), scene->files.end());
+  if (!settings.applyTo.empty()) inputs.push_back(settings.applyTo);
   return inputs;
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "bake/core/limits.h"
+#include "bake/core/vector_text.h"
 #include "core/parallel.h"
 #include "grooves/bake/grid_stages.h"
 
@@ -39,23 +40,16 @@ std::uint64_t cellsAlong(double extent, double size) {
   return count < 1 ? 1 : count > 4e9 ? std::uint64_t(4e9) : std::uint64_t(count);
 }
 
-// A number for a message: "1e-09", not std::to_string's "0.000000".
-std::string shortNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 Status chooseCells(const GrooveScene& scene, const GridSettings& settings, Lattice& lattice) {
   const Location where{"", "grid"};
   if (!(settings.cellSize >= 0) || !std::isfinite(settings.cellSize))
-    return invalidInput("cell size " + shortNumber(settings.cellSize) + " must be finite and >= 0", where);
+    return invalidInput("cell size " + numberText(settings.cellSize) + " must be finite and >= 0", where);
   if (settings.maxCells < 1) return invalidInput("the largest cell count must be at least 1", where);
   const double U = scene.domain[0], V = scene.domain[1];
   double size = settings.cellSize > 0 ? settings.cellSize : meanGrooveWidth(scene);
   auto count = [&] { return double(cellsAlong(U, size)) * double(cellsAlong(V, size)); };
   if (settings.cellSize > 0 && count() > double(settings.maxCells))
-    return invalidInput("cell size " + shortNumber(settings.cellSize) + " gives " + shortNumber(count()) +
+    return invalidInput("cell size " + numberText(settings.cellSize) + " gives " + numberText(count()) +
                             " cells, more than the largest count " + std::to_string(settings.maxCells),
                         where);
   // Grow by at least 1% a step, by the square root of the excess when it is large.

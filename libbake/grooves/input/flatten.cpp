@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "bake/core/limits.h"
+#include "bake/core/vector_text.h"
 #include "bake/core/vec.h"
 #include "grooves/input/scene.h"
 
@@ -20,12 +21,6 @@ namespace {
 
 using planar::cross;
 using planar::length;
-
-std::string showNumber(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
 
 std::string showPoint(Vec2 p) {
   char text[96];
@@ -254,7 +249,7 @@ Status flattenPath(const std::vector<PathPiece>& pieces, double tolerance, doubl
       // and a curve that far out would only split until the depth limit.
       if (!(tolerance >= 1e-10 * magnitude))
         return invalidInput(label + ": " + segment + " at " + showPoint(curve.f(0)) + ": coordinates as large as " +
-                                showNumber(magnitude) + " cannot be flattened to within " + showNumber(tolerance),
+                                numberText(magnitude) + " cannot be flattened to within " + numberText(tolerance),
                             {source, ""});
       Flattener flattener{curve, tolerance, minRadius, first, label, source, out};
       BAKE_RETURN_IF_ERROR(flattener.run(0, 1, 0));

@@ -7,15 +7,10 @@
 #include <cstdio>
 
 #include "grooves/input/scene.h"
+#include "bake/core/vector_text.h"
 
 namespace bake::grooves {
 namespace {
-
-std::string show(double x) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.9g", x);
-  return text;
-}
 
 bool near(Vec2 a, Vec2 b, double eps) { return std::abs(a.u - b.u) <= eps && std::abs(a.v - b.v) <= eps; }
 
@@ -50,12 +45,12 @@ Status validateProfile(Profile& profile, const std::string& source) {
   if (pts.size() < 3) return invalidInput(where + ": needs at least 3 points (2 segments)", {source, "/profiles/" + profile.name});
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!std::isfinite(pts[i].u) || !std::isfinite(pts[i].v)) return fail(i == 0 ? 0 : i - 1, "point " + std::to_string(i) + " is not finite");
-  if (pts.front().v != 0) return fail(0, "the first point must be on the surface (h = 0), h is " + show(pts.front().v));
-  if (pts.back().v != 0) return fail(pts.size() - 2, "the last point must be on the surface (h = 0), h is " + show(pts.back().v));
+  if (pts.front().v != 0) return fail(0, "the first point must be on the surface (h = 0), h is " + numberText(pts.front().v, 9));
+  if (pts.back().v != 0) return fail(pts.size() - 2, "the last point must be on the surface (h = 0), h is " + numberText(pts.back().v, 9));
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     const Vec2 a = pts[i], b = pts[i + 1];
     if (b.u < a.u)
-      return fail(i, "b decreases from " + show(a.u) + " to " + show(b.u) + " (an undercut: the surface would not be a height field)");
+      return fail(i, "b decreases from " + numberText(a.u, 9) + " to " + numberText(b.u, 9) + " (an undercut: the surface would not be a height field)");
     if (a.u == b.u && a.v == b.v) return fail(i, "coincident consecutive points (self-intersection)");
     // Two vertical walls in opposite directions at the same b overlap each other.
     if (i + 2 < pts.size() && a.u == b.u && b.u == pts[i + 2].u && (b.v - a.v) * (pts[i + 2].v - b.v) < 0)

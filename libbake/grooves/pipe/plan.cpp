@@ -1,4 +1,6 @@
-// Groove objects in scene files and plans (formats/scene.md). The plan bakes no special-case records
+// Groove objects in scene files and plans (formats/scene.md). An object may name a UV-mapped "mesh"
+// the grooves are drawn on (groovebake --apply-to); without one its package holds the preview plane
+// over the domain. The plan bakes no special-case records
 // when the material line-samples everywhere, and reports the kinds of special case the pattern does
 // not contain (nothing of them is baked).
 #include "grooves/pipe/pipe.h"
@@ -13,10 +15,21 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
+Status readGroovesObject(const pipe::SceneReader& r, const json& node, const std::string& where, pipe::Object& o) {
+  if (!node.contains("mesh")) return Status::ok();
+  BAKE_ASSIGN_OR_RETURN(o.mesh, r.path(node["mesh"], jsonPointerChild(where, "mesh")));
+  return Status::ok();
+}
+
 Status planGrooves(pipe::ObjectPlanner& p, const pipe::Object& object, pipe::Step& step) {
   const pipe::Material& material = p.scene.materialOf(object);
   const fs::path input = p.resolve(object.input);
   p.addInput(step, input);
+  if (object.mesh) {
+    const fs::path mesh = p.resolve(*object.mesh);
+    step.inputs.push_back(mesh);
+    step.arguments.insert(step.arguments.end(), {"--apply-to", mesh.string()});
+  }
   pipe::ObjectPlanner::option(step, object.options, "cellSize", "--cell-size");
   pipe::ObjectPlanner::option(step, object.options, "maxCells", "--max-cells");
   step.outputs.push_back(p.baked(object, ".glb"));
@@ -45,6 +58,8 @@ Status planGrooves(pipe::ObjectPlanner& p, const pipe::Object& object, pipe::Ste
 
 const pipe::TechniqueHooks& pipeHooks() {
   static const pipe::TechniqueHooks hooks{.optionKeys = {"cellSize", "maxCells"},
+                                          .objectKeys = {"mesh"},
+                                          .readObject = readGroovesObject,
                                           .reads = {{"specialCases", &pipe::Material::readsSpecialCases}},
                                           .plan = planGrooves,
                                           .assemble = &assembleRules()};

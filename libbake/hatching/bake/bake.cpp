@@ -6,6 +6,7 @@
 // tone error against the style's target tones, nesting violations against zero (nesting holds by
 // construction), ink variation and low-frequency power against a uniform ink distribution.
 #include "bake/hatching/bake.h"
+#include "bake/core/vector_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,12 +25,6 @@ namespace {
 
 using nlohmann::json;
 namespace fmt = format::tam;
-
-std::string number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
 
 bool finite3(const std::array<double, 3>& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
@@ -203,13 +198,13 @@ void reportQuality(const BakeState& state, Report& report) {
   int uniformityImages = 0;
   for (const ImageQuality& image : q.images) uniformityImages += image.uniformityChecked ? 1 : 0;
   report.addAccuracy("ink uniformity: coefficient of variation of darkness over the 16 quarter-tile windows",
-                     "evenly spread ink: target <= " + number(kInkVariationTarget) + " on " + uniformityScope(),
+                     "evenly spread ink: target <= " + numberText(kInkVariationTarget) + " on " + uniformityScope(),
                      {{"maxInkVariation", q.maxInkVariation},
                       {"target", kInkVariationTarget},
                       {"imagesChecked", uniformityImages},
                       {"maxInkVariationAllImages", q.maxInkVariationAll}});
   report.addAccuracy("low-frequency power: share of non-DC spectral power below 4 cycles per tile",
-                     "no visible blotches: target <= " + number(kLowFrequencyPowerTarget) + " on the same images",
+                     "no visible blotches: target <= " + numberText(kLowFrequencyPowerTarget) + " on the same images",
                      {{"maxLowFrequencyPower", q.maxLowFrequencyPower},
                       {"target", kLowFrequencyPowerTarget},
                       {"imagesChecked", uniformityImages},

@@ -10,6 +10,7 @@
 // is refused. A global normal that is not unit is normalised; a zero normal stays zero and means "no
 // self-shadowing" for that point (shadow.cpp).
 #include "paintstrokes/input/validate.h"
+#include "bake/core/vector_text.h"
 
 #include <cmath>
 #include <sstream>
@@ -22,29 +23,23 @@ namespace {
 // Warnings per kind printed one by one; the rest are summed up in one line.
 constexpr std::size_t kWarningsShown = 10;
 
-std::string show(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
 bool finite3(const Vec3d& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
 Status checkPoint(const StrokePoint& p, const std::string& file, std::size_t s, std::size_t i) {
   auto fail = [&](const std::string& message) { return invalidInput(message, {file, pointElement(s, i)}); };
   if (!finite3(p.position))
-    return fail("position is (" + show(p.position[0]) + ", " + show(p.position[1]) + ", " + show(p.position[2]) + ") (must be finite)");
+    return fail("position is (" + numberText(p.position[0]) + ", " + numberText(p.position[1]) + ", " + numberText(p.position[2]) + ") (must be finite)");
   for (double x : p.position)
-    if (std::abs(x) > kLargestValue) return fail("position coordinate " + show(x) + " is beyond +-1e30");
-  if (!std::isfinite(p.radius) || !(p.radius > 0)) return fail("radius is " + show(p.radius) + " (must be > 0)");
-  if (p.radius > kLargestValue) return fail("radius is " + show(p.radius) + " (beyond 1e30)");
+    if (std::abs(x) > kLargestValue) return fail("position coordinate " + numberText(x) + " is beyond +-1e30");
+  if (!std::isfinite(p.radius) || !(p.radius > 0)) return fail("radius is " + numberText(p.radius) + " (must be > 0)");
+  if (p.radius > kLargestValue) return fail("radius is " + numberText(p.radius) + " (beyond 1e30)");
   for (int k = 0; k < 3; ++k)
     if (!(p.colour[k] >= 0 && p.colour[k] <= 1))
-      return fail("colour is (" + show(p.colour[0]) + ", " + show(p.colour[1]) + ", " + show(p.colour[2]) + ") (must be within [0, 1])");
-  if (!(p.opacity >= 0 && p.opacity <= 1)) return fail("opacity is " + show(p.opacity) + " (must be within [0, 1])");
-  if (!(p.reflectance >= 0 && p.reflectance <= 1)) return fail("reflectance is " + show(p.reflectance) + " (must be within [0, 1])");
+      return fail("colour is (" + numberText(p.colour[0]) + ", " + numberText(p.colour[1]) + ", " + numberText(p.colour[2]) + ") (must be within [0, 1])");
+  if (!(p.opacity >= 0 && p.opacity <= 1)) return fail("opacity is " + numberText(p.opacity) + " (must be within [0, 1])");
+  if (!(p.reflectance >= 0 && p.reflectance <= 1)) return fail("reflectance is " + numberText(p.reflectance) + " (must be within [0, 1])");
   if (!finite3(p.globalNormal)) return fail("normal is not finite");
-  if (!(p.depth >= 0 && p.depth <= 1)) return fail("depth is " + show(p.depth) + " (must be within [0, 1])");
+  if (!(p.depth >= 0 && p.depth <= 1)) return fail("depth is " + numberText(p.depth) + " (must be within [0, 1])");
   return {};
 }
 

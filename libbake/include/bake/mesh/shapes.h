@@ -20,6 +20,9 @@ std::vector<std::string> shapeNames();
 
 // sphere: radius 1; torus: radii 1 and 0.4 (genus 1); pretzel: three tori of radii 0.8 and 0.3
 // in a row, smoothly blended where they meet (genus 3); double-torus: two of them (genus 2).
+// With a UV layout (TEXCOORD_0; seams and poles are split vertices): column, a capped cylinder of
+// radius 0.35 from y = -1 to 1 whose UV spans its circumference and height; globe, a latitude-
+// longitude sphere of radius 1.
 Result<TriangleMesh> makeShape(const ShapeSettings& settings);
 
 }  // namespace bake
