@@ -59,6 +59,8 @@ def valid_content(ctx, recipe, slot, ext, ref_names=None):
     names (an SVG, a ring profile) are written beside it in the case folder."""
     ref_names = ref_names or {}
     mesh = mesh_for(recipe, slot)
+    if recipe == "groovebake" and slot == "mesh" and ext == "obj":
+        return I.obj_text_uv(mesh).encode()
     if ext in ("obj", "ply", "off", "stl"):
         return I.MESH_TEXT[ext](mesh).encode()
     if ext == "glb":
@@ -527,7 +529,7 @@ INPUT_KINDS = [
     ("revolbake", "profile", "json"), ("revolbake", "profile", "csv"), ("revolbake", "profile", "svg"),
     ("revolbake", "profile", "png"), ("revolbake", "profile", "obj"), ("revolbake", "height", "png"),
     ("revolbake", "colour", "png"),
-    ("groovebake", "scene", "json"), ("groovebake", "svg", "svg"),
+    ("groovebake", "scene", "json"), ("groovebake", "svg", "svg"), ("groovebake", "mesh", "obj"),
     ("tambake", "style", "json"), ("tambake", "mesh", "obj"), ("tambake", "image", "png"),
     ("strokebake", "strokes", "json"), ("strokebake", "strokes", "csv"), ("strokebake", "strokes", "obj"),
     ("strokebake", "growmesh", "obj"),
@@ -866,7 +868,7 @@ BOM_INPUTS = [("geobake", "mesh", "obj"), ("geobake", "mesh", "ply"), ("geobake"
               ("geobake", "mesh", "stl"), ("geobake", "sources", "json"),
               ("revolbake", "profile", "json"), ("revolbake", "profile", "csv"), ("revolbake", "profile", "svg"),
               ("revolbake", "profile", "obj"),
-              ("groovebake", "scene", "json"), ("groovebake", "svg", "svg"),
+              ("groovebake", "scene", "json"), ("groovebake", "svg", "svg"), ("groovebake", "mesh", "obj"),
               ("tambake", "style", "json"), ("tambake", "mesh", "obj"),
               ("strokebake", "strokes", "json"), ("strokebake", "strokes", "csv"), ("strokebake", "strokes", "obj"),
               ("strokebake", "growmesh", "obj"),

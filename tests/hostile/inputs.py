@@ -69,6 +69,17 @@ def obj_text(mesh):
     return "\n".join(lines) + "\n"
 
 
+def obj_text_uv(mesh):
+    """OBJ with a texture coordinate per vertex (x, y + z: every face of the tetrahedron has UV
+    area), for the tools that lay patterns out in UV (groovebake --apply-to)."""
+    pts, tris = mesh
+    lines = ["# hostile test mesh with UVs"]
+    lines += ["v %s %s %s" % tuple(fmt(c) for c in p) for p in pts]
+    lines += ["vt %s %s" % (fmt(p[0] + 0.5 * p[2]), fmt(p[1] + 0.3 * p[2])) for p in pts]
+    lines += ["f %d/%d %d/%d %d/%d" % (a + 1, a + 1, b + 1, b + 1, c + 1, c + 1) for a, b, c in tris]
+    return "\n".join(lines) + "\n"
+
+
 def ply_text(mesh):
     pts, tris = mesh
     head = ["ply", "format ascii 1.0", "element vertex %d" % len(pts), "property float x", "property float y",

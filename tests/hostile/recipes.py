@@ -39,7 +39,8 @@ SLOTS = {
     "bakeshape": {},
     "revolbake": {"profile": Slot("json", "arg", text=True), "height": Slot("png", "arg"),
                   "colour": Slot("png", "arg")},
-    "groovebake": {"scene": Slot("json", "arg", text=True), "svg": Slot("svg", "ref", text=True)},
+    "groovebake": {"scene": Slot("json", "arg", text=True), "svg": Slot("svg", "ref", text=True),
+                   "mesh": Slot("obj", "arg", optional=True, text=True)},
     "tambake": {"style": Slot("json", "arg", text=True), "mesh": Slot("obj", "arg", text=True),
                 "image": Slot("png", "ref", optional=True)},
     "strokebake": {"strokes": Slot("json", "arg", text=True), "growmesh": Slot("obj", "ref", optional=True, text=True)},
@@ -153,10 +154,13 @@ def groovebake(ctx, inp=None, out=None, use=(), extra=()):
     svg = _file(d, inp, "svg", "drawing.svg", I.SVG_DRAWING)
     ref = _ref(d, svg)
     scene = _file(d, inp, "scene", "scene.json", I.groove_scene(ref))
+    ins = {"scene": scene, "svg": svg}
     outs = _outs(d, "groovebake", out)
     args = [scene] + _outargs(outs) + ["-j", "1"] + list(extra)
-    return Inv("groovebake", "groovebake", args, {"scene": scene, "svg": svg}, outs,
-               packages=[outs["-o"]] if "-o" in outs else [])
+    if "mesh" in inp or "mesh" in use:  # the grooves drawn on a UV-mapped mesh
+        ins["mesh"] = _file(d, inp, "mesh", "mesh.obj", I.obj_text_uv(I.tetra()))
+        args += ["--apply-to", ins["mesh"]]
+    return Inv("groovebake", "groovebake", args, ins, outs, packages=[outs["-o"]] if "-o" in outs else [])
 
 
 def tambake(ctx, inp=None, out=None, use=(), extra=()):

@@ -117,8 +117,8 @@ TEST(PipePlan, HatchingLeavesOutThresholdsAndTheLevelNoViewSamples) {
 
 TEST(PipePlan, GroovesLeaveOutRecordsOfTheFarRecordAndReportKindsThePatternLacks) {
   const Plan plan = planOf(exampleScene("grooves"));
-  EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"tiles: corner records", "column: intersection records",
-                                                         "column: corner records", "record: special-case records"}));
+  EXPECT_EQ(leftOutList(plan), (std::vector<std::string>{"tiles: corner records", "column: special-case records",
+                                                         "record: special-case records"}));
   EXPECT_TRUE(hasArgument(stepOf(plan, "groovebake:record"), "--no-special-cases"));
   EXPECT_FALSE(hasArgument(stepOf(plan, "groovebake:plate"), "--no-special-cases"));
   // The column's grooves are drawn on the generated column (groovebake --apply-to), which the step

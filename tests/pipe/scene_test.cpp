@@ -48,13 +48,13 @@ TEST(PipeScene, ReadsTheExampleScenes) {
   EXPECT_EQ(geodesic->objects[0].fieldNames, (std::vector<std::string>{"left tip", "right tip", "rims"}));
   EXPECT_EQ(geodesic->fieldsRead(geodesic->objects[0]), (std::vector<std::string>{"left tip"}));
   EXPECT_TRUE(geodesic->objects[0].input.generated);
-  // Grooves: the plate turned by its rotation, the column drawn on a generated mesh.
+  // Grooves: the record turned by its rotation, the column drawn on a generated mesh.
   const Result<Scene> grooves = readScene(fs::path(BAKE_SOURCE_DIR) / "pipelines/grooves/scene.json");
   ASSERT_TRUE(grooves.isOk()) << grooves.status().describe();
   const auto named = [&](const std::string& name) {
     return *std::find_if(grooves->objects.begin(), grooves->objects.end(), [&](const Object& o) { return o.name == name; });
   };
-  EXPECT_NEAR(named("plate").rotation[1], -0.130526, 1e-6);
+  EXPECT_NEAR(named("record").rotation[1], -0.130526, 1e-6);
   EXPECT_EQ(named("tiles").rotation, (std::array<double, 4>{0, 0, 0, 1}));
   ASSERT_TRUE(named("column").mesh.has_value());
   EXPECT_TRUE(named("column").mesh->generated);

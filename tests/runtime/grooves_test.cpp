@@ -991,6 +991,57 @@ TEST_F(GroovesOracle, FlutedColumnMatchesTheCpuThroughTheSameMesh) {
   EXPECT_EQ(over, 0u) << "pixels where the CPU method through the mesh differs by more than 2/255";
 }
 
+// `bakeplay validate --golden` on the fluted column as `groovebake --apply-to` writes it (here without
+// special-case records, so the check compiles no area-sampling variant): the package passes, and its
+// first reference view is the golden image (tests/golden/runtime/grooves-column.v1.png).
+TEST_F(GroovesOracle, ColumnPackageValidatesAgainstItsGoldenImage) {
+  Result<TriangleMesh> column = makeShape({"column", 64});
+  ASSERT_TRUE(column.isOk());
+  grooves::GrooveSurface surface;
+  surface.name = "column";
+  surface.mesh = std::move(column).value();
+  Result<TangentFrames> frames = computeTangentFrames(surface.mesh);
+  ASSERT_TRUE(frames.isOk());
+  surface.tangents = frames->tangents;
+  auto scene = grooves::parseGrooveScene(exampleScene("flutes.json"), "flutes.json");
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  auto grid = grooves::buildGrooveGrid(*scene, {});
+  ASSERT_TRUE(grid.isOk());
+  grooves::dropSpecialCases(*grid);
+  auto package = grooves::buildGroovePackage(*scene, *grid);
+  ASSERT_TRUE(package.isOk());
+  grooves::applySurface(*package, surface);
+  const fs::path folder = test::freshTempDir("grooves_column_validate");
+  const fs::path file = folder / "column.glb";
+  ASSERT_TRUE(glb::write(file, *package).isOk());
+
+  ValidateSettings settings;
+  settings.packages = {file.string()};
+  settings.size = 128;
+  settings.viewsDirectory = (folder / "views").string();
+  settings.common.quiet = true;
+  const std::string golden = "runtime/grooves-column.v1.png";
+  if (!test::updatingGoldens()) settings.goldens = {test::goldenPath(golden).string()};
+  Diagnostics diagnostics("bakeplay", true);
+  std::FILE* out = std::tmpfile();
+  const Status status = runValidate(settings, diagnostics, out);
+  std::rewind(out);
+  std::string verdicts;
+  char line[4096];
+  while (std::fgets(line, sizeof line, out)) verdicts += line;
+  std::fclose(out);
+  EXPECT_TRUE(status.isOk()) << status.describe() << "\n" << verdicts;
+  // The first view as written, against the golden with the runtime tests' tolerance (and written as
+  // the golden in update mode).
+  std::vector<fs::path> views;
+  for (const auto& entry : fs::directory_iterator(folder / "views")) views.push_back(entry.path());
+  std::sort(views.begin(), views.end());
+  ASSERT_FALSE(views.empty());
+  Result<Image> first = readImage(views.front());
+  ASSERT_TRUE(first.isOk()) << first.status().describe();
+  EXPECT_TRUE(test::matchesGoldenImage(*first, golden)) << views.front();
+}
+
 TEST(GroovesPackage, RegisteredForTheExtension) {
   EXPECT_TRUE(RendererRegistry::builtIn().has(format::grooves::kExtension));
 }

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   std::string patterns;
   for (const std::string& name : bake::patternNames()) patterns += (patterns.empty() ? "" : ", ") + name;
   CLI::App app{"Generates closed example shapes by polygonising signed distance fields (marching tetrahedra),\n"
+               "UV-mapped shapes for texture-space techniques (column, globe: parametric, with TEXCOORD_0),\n"
                "and tileable example images (colour textures, height maps) when the output ends in .png.",
                "bakeshape"};
   app.add_option("shape", settings.shape.name, "A shape: " + names + "; or, with a .png output, a pattern: " + patterns)
