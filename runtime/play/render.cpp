@@ -158,6 +158,7 @@ Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics) 
   setup.light = setup.scene.fileLight ? *setup.scene.fileLight : Light{};
   if (!view.light.empty()) {
     BAKE_ASSIGN_OR_RETURN(setup.light, parseLight(view.light));
+    aimAtScene(setup.light, setup.scene);
   }
   setup.light.direction = normalize(setup.light.direction);
   return setup;

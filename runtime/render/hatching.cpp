@@ -154,7 +154,16 @@ void HatchingRenderer::draw(const FrameContext& frame) {
     setMatrix4(program, "uViewProj", viewProjection);
     const Mat3 normal = normalMatrix(item.world);
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, normal.data());
-    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, frame.light.direction.data());
+    const Light& light = frame.light;
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, light.direction.data());
+    const int kind = light.kind == LightKind::Point ? 1 : light.kind == LightKind::Spot ? 2 : 0;
+    glProgramUniform1i(program, glGetUniformLocation(program, "uLightKind"), kind);
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightPos"), 1, light.position.data());
+    const Vec3 objectLight = inverseTransformPoint(item.world, light.position);
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uLightPosObject"), 1, objectLight.data());
+    glProgramUniform3fv(program, glGetUniformLocation(program, "uSpotDirection"), 1, light.spotDirection.data());
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSpotCosCutoff"), std::cos(light.cutoff));
+    glProgramUniform1f(program, glGetUniformLocation(program, "uSpotExponent"), light.exponent);
     glProgramUniform1f(program, glGetUniformLocation(program, "uTilesPerUnit"), p.tilesPerUnit);
     glProgramUniform2f(program, glGetUniformLocation(program, "uRotation"), std::cos(p.rotation), std::sin(p.rotation));
     glProgramUniform2fv(program, glGetUniformLocation(program, "uTranslation"), 1, p.translation.data());

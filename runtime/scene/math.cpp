@@ -1,5 +1,7 @@
 #include "scene/math.h"
 
+#include <cmath>
+
 namespace bake::play {
 
 Mat4 identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
@@ -61,6 +63,23 @@ Mat3 normalMatrix(const Mat4& m) {
   if (det < 0) {  // mirrored transforms: keep normals pointing outwards
     for (float& v : out) v = -v;
   }
+  return out;
+}
+
+Vec3 inverseTransformPoint(const Mat4& m, const Vec3& p) {
+  const double a[3][3] = {{m[0], m[4], m[8]}, {m[1], m[5], m[9]}, {m[2], m[6], m[10]}};
+  const double q[3] = {double(p[0]) - m[12], double(p[1]) - m[13], double(p[2]) - m[14]};
+  double cofactor[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      cofactor[r][c] = a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1];
+    }
+  const double det = a[0][0] * cofactor[0][0] + a[0][1] * cofactor[0][1] + a[0][2] * cofactor[0][2];
+  if (!(std::abs(det) > 0)) return p;
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i)  // (A^-1)_ij = cofactor_ji / det
+    out[std::size_t(i)] = float((cofactor[0][i] * q[0] + cofactor[1][i] * q[1] + cofactor[2][i] * q[2]) / det);
   return out;
 }
 

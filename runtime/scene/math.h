@@ -30,6 +30,8 @@ Mat4 lookAt(const Vec3& eye, const Vec3& target, const Vec3& up);
 Mat4 perspective(float yfovRadians, float aspect, float znear, float zfar);
 Mat4 fromDoubles(const std::array<double, 16>& m);
 Vec3 transformPoint(const Mat4& m, const Vec3& p);
+// The point that m maps to p (m affine and invertible; p itself when m is singular).
+Vec3 inverseTransformPoint(const Mat4& m, const Vec3& p);
 // Inverse transpose of the upper 3x3 (for normals).
 Mat3 normalMatrix(const Mat4& m);
 

@@ -64,9 +64,23 @@ void takeLight(const glb::Package& package, const glb::Node& node, const glb::Wo
   const double index = jsonNumberOr(node.extensions[kLightsExtension], "light", -1);
   if (!lights.is_array() || !(index >= 0) || index >= double(lights.size()) || index != std::floor(index)) return;
   const nlohmann::json& chosen = lights[std::size_t(index)];
-  if (jsonStringOr(chosen, "type", "") != "directional") return;
+  const std::string type = jsonStringOr(chosen, "type", "");
   Light light;
   light.direction = normalize(column(world, 2));  // the light shines down its local -Z
+  if (type == "point" || type == "spot") {
+    light.kind = type == "point" ? LightKind::Point : LightKind::Spot;
+    light.position = column(world, 3);
+    light.spotDirection = normalize(column(world, 2) * -1.0f);
+    if (type == "spot") {
+      const nlohmann::json& spot = jsonMember(chosen, "spot");
+      light.cutoff = float(std::clamp(jsonNumberOr(spot, "outerConeAngle", 0.7853981633974483), 1e-4, 1.5707963267948966));
+      // KHR_lights_punctual fades between the inner and outer cone; the seed's spot is OpenGL's, with an
+      // exponent, read from the light's extras (0: even inside the cone).
+      light.exponent = float(std::max(0.0, jsonNumberOr(jsonMember(chosen, "extras"), "spotExponent", 0.0)));
+    }
+  } else if (type != "directional") {
+    return;
+  }
   const nlohmann::json& colour = jsonMember(chosen, "color");
   if (colour.is_array() && colour.size() == 3 && colour[0].is_number() && colour[1].is_number() && colour[2].is_number())
     light.colour = {colour[0].get<float>(), colour[1].get<float>(), colour[2].get<float>()};
@@ -140,6 +154,7 @@ Result<Scene> loadScene(const std::vector<std::filesystem::path>& files, Diagnos
     BAKE_RETURN_IF_ERROR(addPackage(scene, std::move(package), file.string(), firstPoint));
   }
   if (scene.instances.empty()) return invalidInput("the scene has nothing to draw (no mesh instances)");
+  if (scene.fileLight) aimAtScene(*scene.fileLight, scene);
   return scene;
 }
 
@@ -172,10 +187,47 @@ Result<Camera> parseCamera(const std::string& text, const Scene& scene, float as
 
 Result<Light> parseLight(const std::string& text) {
   Light light;
-  BAKE_ASSIGN_OR_RETURN(light.direction, parseVector(text, "--light"));
-  if (length(light.direction) == 0) return usageError("--light: the direction is zero");
-  light.direction = normalize(light.direction);
+  const auto parts = [&] {
+    std::vector<std::string> out;
+    std::stringstream stream(text);
+    for (std::string part; std::getline(stream, part, ':');) out.push_back(part);
+    return out;
+  }();
+  const std::string kind = parts.empty() ? "" : parts[0];
+  if (kind != "point" && kind != "spot") {
+    BAKE_ASSIGN_OR_RETURN(light.direction, parseVector(text, "--light"));
+    if (length(light.direction) == 0) return usageError("--light: the direction is zero");
+    light.direction = normalize(light.direction);
+    return light;
+  }
+  const std::size_t expected = kind == "point" ? 2 : 0;
+  if ((kind == "point" && parts.size() != expected) || (kind == "spot" && (parts.size() < 4 || parts.size() > 5)))
+    return usageError("--light \"" + text + "\": expected point:X,Y,Z or spot:X,Y,Z:DX,DY,DZ:CUTOFF_DEGREES[:EXPONENT]");
+  light.kind = kind == "point" ? LightKind::Point : LightKind::Spot;
+  BAKE_ASSIGN_OR_RETURN(light.position, parseVector(parts[1], "--light"));
+  light.direction = length(light.position) > 0 ? normalize(light.position) : Vec3{0, 0, 1};
+  if (kind == "point") return light;
+  BAKE_ASSIGN_OR_RETURN(light.spotDirection, parseVector(parts[2], "--light"));
+  if (length(light.spotDirection) == 0) return usageError("--light: the spot's direction is zero");
+  light.spotDirection = normalize(light.spotDirection);
+  char* end = nullptr;
+  const double cutoff = std::strtod(parts[3].c_str(), &end);
+  if (end == parts[3].c_str() || *end != 0 || !(cutoff > 0 && cutoff <= 90))
+    return usageError("--light: the spot's cut-off \"" + parts[3] + "\" must be an angle in degrees, above 0 and at most 90");
+  light.cutoff = float(cutoff * 3.14159265358979323846 / 180);
+  if (parts.size() == 5) {
+    const double exponent = std::strtod(parts[4].c_str(), &end);
+    if (end == parts[4].c_str() || *end != 0 || !(exponent >= 0 && exponent <= 128))
+      return usageError("--light: the spot's exponent \"" + parts[4] + "\" must be a number from 0 to 128");
+    light.exponent = float(exponent);
+  }
   return light;
+}
+
+void aimAtScene(Light& light, const Scene& scene) {
+  if (light.kind == LightKind::Directional) return;
+  const Vec3 toLight = light.position - (scene.boundsMin + scene.boundsMax) * 0.5f;
+  if (length(toLight) > 0) light.direction = normalize(toLight);
 }
 
 }  // namespace bake::play

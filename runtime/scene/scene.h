@@ -26,9 +26,19 @@ struct Camera {
   float zfar = 100.0f;
 };
 
+// A light of KHR_lights_punctual. Techniques that take one direction use `direction`; hatching (seed
+// 004 §3.2) also takes point and spot lights as they are: the direction to the light per triangle
+// from its position, and the spot's cut-off and exponent.
+enum class LightKind { Directional, Point, Spot };
+
 struct Light {
-  Vec3 direction{0.4f, 0.8f, 0.45f};  // towards the light, world space
+  Vec3 direction{0.4f, 0.8f, 0.45f};  // towards the light, world space (point, spot: from the scene's centre)
   Vec3 colour{1, 1, 1};
+  LightKind kind = LightKind::Directional;
+  Vec3 position{0, 0, 0};        // point, spot: world space
+  Vec3 spotDirection{0, 0, -1};  // spot: the way it shines, unit
+  float cutoff = 0.7853982f;     // spot: half-angle of the cone in radians (KHR outerConeAngle)
+  float exponent = 0;            // spot: falloff (cos of the angle off the axis)^exponent inside the cone
 };
 
 struct Instance {
@@ -66,7 +76,11 @@ Camera frameBounds(const Scene& scene, float aspect);
 
 // "x,y,z" or "x,y,z:tx,ty,tz" (eye, then optional target).
 Result<Camera> parseCamera(const std::string& text, const Scene& scene, float aspect);
-// "x,y,z": direction towards the light.
+// "x,y,z": direction towards the light; "point:x,y,z" a point light there; "spot:x,y,z:dx,dy,dz:
+// cutoff[:exponent]" a spot light there shining along (dx, dy, dz), cut-off in degrees.
 Result<Light> parseLight(const std::string& text);
+// A point or spot light's `direction` (for the techniques that take one): from the scene's centre
+// toward the light.
+void aimAtScene(Light& light, const Scene& scene);
 
 }  // namespace bake::play

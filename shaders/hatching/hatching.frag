@@ -1,6 +1,8 @@
 // Hatching (seed 004), fragment stage, §3.4 Algorithm 3. For each of the four triangles (T_c and its
-// neighbours) the Lambert term of its face normal and the direction to the (directional) light gives
-// darkness = 1 - Lambert, which is placed among the TAM's tones (darkness per layer, increasing; below
+// neighbours) the Lambert term of its face normal and the direction to the light (a directional
+// light's; for a point or spot light the fragment-light vector FL, the spot's cut-off and exponent
+// applied as OpenGL's spot lights do: (cos of the angle off its axis)^exponent inside the cone, none
+// outside) gives darkness = 1 - Lambert, which is placed among the TAM's tones (darkness per layer, increasing; below
 // the first tone the paper is blended with the first layer): the two nearest layers are sampled at the
 // triangle's hatching coordinates and interpolated, so the tone changes continuously as the light
 // moves (no popping). The mip level comes from the screen derivatives of each coordinate set
@@ -14,11 +16,17 @@ in vec4 gCoordsCA;
 in vec4 gCoordsBG;
 in vec3 gBlend;
 flat in vec3 gNormalC, gNormalA, gNormalB, gNormalG;
+in vec3 gWorldPosition;
 
 uniform sampler2DArray uTam;
 uniform int uToneCount;
 uniform float uTones[MAX_TONES];
-uniform vec3 uLightDir;   // towards the light, world space
+uniform vec3 uLightDir;   // towards the light, world space (directional lights)
+uniform int uLightKind;   // 0 directional, 1 point, 2 spot
+uniform vec3 uLightPos;   // point and spot lights, world space
+uniform vec3 uSpotDirection;  // the way the spot shines, unit
+uniform float uSpotCosCutoff;
+uniform float uSpotExponent;
 uniform vec3 uBaseColor;  // linear RGB
 
 layout(location = 0) out vec4 fragColor;
@@ -47,10 +55,19 @@ vec3 toneColour(vec2 st, vec2 dx, vec2 dy, float d) {
   return mix(low, high, clamp((d - lowTone) / (uTones[above] - lowTone), 0.0, 1.0));
 }
 
-float darkness(vec3 n, vec3 l) { return 1.0 - clamp(dot(n, l), 0.0, 1.0); }
+// The light reaching the fragment: its unit direction, and the spot's factor (1 for other lights).
+float spotFactor(vec3 l) {
+  if (uLightKind != 2) return 1.0;
+  float c = dot(-l, uSpotDirection);
+  return c >= uSpotCosCutoff ? pow(max(c, 0.0), uSpotExponent) : 0.0;
+}
+
+float gSpot = 1.0;
+float darkness(vec3 n, vec3 l) { return 1.0 - gSpot * clamp(dot(n, l), 0.0, 1.0); }
 
 void main() {
-  vec3 l = normalize(uLightDir);
+  vec3 l = uLightKind == 0 ? normalize(uLightDir) : normalize(uLightPos - gWorldPosition);
+  gSpot = spotFactor(l);
   vec4 dxCA = dFdx(gCoordsCA), dyCA = dFdy(gCoordsCA);
   vec4 dxBG = dFdx(gCoordsBG), dyBG = dFdy(gCoordsBG);
   vec3 f = clamp(gBlend, 0.0, 1.0);

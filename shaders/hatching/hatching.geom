@@ -3,8 +3,9 @@
 // edge repeats T_c's own opposite vertex, which makes that neighbour coincide with T_c.
 //
 // §3.2 Algorithm 1, in object space (so the strokes stay on the object): N = normalised
-// (V1 - V0) x (V2 - V0); for the directional light L (towards the light, brought into object space)
-// B = normalise(L - N (L.N)), T = B x N; H = (V.T, V.B). With ACROSS_LIGHT T and B swap roles (figure
+// (V1 - V0) x (V2 - V0); L towards the light: for a directional light its direction brought into object
+// space, for a point or spot light L = Lp - G with G the triangle's barycentre (each neighbour its
+// own); B = normalise(L - N (L.N)), T = B x N; H = (V.T, V.B). With ACROSS_LIGHT T and B swap roles (figure
 // 14). §4: the coordinates are scaled by tilesPerUnit, rotated about N and translated (in tiles).
 // §3.3 Algorithm 2: the same for each neighbour T_t, with T_c's vertices projected onto T_t's plane;
 // blend factor 1 for T_c, N_c.N_t at the two shared vertices, -1 at T_c's vertex opposite the shared
@@ -19,7 +20,9 @@ in vec3 vObjectPosition[];
 uniform mat4 uModel;
 uniform mat4 uViewProj;
 uniform mat3 uNormalMatrix;   // inverse transpose of uModel's upper 3x3
-uniform vec3 uLightDir;       // towards the light, world space
+uniform vec3 uLightDir;       // towards the light, world space (directional lights)
+uniform int uLightKind;       // 0 directional, 1 point, 2 spot
+uniform vec3 uLightPosObject; // point and spot lights: the position in object space
 uniform float uTilesPerUnit;
 uniform vec2 uRotation;       // cos, sin of the rotation about N
 uniform vec2 uTranslation;    // tiles along T and B
@@ -27,6 +30,7 @@ uniform vec2 uTranslation;    // tiles along T and B
 out vec4 gCoordsCA;   // hatching coordinates in T_c (xy) and T_alpha (zw)
 out vec4 gCoordsBG;   // in T_beta (xy) and T_gamma (zw)
 out vec3 gBlend;      // blend factors of T_alpha, T_beta, T_gamma (T_c's is 1)
+out vec3 gWorldPosition;  // for the fragment-light vector of point and spot lights (§3.4)
 flat out vec3 gNormalC, gNormalA, gNormalB, gNormalG;  // world-space unit face normals
 
 struct Frame {
@@ -34,9 +38,11 @@ struct Frame {
   bool valid;
 };
 
-// Algorithm 1's frame of triangle (a, b, c) for the object-space light direction l.
+// Algorithm 1's frame of triangle (a, b, c) for the object-space light direction l (directional
+// lights; for point and spot lights l is replaced by Lp - G of this triangle).
 Frame frameOf(vec3 a, vec3 b, vec3 c, vec3 l) {
   Frame f;
+  if (uLightKind != 0) l = uLightPosObject - (a + b + c) / 3.0;
   vec3 e1 = b - a, e2 = c - a;
   vec3 n = cross(e1, e2);
   float len = length(n);
@@ -106,7 +112,9 @@ void main() {
     gCoordsCA = vec4(hatchingCoords(v[i], fc), h[0]);
     gCoordsBG = vec4(h[1], h[2]);
     gBlend = vec3(f[0], f[1], f[2]);
-    gl_Position = uViewProj * (uModel * vec4(v[i], 1.0));
+    vec4 world = uModel * vec4(v[i], 1.0);
+    gWorldPosition = world.xyz;
+    gl_Position = uViewProj * world;
     EmitVertex();
   }
   EndPrimitive();

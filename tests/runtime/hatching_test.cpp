@@ -206,6 +206,9 @@ class HatchingFrames : public test::GlTest {
   Image frame(const Vec3& lightDirection, const Camera& camera = kFrontCamera) {
     Light light;
     light.direction = normalize(lightDirection);
+    return frameLitBy(light, camera);
+  }
+  Image frameLitBy(const Light& light, const Camera& camera = kFrontCamera) {
     const FrameContext context{*scene_, camera, light, lookAt(camera.eye, camera.target, camera.up),
                                perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
     target_->bind();
@@ -489,6 +492,140 @@ TEST_F(HatchingFrames, BrightnessFollowsTheLambertTerm) {
     if (double(b) / kBins > 1.0 - kTones.back()) EXPECT_GT(mean, previous + 0.05) << "bin " << b << ": " << means;
     previous = mean;
   }
+}
+
+// Point and spot lights (seed 004 §3.2: L = Lp - G per triangle for the frame; §3.4: the fragment-
+// light vector for the tone; the spot's cut-off and exponent) against the closed form. With a TAM
+// whose layers are flat greys, the picture is the tones' interpolation of darkness = 1 - s (N.FL)
+// exactly (s: the spot factor (cos of the angle off the axis)^exponent inside the cone, 0 outside),
+// so every pixel of the plane z = 0 can be checked: within 2/255 of the 8-bit value, away from the
+// cone's edge (a pixel there straddles the cut-off).
+ktx2::Texture flatTam(int size = 16) {
+  ktx2::Texture tam;
+  tam.format = ktx2::Format::R8;
+  tam.width = tam.height = std::uint32_t(size);
+  tam.layers = std::uint32_t(kTones.size());
+  for (int s = size; s >= 1; s /= 2) {
+    std::vector<std::uint8_t> level;
+    for (float tone : kTones) level.insert(level.end(), std::size_t(s * s), std::uint8_t(std::lround(255 * (1 - tone))));
+    tam.levels.push_back(std::move(level));
+  }
+  tam.setText(fmt::kMetadataKey, nlohmann::json({{"version", 1}, {"tones", kTones}, {"style", "flat"}}).dump());
+  return tam;
+}
+
+// The displayed value of darkness d with flatTam: white below the first tone's darkness, the layers'
+// 8-bit greys interpolated between tones, the last layer beyond.
+double flatTamValue(double d) {
+  double lowTone = 0, low = 1;
+  for (float tone : kTones) {
+    const double high = std::lround(255 * (1 - tone)) / 255.0;
+    if (d < tone) return low + (high - low) * std::clamp((d - lowTone) / (tone - lowTone), 0.0, 1.0);
+    lowTone = tone;
+    low = high;
+  }
+  return low;
+}
+
+struct LightCheck {
+  int pixels = 0, over = 0;
+  double worst = 0;
+};
+
+// Every pixel of the square's image against the closed form; `spot` gives the factor at a point and
+// whether it lies near the cone's edge.
+template <class Spot>
+LightCheck checkAgainstClosedForm(const Image& image, const Vec3& lightPosition, Spot spot) {
+  LightCheck check;
+  const std::vector<bool> mask = squareMask();
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (!mask[std::size_t(y * kSize + x)]) continue;
+      const Vec3 d = pixelDirection(kFrontCamera, x, y);
+      const Vec3 p = kFrontCamera.eye + d * (-kFrontCamera.eye[2] / d[2]);
+      const Vec3 toLight = lightPosition - p;
+      bool nearEdge = false;
+      const double factor = spot(p, nearEdge);
+      if (nearEdge) continue;
+      const double lambert = std::max(0.0, double(toLight[2]) / double(length(toLight)));
+      const double expected = flatTamValue(1 - factor * lambert);
+      const double error = std::fabs(grey(image, x, y) - expected);
+      check.worst = std::max(check.worst, error);
+      check.over += error > 2.0 / 255 ? 1 : 0;
+      ++check.pixels;
+    }
+  return check;
+}
+
+TEST_F(HatchingFrames, PointLightFollowsTheClosedForm) {
+  ktx2::Texture tam = flatTam();
+  load(hatchingPackage(squarePrimitive(), Material{}, &tam), "point_light");
+  Light light;
+  light.kind = LightKind::Point;
+  light.position = {0.3f, -0.2f, 0.6f};
+  const Image image = frameLitBy(light);
+  const LightCheck check = checkAgainstClosedForm(image, light.position, [](const Vec3&, bool&) { return 1.0; });
+  std::printf("[ hatching ] point light: %d pixels, worst %.4f (%d over 2/255)\n", check.pixels, check.worst, check.over);
+  EXPECT_GT(check.pixels, 5000);
+  EXPECT_EQ(check.over, 0) << "worst " << check.worst;
+  // The tone changes across the plane (the closed form spans most of the tones): not a flat picture.
+  const double centre = grey(image, kSize / 2 + 12, kSize / 2 + 8), corner = grey(image, 12, 12);
+  EXPECT_GT(std::fabs(centre - corner), 0.2);
+}
+
+TEST_F(HatchingFrames, SpotLightCutOffAndExponentFollowTheClosedForm) {
+  ktx2::Texture tam = flatTam();
+  load(hatchingPackage(squarePrimitive(), Material{}, &tam), "spot_light");
+  Light light;
+  light.kind = LightKind::Spot;
+  light.position = {0.1f, 0.1f, 1.5f};
+  light.spotDirection = normalize(Vec3{0.1f, -0.1f, -1.0f});
+  light.cutoff = float(30 * kPi / 180);
+  light.exponent = 8;
+  const Image image = frameLitBy(light);
+  int inside = 0, outside = 0;
+  const LightCheck check = checkAgainstClosedForm(image, light.position, [&](const Vec3& p, bool& nearEdge) {
+    const double c = dot(normalize(p - light.position), light.spotDirection);
+    nearEdge = std::fabs(c - std::cos(double(light.cutoff))) < 0.01;
+    if (!nearEdge) (c >= std::cos(double(light.cutoff)) ? inside : outside) += 1;
+    return c >= std::cos(double(light.cutoff)) ? std::pow(c, double(light.exponent)) : 0.0;
+  });
+  std::printf("[ hatching ] spot light: %d pixels (%d inside the cone, %d outside), worst %.4f (%d over 2/255)\n",
+              check.pixels, inside, outside, check.worst, check.over);
+  EXPECT_GT(inside, 1000);
+  EXPECT_GT(outside, 1000);
+  EXPECT_EQ(check.over, 0) << "worst " << check.worst;
+}
+
+// A KHR_lights_punctual spot light of the package is the one the frame gets, with its cone and the
+// exponent from its extras; a point light's direction for the other techniques points from the scene's
+// centre toward it.
+TEST(HatchingLights, PunctualLightsOfAnyTypeAreRead) {
+  glb::Package package = hatchingPackage(squarePrimitive());
+  package.extensions["KHR_lights_punctual"] = {{"lights", {{{"type", "spot"}, {"spot", {{"outerConeAngle", 0.5}}},
+                                                            {"extras", {{"spotExponent", 4}}}}}}};
+  glb::Node lamp;
+  lamp.name = "lamp";
+  lamp.translation = {0, 0, 2};
+  lamp.extensions["KHR_lights_punctual"] = {{"light", 0}};
+  package.nodes.push_back(lamp);
+  package.extensionsUsed.push_back("KHR_lights_punctual");
+  Diagnostics diagnostics("bakeplay", true);
+  auto scene = loadScene({writePackage(package, "punctual_spot")}, diagnostics, [](const std::string&) { return true; });
+  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
+  ASSERT_TRUE(scene->fileLight.has_value());
+  const Light& light = *scene->fileLight;
+  EXPECT_EQ(light.kind, LightKind::Spot);
+  EXPECT_NEAR(light.position[2], 2, 1e-6);
+  EXPECT_NEAR(light.spotDirection[2], -1, 1e-6);  // spots shine down their local -Z
+  EXPECT_NEAR(light.cutoff, 0.5, 1e-6);
+  EXPECT_NEAR(light.exponent, 4, 1e-6);
+  EXPECT_NEAR(light.direction[2], 1, 1e-6);  // from the square's centre up to the lamp
+  auto parsed = parseLight("spot:0,0,2:0,0,-1:30:8");
+  ASSERT_TRUE(parsed.isOk()) << parsed.status().describe();
+  EXPECT_NEAR(parsed->cutoff, 30 * kPi / 180, 1e-6);
+  EXPECT_FALSE(parseLight("spot:0,0,2:0,0,-1:120").isOk());
+  EXPECT_FALSE(parseLight("point:0,0").isOk());
 }
 
 // The material's baseColor multiplies the hatching: a red material has no green or blue on paper.

@@ -15,8 +15,10 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
   command.add_option("--size", size, "Frame or window size WIDTHxHEIGHT")->type_name("WxH")->capture_default_str();
   command.add_option("--camera", view.camera, "Camera eye x,y,z or eye:target x,y,z:x,y,z (default: the file's camera, else framed)")
       ->type_name("EYE[:TARGET]");
-  command.add_option("--light", view.light, "Direction towards the light x,y,z (default: the file's light, else upper right)")
-      ->type_name("X,Y,Z");
+  command.add_option("--light", view.light, "Direction towards the light X,Y,Z, or point:X,Y,Z, or spot:X,Y,Z:DX,DY,DZ:CUTOFF_DEGREES[:EXPONENT] (hatching "
+                     "takes point and spot lights as they are; other techniques light from the scene's centre toward "
+                     "them; default: the file's light, else upper right)")
+      ->type_name("LIGHT");
   command.add_option("--geotexture", view.geotexture,
                      "GeoTexture preset for every primitive with geodesic fields (isolines, sand-water, moss-granite, "
                      "paint-metal-rust, water-lava, opacity-front, wave-displacement)")
