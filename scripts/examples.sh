@@ -54,6 +54,9 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-record.glb" --size 1024x768 -o "$out/grooves-record.png"
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --frames 10 --compare-standard \
   --report "$out/grooves-plate.render.json" -o "$out/grooves-plate.png"
+# The plate's mirror cuts reflecting a grey-blue room (light from outside the grooves, seed 000 §7).
+"$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --environment 0.25,0.27,0.32 \
+  -o "$out/grooves-plate-environment.png"
 # The fluted column: grooves drawn on a UV-mapped mesh (groovebake --apply-to).
 # Seen from -z: the UV seam (where the rings' two ends meet) faces +z.
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-column.glb" --size 384x512 --camera -1.1,0.6,-2.6:0,0,0 \

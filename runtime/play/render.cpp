@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "bake/core/session.h"
+#include "bake/core/vector_text.h"
 #include "bake/io/image.h"
 #include "core/output_plan.h"
 #include "core/path.h"
@@ -160,6 +161,14 @@ Result<ViewSetup> setUpView(const ViewSettings& view, Diagnostics& diagnostics) 
     BAKE_ASSIGN_OR_RETURN(setup.light, parseLight(view.light));
     aimAtScene(setup.light, setup.scene);
   }
+  if (!view.environment.empty()) {
+    using Triple = std::array<double, 3>;
+    BAKE_ASSIGN_OR_RETURN(const Triple rgb, parseTriple(view.environment, "--environment", "R,G,B"));
+    for (int c = 0; c < 3; ++c) {
+      if (!(rgb[std::size_t(c)] >= 0)) return usageError("--environment: a colour's channels must be >= 0");
+      setup.light.environment[std::size_t(c)] = float(rgb[std::size_t(c)]);
+    }
+  }
   setup.light.direction = normalize(setup.light.direction);
   return setup;
 }
@@ -202,6 +211,7 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"size", {settings.view.width, settings.view.height}},
                                {"camera", settings.view.camera},
                                {"light", settings.view.light},
+                               {"environment", settings.view.environment},
                                {"frames", settings.frames},
                                {"compareStandard", settings.compareStandard},
                                {"geotexture", settings.view.geotexture},

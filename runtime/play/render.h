@@ -21,6 +21,7 @@ struct ViewSettings {
   int height = 512;
   std::string camera;  // "x,y,z[:tx,ty,tz]"; empty: from the file, else framed automatically
   std::string light;   // "x,y,z" towards the light; empty: from the file, else a default
+  std::string environment;  // "r,g,b": the constant environment grooves' mirror bounces see; empty: black
   bool quiet = false;  // for commands without the common options
   std::string geotexture;  // GeoTexture preset for every primitive with geodesic fields; empty: the files'
   float time = 0.0f;       // seconds, for animated techniques

@@ -253,6 +253,7 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform3fv(program, glGetUniformLocation(program, "uLightColour"), 1, frame.light.colour.data());
   glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
   glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uEnvironment"), 1, frame.light.environment.data());
   if (item.areaSampling) {
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retry.kind);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaQuarter"), retry.quarter);

@@ -39,6 +39,9 @@ struct Light {
   Vec3 spotDirection{0, 0, -1};  // spot: the way it shines, unit
   float cutoff = 0.7853982f;     // spot: half-angle of the cone in radians (KHR outerConeAngle)
   float exponent = 0;            // spot: falloff (cos of the angle off the axis)^exponent inside the cone
+  // Constant radiance of the rest of the scene: grooves' mirror bounces that leave the surface see it
+  // (seed 000 §7); black unless given.
+  Vec3 environment{0, 0, 0};
 };
 
 struct Instance {

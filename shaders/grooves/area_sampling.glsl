@@ -202,6 +202,8 @@ bool occludes(int i, int j, bool shadows, vec4 bounds, int meEdgeCount, out int 
 // test, and only occluders reach the subtraction: SIMD drivers run a masked-off loop body once with
 // every loop inside it (Mesa's llvmpipe does, and counts those runs towards its cap), so a body
 // holding the clipping code would cost dozens of iterations for every piece it skips.
+float gSeenArea;  // the visible part's weighted area before the shadows were subtracted
+
 void visibleLitPart(int i) {
   intersectEdgesInto(fragmentAt(0), pieceScreen(i), kEdgesFootprint, edgeHalfPlanes(kFootprint, kEdgesFootprint),
                      kSpare);
@@ -211,6 +213,7 @@ void visibleLitPart(int i) {
   vec4 bounds = fragmentsBox();
   int meEdgeCount = edgeHalfPlanes(pieceScreen(i), kEdgesMe);
   vec4 lightBox = pieceLightBox(i);
+  gSeenArea = -1.0;
   int steps = 2 * gSurfaceCount;
   int step = 0;
   while (gFragmentCount > 0 && step < steps) {
@@ -224,9 +227,12 @@ void visibleLitPart(int i) {
       }
     }
     if (hole < 0) break;
+    // Steps from gSurfaceCount on are shadows: the visible part is complete before the first.
+    if (gSeenArea < 0.0 && step > gSurfaceCount) gSeenArea = fragmentsWeightedArea();
     subtractFromFragments(hole);
     bounds = fragmentsBox();
   }
+  if (gSeenArea < 0.0) gSeenArea = fragmentsWeightedArea();  // no shadow was subtracted
 }
 
 // How far a line along d travels across the base plane per unit of height (bounded like the query
@@ -292,12 +298,15 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
   int count = split ? 0 : gSurfaceCount;
   for (int i = 0; i < count; ++i) {
     while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), footprintBox) &&
-                          directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)))
+                          (directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0) ||
+                           environmentReflection(pieceMaterial(i)) != vec3(0.0))))
       ++i;
     if (i == count) break;
     visibleLitPart(i);
     vec3 direct = directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView);
-    radiance += (fragmentsWeightedArea() / footprintArea) * direct;
+    // A mirror piece's reflection is not traced here: it sees the environment over the visible part.
+    radiance += (fragmentsWeightedArea() / footprintArea) * direct +
+                (gSeenArea / footprintArea) * environmentReflection(pieceMaterial(i));
   }
   return gAreaOverflows == 0;
 }

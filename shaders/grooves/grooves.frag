@@ -26,6 +26,7 @@ uniform vec3 uLightDir;      // towards the light, world space
 uniform vec3 uLightColour = vec3(1.0);
 uniform vec3 uCameraPos;     // world space
 uniform int uMaxBounces = 2;
+uniform vec3 uEnvironment = vec3(0.0);  // seen by reflected rays that leave the surface (seed §7)
 
 #ifdef HAS_AREA_SAMPLING
 // Hidden fragments are not shaded, so the retry marks are those of the fragments kept.
@@ -81,6 +82,7 @@ void main() {
   gLightDir = normalize(normalize(uLightDir) * frame);
   gLightRadiance = uLightColour;
   gMaxBounces = uMaxBounces;
+  gEnvironment = uEnvironment;
 
 #ifdef HAS_AREA_SAMPLING
   // After the derivatives, which need the whole quad: a retry pass shades only its own pixels.

@@ -218,7 +218,7 @@ bool loopsCutShort() {
 vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   setFootprintCentre(centre);
   gSpecialCase = false;
-  vec3 flatBase = directRadiance(baseMaterial(), vec3(0.0, 0.0, 1.0), toViewer);
+  vec3 flatBase = flatBaseRadiance(toViewer);
   vec2 lower, upper;
   queryBox(axis1, axis2, toViewer, gLightDir, uBounds.x, lower, upper);
   gatherPrimitives(lower, upper);

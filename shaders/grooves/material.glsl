@@ -9,6 +9,7 @@
 vec3 gLightDir;       // towards the light, groove space, unit
 vec3 gLightRadiance;
 int gMaxBounces;
+vec3 gEnvironment;  // what a reflected ray leaving the surface sees (seed §7; black by default)
 
 vec3 normalisedOrSame(vec3 a) {
   float n = length(a);
@@ -26,6 +27,17 @@ vec3 directRadiance(int material, vec3 normal, vec3 toViewer) {
 }
 
 bool hasMirror(int material) { return materials[material].specular.w > 0.5; }
+
+// What a mirror adds by reflecting the environment where its reflection leaves untraced (the flat
+// base, area-sampled pieces), while bounces are followed (render.cpp environmentReflection).
+vec3 environmentReflection(int material) {
+  return hasMirror(material) && gMaxBounces > 0 ? materials[material].mirror.rgb * gEnvironment : vec3(0.0);
+}
+
+// The flat base plane: its direct light and, if it mirrors, the environment (render.cpp flatBaseRadiance).
+vec3 flatBaseRadiance(vec3 toViewer) {
+  return directRadiance(baseMaterial(), vec3(0.0, 0.0, 1.0), toViewer) + environmentReflection(baseMaterial());
+}
 
 // The mirrored view direction, unit (render.cpp reflect).
 vec3 reflectView(vec3 toViewer, vec3 normal) {

@@ -4,8 +4,9 @@
 // past the mirror, walked in the beam's direction of travel, catch the rays whose k lies beyond the
 // running extreme of everything walked before. A caught part adds mirror x its direct radiance seen
 // from -R (where lit), weighted by its footprint share (the base-line position of a ray is affine in
-// k), and while bounces remain becomes a new beam. Rays passing the section's end going up see black;
-// going down, they reach the flat base beyond it (lit unless the section shadows it). A beam that
+// k), and while bounces remain becomes a new beam. Rays passing the section's end going up leave the
+// surface and see the environment (gEnvironment, the seed's 1 - Σ r_i part; a mirror base reflects
+// the rays that reach it beyond the section to the environment too); going down, they reach the flat base beyond it (lit unless the section shadows it). A beam that
 // does not fit on the stack, or carries less than 1e-12 of the pixel, is dropped, and at most
 // MAX_BEAM_STEPS beams are walked per section, as on the CPU (same sizes).
 #ifndef BAKE_GROOVES_MIRRORS_GLSL
@@ -39,6 +40,7 @@ void pushBeam(Beam beam) {
 float wRb, wRt, wRw, wDir;
 vec3 wBack, wWeight;
 float wKAt0, wKAt1, wP0, wP1;
+int wBounce;
 
 float walkKey(int i) { return wDir * acrossCoordinate(i, wRb, wRt, wRw, 0.0); }
 
@@ -79,7 +81,11 @@ vec3 catchOnFacet(FootprintLine density, Beam beam, int j, float x, float y) {
 
 // The rays with k in [x, y] pass the section's end going down and reach the flat base beyond it.
 vec3 catchOnFarBase(FootprintLine density, float x, float y) {
-  if (!(gLightDir.z > 0.0)) return vec3(0.0);
+  // A mirror base reflects these rays up, away from the section: they see the environment.
+  vec3 reflected = wBounce + 1 < gMaxBounces
+                       ? wWeight * footprintShare(density, positionOf(x), positionOf(y)) * environmentReflection(baseMaterial())
+                       : vec3(0.0);
+  if (!(gLightDir.z > 0.0)) return reflected;
   float lb = dot(gLightDir.xy, gSectionBinormal), lw = gLightDir.z;
   float lt = dot(gLightDir.xy, sectionTangent(gSectionBinormal));
   float limit = y;
@@ -91,9 +97,9 @@ vec3 catchOnFarBase(FootprintLine density, float x, float y) {
     }
     limit = min(y, wDir * (extreme / lw) * wRw);
   }
-  if (!(limit > x)) return vec3(0.0);
+  if (!(limit > x)) return reflected;
   vec3 f = directRadiance(baseMaterial(), vec3(0.0, 0.0, 1.0), wBack);
-  return wWeight * footprintShare(density, positionOf(x), positionOf(limit)) * f;
+  return reflected + wWeight * footprintShare(density, positionOf(x), positionOf(limit)) * f;
 }
 
 vec3 traceBeam(FootprintLine density, Beam beam) {
@@ -104,10 +110,14 @@ vec3 traceBeam(FootprintLine density, Beam beam) {
   wRb = dot(R.xy, gSectionBinormal);
   wRt = dot(R.xy, sectionTangent(gSectionBinormal));
   wRw = R.z;
-  if (wRb == 0.0) return vec3(0.0);  // straight up: it leaves the surface
+  wWeight = beam.weight * materials[gFacetMaterial[f]].mirror.rgb;
+  wBounce = beam.bounce;
+  if (wRb == 0.0) {  // straight up: every ray leaves the surface
+    if (!(wRw > 0.0)) return vec3(0.0);
+    return wWeight * footprintShare(density, min(beam.p0, beam.p1), max(beam.p0, beam.p1)) * gEnvironment;
+  }
   wDir = wRb > 0.0 ? 1.0 : -1.0;
   wBack = -R;
-  wWeight = beam.weight * materials[gFacetMaterial[f]].mirror.rgb;
   float kf0 = walkKey(f), kf1 = walkKey(f + 1);
   wKAt0 = kf0 + beam.t0 * (kf1 - kf0);
   wKAt1 = kf0 + beam.t1 * (kf1 - kf0);
@@ -131,6 +141,8 @@ vec3 traceBeam(FootprintLine density, Beam beam) {
     lowest = min(lowest, kFar);
   }
   if (lowest > low && wRw < 0.0) sum += catchOnFarBase(density, low, min(lowest, high));
+  // Rays past the section's end going up leave the surface: they see the environment.
+  if (lowest > low && wRw > 0.0) sum += wWeight * footprintShare(density, positionOf(low), positionOf(min(lowest, high))) * gEnvironment;
   return sum;
 }
 

@@ -271,6 +271,80 @@ TEST(SeedShader, MirrorVGrooveWithBouncesAgreesWithTheReference) {
   }
 }
 
+// Light from outside the grooves (seed §7: a reflected beam's rays that leave the surface see the rest
+// of the scene, weighted by the uncovered part, 1 - Σ r_i): a mirror V-groove under a constant
+// environment, against the reference, whose reflected rays that leave see that environment too. The
+// environment must show (the mean rises), or the check would hold with both ignoring it.
+TEST(SeedShader, MirrorBouncesSeeTheEnvironmentAsTheReferenceDoes) {
+  // 45-degree walls seen nearly from above: a wall sends the view across to the other wall, which
+  // sends it up and out, so from the second bounce on part of every beam leaves the surface.
+  const GrooveScene s = sceneOf(line("v", "chrome", {0.1, 0.5}, {0.9, 0.5}));
+  const View view = windowView({0.47, 0.47}, {0.53, 0.53}, 12, 0.3, 1.4);
+  for (int bounces : {2, 3}) {
+    SCOPED_TRACE(bounces);
+    Lighting dark = lightTowards({0.1, 0.3, 1}, bounces), lit = dark;
+    lit.environment = {0.3, 0.5, 0.7};
+    const double rmse = expectMatchesReference(s, view, lit);
+    const GrooveGrid grid = buildGridOk(s);
+    const Image without = renderSeed(s, grid, view, dark, 0), with = renderSeed(s, grid, view, lit, 0);
+    double gained = 0;
+    for (std::size_t i = 0; i < with.pixels.size(); ++i) gained += double(with.pixels[i]) - double(without.pixels[i]);
+    EXPECT_GT(gained / double(with.pixels.size()), 0.01) << "the environment does not show";
+    std::printf("[ grooves ] environment, %d bounces: mean gain %.4f, RMSE against the reference %.4g\n", bounces,
+                gained / double(with.pixels.size()), rmse);
+
+  }
+}
+
+// Closed form: the flat floor of a mirror box groove seen along the groove. Every reflected ray goes up
+// between the walls and leaves, so the floor (black itself: no albedo, no specular) shows exactly
+// environment x mirror, whatever the light.
+TEST(SeedShader, MirrorFloorShowsEnvironmentTimesMirror) {
+  Result<GrooveScene> parsed = parseGrooveScene(R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"box": {"points": [[-0.05, 0], [-0.05, -0.02], [0.05, -0.02], [0.05, 0]]}},
+    "materials": {"ground": {"albedo": [0.3, 0.3, 0.3]}, "glass": {"albedo": [0, 0, 0], "mirror": [0.5, 0.6, 0.7]}},
+    "base": "ground", "grooves": [{"profile": "box", "material": "glass", "path": {"line": [[0.1, 0.5], [0.9, 0.5]]}}]})",
+                                                "box.json");
+  ASSERT_TRUE(parsed.isOk()) << parsed.status().describe();
+  const GrooveScene& s = parsed.value();
+  const GrooveGrid grid = buildGridOk(s);
+  const SeedShader shader(s, grid);
+  Lighting l = lightTowards({0.4, 0.2, 1}, 1);
+  l.environment = {0.3, 0.5, 0.7};
+  const double n = std::hypot(0.2, 1.0);
+  const Rgb value = shader.shade(square({0.5, 0.5}, 0.01), {0.2 / n, 0, 1 / n}, l);
+  expectRgbNear(value, {0.3 * 0.5, 0.5 * 0.6, 0.7 * 0.7}, 1e-9);
+  l.environment = {0, 0, 0};
+  expectRgbNear(shader.shade(square({0.5, 0.5}, 0.01), {0.2 / n, 0, 1 / n}, l), {0, 0, 0}, 1e-12);
+}
+
+// A mirror base under an environment, over a crossing of two V-grooves (a special case, sampled by
+// area) and the line-sampled grooves around it: the base reflects the environment everywhere, in
+// plain footprints, in the sections' flat parts and in the area-sampled pieces alike, as in the
+// reference (a ray reflected off the base goes up and nothing is above it).
+TEST(SeedShader, MirrorBaseReflectsTheEnvironmentInEveryPath) {
+  Result<GrooveScene> parsed = parseGrooveScene(R"({"version": 1, "domain": {"size": [1, 1]},
+    "profiles": {"v": {"points": [[-0.02, 0], [0, -0.02], [0.02, 0]]}},
+    "materials": {"polished": {"albedo": [0.3, 0.3, 0.3], "mirror": [0.6, 0.5, 0.4]},
+                  "paint": {"albedo": [0.8, 0.3, 0.1], "specular": [0.4, 0.4, 0.4], "shininess": 16}},
+    "base": "polished", "grooves": [
+      {"profile": "v", "material": "paint", "path": {"line": [[0.1, 0.5], [0.9, 0.5]]}},
+      {"profile": "v", "material": "paint", "path": {"line": [[0.5, 0.1], [0.5, 0.9]]}}]})",
+                                                "crossing.json");
+  ASSERT_TRUE(parsed.isOk()) << parsed.status().describe();
+  Lighting l = lightTowards({0.2, 0.3, 1}, 1);
+  l.environment = {0.4, 0.5, 0.6};
+  const View view = windowView({0.44, 0.44}, {0.56, 0.56}, 12, 0.6, 0.7);
+  const double rmse = expectMatchesReference(parsed.value(), view, l);
+  std::printf("[ grooves ] mirror base under an environment, crossing: RMSE against the reference %.4g\n", rmse);
+  // The crossing is sampled by area in the middle of the view.
+  const GrooveGrid grid = buildGridOk(parsed.value());
+  const SeedShader shader(parsed.value(), grid);
+  ShadeStats stats;
+  shader.shade(view.pixel(6, 6), view.toViewer, l, &stats);
+  EXPECT_TRUE(stats.special) << "the view's centre should be the crossing's special case";
+}
+
 TEST(SeedShader, ScratchWithPileUpRidgesAgreesWithTheReference) {
   // Ridges beside the cut mask and shadow the flat ground and the cut at oblique angles.
   const GrooveScene s = sceneOf(line("scratch", "paint", {0.1, 0.47}, {0.9, 0.53}));

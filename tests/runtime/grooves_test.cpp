@@ -193,6 +193,7 @@ class GroovesOracle : public test::GlTest {
   // special cases turn it on; the others check that none is in view.
   bool areaSampling_ = false;
   int forceRetries_ = 0;  // GroovesOptions::forceRetries
+  Vec3 environment_{0, 0, 0};  // what mirror bounces that leave the surface see (seed §7)
   // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
   // one are counted (libbake/grooves/oracle/shade.cpp nearArcCentre splits those footprints in 3 x 3).
   std::vector<std::array<float, 2>> arcCentres_;
@@ -214,7 +215,9 @@ class GroovesOracle : public test::GlTest {
     EXPECT_GT(renderer.gpuBytes(), 0u);
 
     const Camera camera{eye, target, up, 0.7f, 0.01f, 100.0f};
-    const Light lighting{normalize(light), {1, 1, 1}};
+    Light lighting;
+    lighting.direction = normalize(light);
+    lighting.environment = environment_;
     const FrameContext frame{*scene, camera, lighting, lookAt(camera.eye, camera.target, camera.up),
                              perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
     FloatTarget targetBuffers;
@@ -251,6 +254,7 @@ class GroovesOracle : public test::GlTest {
       grooves::Lighting light3;
       light3.toLight = {c[1], c[2], c[3]};
       light3.maxBounces = maxBounces;
+      light3.environment = {environment_[0], environment_[1], environment_[2]};
       grooves::ShadeStats stats;
       const grooves::Rgb expected = oracle.shade(footprint, toViewer, light3, &stats);
       figures.far += stats.far ? 1 : 0;
@@ -587,6 +591,12 @@ TEST_F(GroovesOracle, MirrorGrooveWithBounces) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.5f, -0.2f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.1f, -0.4f, 0.9f}, 3);
   expectWithinTwoLevels(f, "mirror");
+  // Under a constant environment (seed §7's light from outside the grooves): the shader adds it where
+  // the CPU method does, and it shows.
+  environment_ = {0.25f, 0.45f, 0.65f};
+  const OracleFigures lit = compare(baked, {0.5f, -0.2f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.1f, -0.4f, 0.9f}, 3);
+  expectWithinTwoLevels(lit, "mirror_environment");
+  EXPECT_GT(lit.meanRadiance, f.meanRadiance + 0.01) << "the environment does not show";
 }
 
 // The tangent frame: the plane turned upright by its node (90 degrees about x), seen by a camera and
@@ -711,6 +721,24 @@ TEST_F(GroovesOracle, CrossingSampledByAreaAsOnTheCpu) {
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.6f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 0);
   expectWithinTwoLevels(f, "crossing", true);
+}
+
+// A mirror base under an environment (seed §7's light from outside) over a crossing: the shader adds
+// the base's reflection of the environment in plain footprints, in the sections' flat parts and in
+// the area-sampled pieces as the CPU method does.
+TEST_F(GroovesOracle, MirrorBaseReflectsTheEnvironmentAsOnTheCpu) {
+  areaSampling_ = true;
+  environment_ = {0.4f, 0.5f, 0.6f};
+  const std::string materials =
+      R"("polished": {"albedo": [0.3, 0.3, 0.3], "specular": [0.2, 0.2, 0.2], "shininess": 20, "mirror": [0.6, 0.5, 0.4]}, )" + kGrey;
+  const std::string vee = R"("vee": {"points": [[-0.05, 0], [0, -0.04], [0.05, 0]]})";
+  const Baked baked = bake(sceneJson(1, vee, materials, "polished",
+                                     R"({"profile": "vee", "material": "grey", "path": {"line": [[-0.5, 0.5], [1.5, 0.5]]}}, )"
+                                     R"({"profile": "vee", "material": "grey", "path": {"line": [[0.5, -0.5], [0.5, 1.5]]}})"),
+                           "mirror_base_environment");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.6f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
+  expectWithinTwoLevels(f, "mirror_base_environment", true);
 }
 
 // The example scenes of pipelines/grooves, as the examples bake them: the record (no special case

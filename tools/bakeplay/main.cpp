@@ -19,6 +19,9 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
                      "takes point and spot lights as they are; other techniques light from the scene's centre toward "
                      "them; default: the file's light, else upper right)")
       ->type_name("LIGHT");
+  command.add_option("--environment", view.environment,
+                     "Grooves: the constant radiance R,G,B that mirror bounces leaving the surface see (default black)")
+      ->type_name("R,G,B");
   command.add_option("--geotexture", view.geotexture,
                      "GeoTexture preset for every primitive with geodesic fields (isolines, sand-water, moss-granite, "
                      "paint-metal-rust, water-lava, opacity-front, wave-displacement)")

@@ -11,7 +11,9 @@
 //   from there along the view onto the base plane (both affine maps of the piece's plane), and
 //   subtracted from the visible part.
 // - reflection (§6.4, Eq. 1): r_i = (area of the visible, lit part on the base plane) / footprint area,
-//   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
+//   and the pixel is sum r_i directRadiance(material_i, N_i, E, L), plus, for mirror pieces while
+//   bounces are followed, their visible share (lit or not) x mirror x the environment (seed §7's light
+//   from outside; their reflections are not traced in area-sampled footprints).
 // Both tests first compare the other piece with the piece's plane: wholly behind it, it can neither
 // hide nor shadow the piece; wholly in front, the one-point test's verdict is known and the clip
 // against the piece is skipped.
@@ -394,7 +396,10 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
     const Rgb radiance = radianceOf(me.piece->material, me.piece->normal);
-    if (isBlack(radiance)) continue;  // facing away from the light: no direct light at all
+    // A mirror piece's reflection is not traced here: it is taken to leave the surface and see the
+    // environment, over the piece's visible part (lit or not).
+    const Rgb reflected = environmentReflection(job.scene.materials[me.piece->material], job.lighting);
+    if (isBlack(radiance) && isBlack(reflected)) continue;  // no direct light, nothing reflected
     visible.count = 0;
     visible.minArea = f.minArea;
     visible.overflows = 0;
@@ -402,6 +407,9 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     visiblePart(f, all, i, fp, meEdges, visible);
     if (visible.count == 0) continue;
     ++stats.visiblePieces;
+    const double seen = visible.weightedArea() / footprintArea;
+    for (int c = 0; c < 3; ++c) sum[c] += seen * reflected[c];
+    if (isBlack(radiance)) continue;
     litPart(f, all, i, meEdges, visible);
     stats.fragmentOverflows += visible.overflows;
     const double share = visible.weightedArea() / footprintArea;

@@ -14,7 +14,7 @@ namespace bake::grooves {
 
 Rgb shadeFromFarLevel(const GrooveScene& scene, const GrooveGrid& grid, const Footprint& footprint,
                       const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings) {
-  const Rgb flat = directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting);
+  const Rgb flat = flatBaseRadiance(scene.materials[scene.baseMaterial], toViewer, lighting);
   const FarLevel& far = grid.far;
   const Vec2 extent{0.5 * (std::abs(footprint.axis1.u) + std::abs(footprint.axis2.u)),
                     0.5 * (std::abs(footprint.axis1.v) + std::abs(footprint.axis2.v))};

@@ -8,8 +8,10 @@
 // seed's rule that only the visible part of the cross-section may take part in a bounce. A caught part
 // adds mirror x (its direct radiance seen from -R, where lit) weighted by its share of the footprint,
 // and, while bounces remain, becomes a new beam with -R as its view direction. Rays that pass the
-// section's end going up leave the surface and see black; going down, they reach the flat base beyond
-// it (lit unless the section shadows it; its own mirror is not followed: it would look back up).
+// section's end going up leave the surface and see the environment (Lighting::environment, black by
+// default): the part of the new footprint that projects onto no groove, weighted by its share, the
+// seed's 1 - Σ r_i; going down, they reach the flat base beyond it (lit unless the section shadows
+// it; a mirror base sends them up and away, to the environment, while bounces remain).
 //
 // A beam carries the footprint measure of its rays: the base-line position p seen through each ray's
 // start is affine in k, so a caught range of k maps to a share of the footprint exactly. The beams
@@ -58,6 +60,7 @@ struct Walk {
   double rb = 0, rw = 0, dir = 1;  // R' and the direction of travel along b
   Vec3 back{};                     // -R
   Rgb weight{};                    // beam weight x this mirror's reflectance
+  int bounce = 0;                  // reflections made before this beam's
   // Footprint position as an affine function of the ray coordinate k.
   double kAt0 = 0, kAt1 = 0, p0 = 0, p1 = 0;
 
@@ -105,6 +108,10 @@ void catchOnFacet(const Walk& w, const Beam& beam, std::size_t j, double x, doub
 
 // The rays with k in [x, y] pass the section's end going down: they reach the flat base beyond it.
 void catchOnFarBase(const Walk& w, double x, double y, Rgb& sum) {
+  const Material& base = w.scene.materials[w.scene.baseMaterial];
+  // A mirror base reflects these rays up, away from the section: they see the environment.
+  if (w.bounce + 1 < w.lighting.maxBounces)
+    w.add(w.density.share(w.positionOf(x), w.positionOf(y)), environmentReflection(base, w.lighting), sum);
   const Vec3& L = w.lighting.toLight;
   if (!(L.w > 0)) return;
   const SectionDirection light = inSection(w.section, L);
@@ -123,7 +130,6 @@ void catchOnFarBase(const Walk& w, double x, double y, Rgb& sum) {
     limit = std::min(y, w.dir * (extreme / lw) * w.rw);
   }
   if (!(limit > x)) return;
-  const Material& base = w.scene.materials[w.scene.baseMaterial];
   const Rgb f = directRadiance(base, {0, 0, 1}, w.back, w.lighting);
   w.add(w.density.share(w.positionOf(x), w.positionOf(limit)), f, sum);
 }
@@ -136,13 +142,17 @@ void traceBeam(const GrooveScene& scene, const CrossSection& section, const Foot
   if (!(dot3(beam.toViewer, normal) > 0)) return;
   const Vec3 R = reflect(beam.toViewer, normal);
   Walk w{scene, section, density, lighting, lit};
+  w.bounce = beam.bounce;
   w.ray = inSection(section, R);
   w.rb = w.ray.b;
   w.rw = w.ray.w;
-  if (w.rb == 0) return;  // straight up: it leaves the surface
+  for (int c = 0; c < 3; ++c) w.weight[c] = beam.weight[c] * mirror.mirror[c];
+  if (w.rb == 0) {  // straight up: every ray leaves the surface
+    if (w.rw > 0) w.add(density.share(std::min(beam.p0, beam.p1), std::max(beam.p0, beam.p1)), lighting.environment, sum);
+    return;
+  }
   w.dir = w.rb > 0 ? 1 : -1;
   w.back = {-R.u, -R.v, -R.w};
-  for (int c = 0; c < 3; ++c) w.weight[c] = beam.weight[c] * mirror.mirror[c];
 
   const std::vector<SectionPoint>& pts = section.points;
   const std::size_t f = beam.facet;
@@ -170,6 +180,8 @@ void traceBeam(const GrooveScene& scene, const CrossSection& section, const Foot
     lowest = std::min(lowest, kFar);
   }
   if (lowest > low && w.rw < 0) catchOnFarBase(w, low, std::min(lowest, high), sum);
+  // Rays past the section's end going up leave the surface: they see the environment.
+  if (lowest > low && w.rw > 0) w.add(density.share(w.positionOf(low), w.positionOf(std::min(lowest, high))), lighting.environment, sum);
 }
 
 }  // namespace

@@ -291,7 +291,7 @@ SectionShading shadeSection(const GrooveScene& scene, const CrossSection& sectio
 
 Rgb lineSampleWith(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
                    const Vec3& toViewer, const Lighting& lighting, const SeedSettings& settings) {
-  auto flat = [&] { return directRadiance(scene.materials[scene.baseMaterial], {0, 0, 1}, toViewer, lighting); };
+  auto flat = [&] { return flatBaseRadiance(scene.materials[scene.baseMaterial], toViewer, lighting); };
   thread_local std::vector<std::size_t> kept;
   kept.clear();
   for (std::size_t i = 0; i < grooves.size(); ++i)

@@ -61,6 +61,19 @@ void setRgb(Image& image, int x, int y, const Rgb& value) {
   for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<float>(value[c]);
 }
 
+Rgb environmentReflection(const Material& material, const Lighting& lighting) {
+  if (!material.hasMirror || lighting.maxBounces <= 0) return {0, 0, 0};
+  return {material.mirror[0] * lighting.environment[0], material.mirror[1] * lighting.environment[1],
+          material.mirror[2] * lighting.environment[2]};
+}
+
+Rgb flatBaseRadiance(const Material& base, const Vec3& toViewer, const Lighting& lighting) {
+  Rgb out = directRadiance(base, {0, 0, 1}, toViewer, lighting);
+  const Rgb reflected = environmentReflection(base, lighting);
+  for (int c = 0; c < 3; ++c) out[c] += reflected[c];
+  return out;
+}
+
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting) {
   const double cosLight = dot(normal, lighting.toLight);
   if (cosLight <= 0) return {0, 0, 0};

@@ -30,6 +30,9 @@ struct Lighting {
   Vec3 toLight{0, 0, 1};      // unit
   Rgb radiance{1, 1, 1};      // irradiance on a surface facing the light
   int maxBounces = 0;         // mirror reflections followed (seed §7)
+  // Radiance of the rest of the scene, constant in every direction: what a reflected ray that leaves
+  // the grooved surface sees (seed §7, weighted by the uncovered part of the new footprint, 1 - Σ r_i).
+  Rgb environment{0, 0, 0};
 };
 
 // An orthographic view of a rectangle of the base plane: pixel (x, y) has its footprint centre at
@@ -57,6 +60,11 @@ void setRgb(Image& image, int x, int y, const Rgb& value);
 // Radiance sent towards E by a lit point with normal N: f(E, L) max(N.L, 0) radiance, f normalised
 // Blinn-Phong (the one material model; also in shaders/grooves).
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting);
+// What a mirror facet adds by reflecting the environment where its reflection leaves the surface
+// untraced (the flat base, area-sampled pieces): mirror x environment, when bounces are followed.
+Rgb environmentReflection(const Material& material, const Lighting& lighting);
+// The flat base plane seen from toViewer: its direct light and, if it mirrors, the environment.
+Rgb flatBaseRadiance(const Material& base, const Vec3& toViewer, const Lighting& lighting);
 Vec3 reflect(const Vec3& toViewer, const Vec3& normal);  // mirrored direction, unit
 
 // directRadiance under one view and light, remembering (material, normal) pairs: the facets of a

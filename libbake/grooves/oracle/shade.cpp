@@ -203,7 +203,7 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
   thread_local std::vector<LocalGroove> grooves;
   const std::vector<std::uint32_t>& found = gatherPrimitives(grid_, serial_, box);
   if (stats) *stats = {false, std::uint32_t(found.size())};
-  if (found.empty()) return directRadiance(scene_.materials[scene_.baseMaterial], {0, 0, 1}, toViewer, lighting);
+  if (found.empty()) return flatBaseRadiance(scene_.materials[scene_.baseMaterial], toViewer, lighting);
   // A footprint wider than the period of a repeating pattern: the grooves, straightened at their copy
   // nearest F, would each be counted once; the far level counts every copy (whole periods exactly).
   const bool beyondPeriod =

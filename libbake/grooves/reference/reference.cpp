@@ -6,7 +6,7 @@
 // (reference_surface.cpp). A hit facing the light is lit when a shadow ray towards L, started a little
 // off the surface along its normal, leaves the surface; it then sends the normalised Blinn-Phong
 // radiance. Mirror materials add mirror x the radiance along the reflected ray, up to maxBounces
-// reflections; a ray that leaves the surface sees black.
+// reflections; a reflected ray that leaves the surface sees the environment (black by default).
 //
 // Pixels: n x n stratified samples over the footprint parallelogram (n = sqrt(samplesPerPixel),
 // rounded to the nearest integer >= 1 when samplesPerPixel is not a square), jittered inside each
@@ -42,7 +42,7 @@ bool lit(const ReferenceSurface& surface, const ReferenceSurface::Hit& hit, cons
 Rgb traceRadiance(const ReferenceSurface& surface, const GrooveScene& scene, const Vec3& origin, const Vec3& dir,
                   const Lighting& lighting, int bounce, double offset) {
   ReferenceSurface::Hit hit;
-  if (!surface.intersect(origin, dir, hit)) return {0, 0, 0};
+  if (!surface.intersect(origin, dir, hit)) return bounce > 0 ? lighting.environment : Rgb{0, 0, 0};
   const Material& material = scene.materials[hit.material];
   const Vec3 toViewer{-dir.u, -dir.v, -dir.w};
   Rgb out{0, 0, 0};
