@@ -17,7 +17,8 @@
 // Both tests first compare the other piece with the piece's plane: wholly behind it, it can neither
 // hide nor shadow the piece; wholly in front, the one-point test's verdict is known and the clip
 // against the piece is skipped.
-// Only direct light: mirror inter-reflections (§7) are not followed in special cases yet.
+// Inter-reflections of direct light (§7) are not followed in special cases yet; a mirror piece
+// reflects only the environment there (above).
 // A zero-area footprint is a point sample: the radiance of the point seen along the view line.
 // The working region covers the footprint, what its view lines cross and what can shadow that, as a
 // box (workingRegion below); for a light near the horizon, shadows are looked for up to kMaxLightSlope
