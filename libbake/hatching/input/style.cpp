@@ -149,9 +149,8 @@ Result<StrokeKind> kindOf(const ObjectReader& reader) {
 
 // The stroke image as ink alpha (see the file comment).
 Result<stroke::StrokeTexture> loadStrokeImage(const std::string& path, const std::string& styleFile, const std::string& pointer) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    return Status(ExitCode::Io, "cannot open the stroke image " + path, {styleFile, pointer});
+  // Read once through the bounded reader, like every input: a pipe or a device is read as far as it
+  // goes, a directory or a missing file is refused there.
   Result<Image> read = readImage(path);
   if (!read.isOk()) {
     // The style's element names the image; the image's own reason follows.
