@@ -58,8 +58,8 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --environment 0.25,0.27,0.32 \
   -o "$out/grooves-plate-environment.png"
 # The fluted column: grooves drawn on a UV-mapped mesh (groovebake --apply-to).
-# Seen from -z: the UV seam (where the rings' two ends meet) faces +z.
-"$bin/bakeplay/bakeplay" render -q "$out/grooves-column.glb" --size 384x512 --camera -1.1,0.6,-2.6:0,0,0 \
+# Seen and lit from -z: the UV seam (where the rings' two ends meet) faces +z.
+"$bin/bakeplay/bakeplay" render -q "$out/grooves-column.glb" --size 384x512 --camera -1.1,0.6,-2.6:0,0,0 --light -0.5,0.6,-0.6 \
   -o "$out/grooves-column.png"
 
 # Paintstrokes (pipelines/paintstrokes): fur grown on a torus and a small tree, made by strokebake's
