@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "bake/core/vector_text.h"
+#include "core/csv_read.h"
 #include "core/json_keys.h"
 #include "io/glb_scene.h"
 
@@ -200,8 +201,8 @@ Result<Light> parseLight(const std::string& text) {
     light.direction = normalize(light.direction);
     return light;
   }
-  const std::size_t expected = kind == "point" ? 2 : 0;
-  if ((kind == "point" && parts.size() != expected) || (kind == "spot" && (parts.size() < 4 || parts.size() > 5)))
+  const bool counted = kind == "point" ? parts.size() == 2 : parts.size() == 4 || parts.size() == 5;
+  if (!counted)
     return usageError("--light \"" + text + "\": expected point:X,Y,Z or spot:X,Y,Z:DX,DY,DZ:CUTOFF_DEGREES[:EXPONENT]");
   light.kind = kind == "point" ? LightKind::Point : LightKind::Spot;
   BAKE_ASSIGN_OR_RETURN(light.position, parseVector(parts[1], "--light"));
@@ -210,14 +211,13 @@ Result<Light> parseLight(const std::string& text) {
   BAKE_ASSIGN_OR_RETURN(light.spotDirection, parseVector(parts[2], "--light"));
   if (length(light.spotDirection) == 0) return usageError("--light: the spot's direction is zero");
   light.spotDirection = normalize(light.spotDirection);
-  char* end = nullptr;
-  const double cutoff = std::strtod(parts[3].c_str(), &end);
-  if (end == parts[3].c_str() || *end != 0 || !(cutoff > 0 && cutoff <= 90))
+  double cutoff = 0;
+  if (!parseCsvNumber(parts[3], cutoff) || !(cutoff > 0 && cutoff <= 90))
     return usageError("--light: the spot's cut-off \"" + parts[3] + "\" must be an angle in degrees, above 0 and at most 90");
   light.cutoff = float(cutoff * 3.14159265358979323846 / 180);
   if (parts.size() == 5) {
-    const double exponent = std::strtod(parts[4].c_str(), &end);
-    if (end == parts[4].c_str() || *end != 0 || !(exponent >= 0 && exponent <= 128))
+    double exponent = 0;
+    if (!parseCsvNumber(parts[4], exponent) || !(exponent >= 0 && exponent <= 128))
       return usageError("--light: the spot's exponent \"" + parts[4] + "\" must be a number from 0 to 128");
     light.exponent = float(exponent);
   }

@@ -53,8 +53,10 @@ struct Baked {
 // the writer's node with no transform.
 // `uvScale`: the preview plane's TEXCOORD_0 multiplied by it (a repeating pattern tiled that many
 // times across the plane).
+// `surface`: the preview plane replaced by this mesh (groovebake --apply-to).
+// `specialCases`: false leaves out the special-case records (groovebake --no-special-cases).
 Baked bake(const std::string& json, const std::string& name, std::optional<glb::Node> node = std::nullopt,
-           float uvScale = 1) {
+           float uvScale = 1, const grooves::GrooveSurface* surface = nullptr, bool specialCases = true) {
   Baked out;
   auto scene = grooves::parseGrooveScene(json, name + ".json");
   EXPECT_TRUE(scene.isOk()) << scene.status().describe();
@@ -64,9 +66,11 @@ Baked bake(const std::string& json, const std::string& name, std::optional<glb::
   EXPECT_TRUE(grid.isOk()) << grid.status().describe();
   if (!grid.isOk()) return out;
   out.grid = std::move(grid).value();
+  if (!specialCases) grooves::dropSpecialCases(out.grid);
   auto package = grooves::buildGroovePackage(out.scene, out.grid);
   EXPECT_TRUE(package.isOk()) << package.status().describe();
   if (!package.isOk()) return out;
+  if (surface) grooves::applySurface(*package, *surface);
   if (node) package->nodes.push_back(*node);
   if (uvScale != 1) {
     for (glb::Attribute& attribute : package->meshes[0].primitives[0].attributes) {
@@ -82,25 +86,18 @@ Baked bake(const std::string& json, const std::string& name, std::optional<glb::
   return out;
 }
 
-// The scene's package with its preview plane replaced by `surface` (groovebake --apply-to).
-Baked bakeOnSurface(const std::string& json, const std::string& name, const grooves::GrooveSurface& surface) {
-  Baked out;
-  auto scene = grooves::parseGrooveScene(json, name + ".json");
-  EXPECT_TRUE(scene.isOk()) << scene.status().describe();
-  if (!scene.isOk()) return out;
-  out.scene = std::move(scene).value();
-  auto grid = grooves::buildGrooveGrid(out.scene, {});
-  EXPECT_TRUE(grid.isOk()) << grid.status().describe();
-  if (!grid.isOk()) return out;
-  out.grid = std::move(grid).value();
-  auto package = grooves::buildGroovePackage(out.scene, out.grid);
-  EXPECT_TRUE(package.isOk()) << package.status().describe();
-  if (!package.isOk()) return out;
-  grooves::applySurface(*package, surface);
-  out.file = test::freshTempDir("grooves_" + name) / (name + ".glb");
-  const Status written = glb::write(out.file, *package);
-  EXPECT_TRUE(written.isOk()) << written.describe();
-  return out;
+// bakeshape's column (64 segments) with the tangent frames groovebake --apply-to computes.
+grooves::GrooveSurface columnSurface() {
+  grooves::GrooveSurface surface;
+  surface.name = "column";
+  Result<TriangleMesh> column = makeShape({"column", 64});
+  EXPECT_TRUE(column.isOk()) << column.status().describe();
+  if (!column.isOk()) return surface;
+  surface.mesh = std::move(column).value();
+  Result<TangentFrames> frames = computeTangentFrames(surface.mesh);
+  EXPECT_TRUE(frames.isOk()) << frames.status().describe();
+  if (frames.isOk()) surface.tangents = frames->tangents;
+  return surface;
 }
 
 // Straight lines across the domain and beyond it (so no open end lies near the viewed region).
@@ -909,15 +906,9 @@ struct CameraRays {
 };
 
 TEST_F(GroovesOracle, FlutedColumnMatchesTheCpuThroughTheSameMesh) {
-  Result<TriangleMesh> column = makeShape({"column", 64});
-  ASSERT_TRUE(column.isOk()) << column.status().describe();
-  grooves::GrooveSurface surface;
-  surface.name = "column";
-  surface.mesh = std::move(column).value();
-  Result<TangentFrames> frames = computeTangentFrames(surface.mesh);
-  ASSERT_TRUE(frames.isOk()) << frames.status().describe();
-  surface.tangents = frames->tangents;
-  const Baked baked = bakeOnSurface(exampleScene("flutes.json"), "column", surface);
+  const grooves::GrooveSurface surface = columnSurface();
+  ASSERT_FALSE(surface.tangents.empty());
+  const Baked baked = bake(exampleScene("flutes.json"), "column", std::nullopt, 1, &surface);
   ASSERT_FALSE(baked.file.empty());
   const Vec3 eye{0.32f, 0.05f, 0.78f}, target{0.13f, 0, 0.32f}, light{0.5f, 0.6f, 0.8f};
   const OracleFigures f = compare(baked, eye, target, light, 0, {0, 1, 0});
@@ -1023,25 +1014,12 @@ TEST_F(GroovesOracle, FlutedColumnMatchesTheCpuThroughTheSameMesh) {
 // special-case records, so the check compiles no area-sampling variant): the package passes, and its
 // first reference view is the golden image (tests/golden/runtime/grooves-column.v1.png).
 TEST_F(GroovesOracle, ColumnPackageValidatesAgainstItsGoldenImage) {
-  Result<TriangleMesh> column = makeShape({"column", 64});
-  ASSERT_TRUE(column.isOk());
-  grooves::GrooveSurface surface;
-  surface.name = "column";
-  surface.mesh = std::move(column).value();
-  Result<TangentFrames> frames = computeTangentFrames(surface.mesh);
-  ASSERT_TRUE(frames.isOk());
-  surface.tangents = frames->tangents;
-  auto scene = grooves::parseGrooveScene(exampleScene("flutes.json"), "flutes.json");
-  ASSERT_TRUE(scene.isOk()) << scene.status().describe();
-  auto grid = grooves::buildGrooveGrid(*scene, {});
-  ASSERT_TRUE(grid.isOk());
-  grooves::dropSpecialCases(*grid);
-  auto package = grooves::buildGroovePackage(*scene, *grid);
-  ASSERT_TRUE(package.isOk());
-  grooves::applySurface(*package, surface);
-  const fs::path folder = test::freshTempDir("grooves_column_validate");
-  const fs::path file = folder / "column.glb";
-  ASSERT_TRUE(glb::write(file, *package).isOk());
+  const grooves::GrooveSurface surface = columnSurface();
+  ASSERT_FALSE(surface.tangents.empty());
+  const Baked baked = bake(exampleScene("flutes.json"), "column_validate", std::nullopt, 1, &surface, false);
+  ASSERT_FALSE(baked.file.empty());
+  const fs::path folder = baked.file.parent_path();
+  const fs::path file = baked.file;
 
   ValidateSettings settings;
   settings.packages = {file.string()};
