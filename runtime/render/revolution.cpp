@@ -75,11 +75,12 @@ struct Box {
 };
 
 // The box the march is rasterised over: the shape map's own (r <= rMax, h in the map's rows), where
-// every sample lies. The node's mesh is the package's preview for viewers without BAKE_revolution
-// (a coarse revolved mesh), never the march's bound: its chords cut inside convex arcs.
+// every sample lies, grown to hold every copy when the package has replicas. The node's mesh is the
+// package's preview for viewers without BAKE_revolution (a coarse revolved mesh), never the march's
+// bound: its chords cut inside convex arcs.
 Result<Box> drawnBox(const RevolutionParams& params, const Location& where) {
-  const float r = params.shapeMap.rMax();
-  const Box box{{-r, params.shapeMap.hMin, -r}, {r, params.shapeMap.hMax(), r}};
+  const auto lo = params.boxMin(), hi = params.boxMax();
+  const Box box{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
   for (std::size_t k = 0; k < 3; ++k)
     if (!(box.lo[k] < box.hi[k])) return invalidInput("the shape map's box is empty", where);
   return box;
@@ -235,6 +236,9 @@ Status RevolutionRenderer::prepare(const Scene& scene, const std::vector<std::si
     variant.defines.push_back(encodingDefine(p.shapeMap.encoding));
     variant.defines.push_back(projectionDefine(p.projection));
     variant.defines.push_back("MAX_PROXY_BANDS " + std::to_string(fmt::kMaxProxyBands));
+    if (p.replicas.layout == RevolutionParams::Replicas::Layout::Grid) variant.defines.push_back("REPLICAS_GRID");
+    if (p.replicas.layout == RevolutionParams::Replicas::Layout::Ring) variant.defines.push_back("REPLICAS_RING");
+    if (p.selfShadow) variant.defines.push_back("SELF_SHADOW");
 
     const auto& shapeBlob = package.blobs[std::size_t(p.shapeMap.bufferView)].bytes;
     item.shapeTexture = texture(instance.package, p.shapeMap.bufferView, 0, [&] {
@@ -292,8 +296,21 @@ void RevolutionRenderer::setUniforms(const Item& item, const FrameContext& frame
   glProgramUniform1f(program, glGetUniformLocation(program, "uHitEpsilon"), p.hitEpsilon);
   glProgramUniform1f(program, glGetUniformLocation(program, "uOverRelaxation"), p.overRelaxation);
   glProgramUniform1i(program, glGetUniformLocation(program, "uIterations"), p.iterations);
-  glProgramUniform3fv(program, glGetUniformLocation(program, "uBoxMin"), 1, item.boxMin.data());
-  glProgramUniform3fv(program, glGetUniformLocation(program, "uBoxMax"), 1, item.boxMax.data());
+  // One copy's box (the march's), and every copy's (the cells' walk).
+  const float rMax = p.shapeMap.rMax();
+  glProgramUniform3f(program, glGetUniformLocation(program, "uBoxMin"), -rMax, p.shapeMap.hMin, -rMax);
+  glProgramUniform3f(program, glGetUniformLocation(program, "uBoxMax"), rMax, p.shapeMap.hMax(), rMax);
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uReplicaBoxMin"), 1, item.boxMin.data());
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uReplicaBoxMax"), 1, item.boxMax.data());
+  const auto& replicas = p.replicas;
+  glProgramUniform3i(program, glGetUniformLocation(program, "uGridCount"), replicas.count[0], replicas.count[1],
+                     replicas.count[2]);
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uGridSpacing"), 1, replicas.spacing.data());
+  glProgramUniform3i(program, glGetUniformLocation(program, "uGridMirror"), replicas.mirror[0], replicas.mirror[1],
+                     replicas.mirror[2]);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uRingCount"), replicas.ringCount);
+  glProgramUniform1f(program, glGetUniformLocation(program, "uRingRadius"), replicas.ringRadius);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uCellBudget"), replicas.mostCellsCrossed());
   glProgramUniform1i(program, glGetUniformLocation(program, "uBandCount"), GLint(p.proxyBands.size()));
   if (!p.proxyBands.empty()) {
     glProgramUniform3fv(program, glGetUniformLocation(program, "uBands"), GLsizei(p.proxyBands.size()),
@@ -305,6 +322,13 @@ void RevolutionRenderer::setUniforms(const Item& item, const FrameContext& frame
                      p.displacement ? p.displacement->derivativeScale : 0.0f);
   glProgramUniform4fv(program, glGetUniformLocation(program, "uBaseColor"), 1, item.baseColour.data());
   glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDir"), 1, frame.light.direction.data());
+  // Directions go to object space by the inverse of the model's linear part: the transpose of the
+  // normal matrix (its inverse transpose).
+  Vec3 lightObject{0, 0, 0};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) lightObject[i] += normal[i * 3 + j] * frame.light.direction[j];
+  lightObject = normalize(lightObject);
+  glProgramUniform3fv(program, glGetUniformLocation(program, "uLightDirObject"), 1, lightObject.data());
   glProgramUniform3fv(program, glGetUniformLocation(program, "uLightColour"), 1, frame.light.colour.data());
   glProgramUniform3fv(program, glGetUniformLocation(program, "uCameraPos"), 1, frame.camera.eye.data());
 }

@@ -105,8 +105,12 @@ vec2 marchInterval(vec3 o, vec3 d, float tStart) {
   return vec2(max(box.x, hull.x), min(box.y, hull.y));
 }
 
+// Set by marchRay when the budget ran out before the ray hit or left its interval.
+bool gMarchExhausted = false;
+
 // Over-relaxed sphere tracing over [interval.x, interval.y]; true with the hit's t on a hit.
 bool marchRay(vec3 o, vec3 d, vec2 interval, out float tHit) {
+  gMarchExhausted = false;
   tHit = interval.x;
   if (interval.x > interval.y) return false;
   float omega = uOverRelaxation;
@@ -140,6 +144,7 @@ bool marchRay(vec3 o, vec3 d, vec2 interval, out float tHit) {
     step = omega * dist;
     t += step;
   }
+  gMarchExhausted = true;
   return false;
 }
 

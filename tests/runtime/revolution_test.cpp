@@ -121,6 +121,8 @@ struct Options {
   bool colourTexture = false;
   bool arcLengthMap = false;
   std::array<float, 4> baseColour{0.9f, 0.5f, 0.2f, 1.0f};
+  nlohmann::json replicas;  // the extension's "replicas" (null: one object)
+  bool selfShadow = false;
 };
 
 glb::Primitive boxMesh(float rMax, float hMin, float hMax) {
@@ -215,6 +217,8 @@ glb::Package revolutionPackage(const Circle& circle, const Options& o = {}) {
     package.blobs.push_back({sphereArcLengthBytes(), 16});
     extension["arcLengthMap"] = {{"bufferView", int(package.blobs.size()) - 1}};
   }
+  if (!o.replicas.is_null()) extension["replicas"] = o.replicas;
+  if (o.selfShadow) extension["selfShadow"] = true;
   nlohmann::json material = {{"pbrMetallicRoughness", {{"baseColorFactor", o.baseColour}}},
                              {"extensions", {{format::revolution::kExtension, extension}}}};
   if (o.colourTexture) {
@@ -272,13 +276,14 @@ std::string cameraText(const View& view) {
 }
 
 // Renders through `bakeplay render`'s own entry point; the PNG read back (sRGB, top row first).
-Image render(const std::vector<glb::Package>& packages, const std::string& name, const View& view) {
+Image render(const std::vector<glb::Package>& packages, const std::string& name, const View& view,
+             const std::string& light = "0.3,0.6,1") {
   RenderSettings settings;
   for (std::size_t i = 0; i < packages.size(); ++i)
     settings.view.scenes.push_back(writePackage(packages[i], name + std::to_string(i)).string());
   settings.view.width = settings.view.height = kSize;
   settings.view.camera = cameraText(view);
-  settings.view.light = "0.3,0.6,1";
+  settings.view.light = light;
   settings.output = (fs::path(settings.view.scenes[0]).parent_path() / (name + ".png")).string();
   Diagnostics diagnostics("bakeplay", true);
   const Status status = runRender(settings, diagnostics);
@@ -305,8 +310,10 @@ Ray pixelRay(const View& view, int x, int y) {
 
 // First crossing of the exact solid along the ray: its implicit function sampled every 1e-3 object
 // units (well below the smallest feature, the torus tube's 0.3), the crossing refined by bisection.
-std::optional<double> exactHit(const Circle& circle, const Ray& ray, double tMax = 8.0) {
-  auto at = [&](double t) { return circle.implicit(ray.origin + ray.direction * float(t)); };
+// `implicit` is a lower bound of the distance to the solid outside it (an exact distance, or the
+// least of several).
+std::optional<double> exactHit(const std::function<double(const Vec3&)>& implicit, const Ray& ray, double tMax = 8.0) {
+  auto at = [&](double t) { return implicit(ray.origin + ray.direction * float(t)); };
   const double step = 1e-3;
   double previous = at(0);
   if (previous < 0) return 0.0;
@@ -322,6 +329,10 @@ std::optional<double> exactHit(const Circle& circle, const Ray& ray, double tMax
     previous = value;
   }
   return std::nullopt;
+}
+
+std::optional<double> exactHit(const Circle& circle, const Ray& ray, double tMax = 8.0) {
+  return exactHit([&](const Vec3& p) { return circle.implicit(p); }, ray, tMax);
 }
 
 // Covered pixels differ from the background colour (the frame's clear colour, in a corner).
@@ -647,6 +658,166 @@ TEST_F(RevolutionUpload, EveryVariantCompiles) {
       }
     }
   }
+  for (const char* replicas : {"", "REPLICAS_GRID", "REPLICAS_RING"}) {
+    for (bool shadow : {false, true}) {
+      gl::Variant variant{{"revolution/revolution.vert", "revolution/revolution.frag", "", "", ""},
+                          {"ENCODING_UNORM16", "PROJECTION_SPHERICAL", "MAX_PROXY_BANDS 64", "HAS_DISPLACEMENT"}};
+      if (*replicas) variant.defines.push_back(replicas);
+      if (shadow) variant.defines.push_back("SELF_SHADOW");
+      const auto program = shaders.program(variant);
+      EXPECT_TRUE(program.isOk()) << variant.key() << ": " << program.status().describe();
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (c) Replicas and self-shadowing (seed 001 Eq. 9 and Fig. 13; formats/revolution.md, "Replicas").
+// The references place the copies by the format's words, written here apart from the runtime's cell
+// walk: grid copy (i, j, k) is the object moved by (i, j, k) times the spacing, an odd copy of a
+// mirrored axis reflected about its box's centre on that axis; ring copy k is the object moved out
+// along +x and turned 2 pi k / n about +y. Each function maps a point to the one object's frame.
+
+constexpr double kBoxExtent = 2 * kWidth * kTexel;  // 1.2 across, and kHeight * kTexel = 1.2 high
+constexpr double kBoxCentreH = kHMin + 0.5 * kHeight * kTexel;
+
+Vec3 gridCopyLocal(const Vec3& p, int i, int j, bool mirrorY) {
+  Vec3 q{float(p[0] - i * kBoxExtent), float(p[1] - j * kBoxExtent), p[2]};
+  if (mirrorY && j % 2 == 1) q[1] = float(2 * kBoxCentreH - q[1]);
+  return q;
+}
+
+Vec3 ringCopyLocal(const Vec3& p, int k, int count, double radius) {
+  const double back = -2 * kPi * k / count;
+  const double x = p[0] * std::cos(back) - p[2] * std::sin(back), z = p[0] * std::sin(back) + p[2] * std::cos(back);
+  return {float(x - radius), p[1], float(z)};
+}
+
+Mismatch coverageMismatch(const Image& image, const View& view, const std::function<double(const Vec3&)>& implicit) {
+  Mismatch m;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const bool expected = exactHit(implicit, pixelRay(view, x, y), 14.0).has_value();
+      const bool drawn = covered(image, x, y);
+      m.reference += expected ? 1 : 0;
+      m.differing += expected != drawn ? 1 : 0;
+      m.extra += drawn && !expected ? 1 : 0;
+    }
+  }
+  return m;
+}
+
+TEST(RevolutionReplicas, GridRowIsTheUnionOfMovedCopies) {
+  Options o;
+  o.replicas = {{"layout", "grid"}, {"count", {3, 1, 1}}};
+  const View view{{1.2f, 2.2f, 5.0f}, {1.2f, 0.5f, 0.0f}};
+  const Image image = render({revolutionPackage(kSphere, o)}, "grid_row", view);
+  const Mismatch m = coverageMismatch(image, view, [](const Vec3& p) {
+    double d = 1e30;
+    for (int i = 0; i < 3; ++i) d = std::min(d, kSphere.implicit(gridCopyLocal(p, i, 0, false)));
+    return d;
+  });
+  record(m);
+  EXPECT_GT(m.reference, 2000);
+  EXPECT_LT(m.fraction(), 0.01) << m.describe();
+  // The reference can tell: the first copy alone is far from the frame.
+  const Mismatch one = coverageMismatch(image, view, [](const Vec3& p) { return kSphere.implicit(p); });
+  EXPECT_GT(one.differing, m.reference / 2) << one.describe();
+}
+
+// Fig. 13's mirror and repetition: a torus near the bottom of its box, three copies up the axis, the
+// middle one reflected (its torus near the top of its cell).
+TEST(RevolutionReplicas, MirroredStackReflectsOddCopies) {
+  const Circle lowTorus{0.3, 0.15, 0.12};
+  Options o;
+  o.replicas = {{"layout", "grid"}, {"count", {1, 3, 1}}, {"mirror", {false, true, false}}};
+  const View view{{0.0f, 3.4f, 4.2f}, {0.0f, 1.3f, 0.0f}};
+  const Image image = render({revolutionPackage(lowTorus, o)}, "mirrored_stack", view);
+  const auto stack = [&](bool mirror) {
+    return [&lowTorus, mirror](const Vec3& p) {
+      double d = 1e30;
+      for (int j = 0; j < 3; ++j) d = std::min(d, lowTorus.implicit(gridCopyLocal(p, 0, j, mirror)));
+      return d;
+    };
+  };
+  const Mismatch m = coverageMismatch(image, view, stack(true));
+  record(m);
+  EXPECT_GT(m.reference, 600);
+  EXPECT_LT(m.fraction(), 0.02) << m.describe();
+  const Mismatch unmirrored = coverageMismatch(image, view, stack(false));
+  EXPECT_GT(unmirrored.fraction(), 0.3) << "an unmirrored stack would look otherwise: " << unmirrored.describe();
+}
+
+TEST(RevolutionReplicas, RingTurnsCopiesAboutTheAxis) {
+  Options o;
+  o.replicas = {{"layout", "ring"}, {"count", 6}, {"radius", 1.3}};
+  const View view{{0.3f, 4.0f, 4.6f}, {0.0f, 0.5f, 0.0f}};
+  const Image image = render({revolutionPackage(kTorus, o)}, "ring", view);
+  const Mismatch m = coverageMismatch(image, view, [](const Vec3& p) {
+    double d = 1e30;
+    for (int k = 0; k < 6; ++k) d = std::min(d, kTorus.implicit(ringCopyLocal(p, k, 6, 1.3)));
+    return d;
+  });
+  record(m);
+  EXPECT_GT(m.reference, 1500);
+  EXPECT_LT(m.fraction(), 0.015) << m.describe();
+}
+
+// Self-shadowing: a row of three spheres lit low from +x; the +x side of each of the first two lies
+// partly in the shadow of its neighbour. The reference casts the shadow rays
+// analytically (ray against sphere); a pixel counts as lit by its red channel.
+struct SphereHit {
+  double t;
+  Vec3 point, normal;
+};
+std::optional<SphereHit> nearestSphere(const Vec3& origin, const Vec3& direction, int count) {
+  std::optional<SphereHit> best;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 centre{float(i * kBoxExtent), 0.5f, 0.0f};
+    const Vec3 oc = origin - centre;
+    const double b = dot(oc, direction), c = dot(oc, oc) - 0.25, disc = b * b - c;
+    if (disc < 0) continue;
+    const double t = -b - std::sqrt(disc);
+    if (t <= 1e-5 || (best && best->t <= t)) continue;
+    const Vec3 p = origin + direction * float(t);
+    best = SphereHit{t, p, normalize(p - centre)};
+  }
+  return best;
+}
+
+TEST(RevolutionReplicas, SelfShadowMatchesAnalyticShadowRays) {
+  const Vec3 light = normalize(Vec3{1.0f, 0.3f, 0.15f});
+  const std::string lightText = "1,0.3,0.15";
+  const View view{{1.2f, 1.2f, 4.6f}, {1.2f, 0.5f, 0.0f}};
+  Options o;
+  o.replicas = {{"layout", "grid"}, {"count", {3, 1, 1}}};
+  o.selfShadow = true;
+  const Image shadowed = render({revolutionPackage(kSphere, o)}, "shadowed_row", view, lightText);
+  o.selfShadow = false;
+  const Image unshadowed = render({revolutionPackage(kSphere, o)}, "unshadowed_row", view, lightText);
+  // Lit with n.l >= 0.25: red >= 0.9 * (0.08 + 0.25) linear, 0.58 in sRGB; in shadow: ambient only,
+  // 0.9 * 0.08 linear, 0.30 in sRGB.
+  constexpr float kLitRed = 0.44f;
+  int inShadow = 0, lit = 0, wrong = 0, shadowsDrawnWithout = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const Ray ray = pixelRay(view, x, y);
+      const auto hit = nearestSphere(ray.origin, ray.direction, 3);
+      if (!hit || dot(hit->normal, light) < 0.25f) continue;
+      // Leave out the outline, where a pixel's footprint spans two surfaces.
+      if (-dot(hit->normal, ray.direction) < 0.2f) continue;
+      const bool expectShadow = nearestSphere(hit->point + hit->normal * 1e-4f, light, 3).has_value();
+      (expectShadow ? inShadow : lit) += 1;
+      wrong += (shadowed.at(x, y, 0) >= kLitRed) == expectShadow ? 1 : 0;
+      if (expectShadow && unshadowed.at(x, y, 0) < kLitRed) ++shadowsDrawnWithout;
+    }
+  }
+  RecordProperty("shadowedPixels", inShadow);
+  RecordProperty("litPixels", lit);
+  RecordProperty("wrongPixels", wrong);
+  EXPECT_GT(inShadow, 150);
+  EXPECT_GT(lit, 500);
+  EXPECT_LE(wrong, (inShadow + lit) * 3 / 100) << wrong << " of " << inShadow + lit << " pixels lit wrongly";
+  EXPECT_LE(shadowsDrawnWithout, inShadow / 20) << "without selfShadow those pixels are lit";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -710,6 +881,20 @@ TEST(RevolutionValidate, RejectsDamagedPackagesNamingTheFault) {
       {"displacement size", [](glb::Package& p) { extensionOf(p)["displacementMap"]["height"] = 32; },
        "displacementMap.bufferView"},
       {"texture", [](glb::Package& p) { p.images[0].erase("bufferView"); }, "not embedded"},
+      {"replica layout", [](glb::Package& p) { extensionOf(p)["replicas"] = {{"layout", "spiral"}, {"count", 3}}; },
+       "replicas.layout is \"spiral\""},
+      {"overlapping copies",
+       [](glb::Package& p) {
+         extensionOf(p)["replicas"] = {{"layout", "grid"}, {"count", {2, 1, 1}}, {"spacing", {1.0, 1.2, 1.2}}};
+       },
+       "replicas.spacing is [1.0,1.2,1.2]"},
+      {"too many copies",
+       [](glb::Package& p) { extensionOf(p)["replicas"] = {{"layout", "grid"}, {"count", {100, 100, 1}}}; },
+       "replicas.count asks for more than 4096"},
+      {"crowded ring",
+       [](glb::Package& p) { extensionOf(p)["replicas"] = {{"layout", "ring"}, {"count", 6}, {"radius", 1.0}}; },
+       "replicas.radius is 1; 6 copies"},
+      {"self shadow", [](glb::Package& p) { extensionOf(p)["selfShadow"] = "yes"; }, "selfShadow must be true or false"},
   };
   for (const Damage& damage : damages) {
     SCOPED_TRACE(damage.name);

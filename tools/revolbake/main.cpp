@@ -56,6 +56,18 @@ int main(int argc, char** argv) {
   std::string position;
   app.add_option("--position", position, "Where the object stands in a scene: X,Y,Z (node translation; axis along +y)")
       ->type_name("X,Y,Z");
+  std::string grid, gridSpacing;
+  app.add_option("--grid", grid, "Copies of the object along x, y and z in one shape box (seed 001 Eq. 9)")
+      ->type_name("NX,NY,NZ");
+  app.add_option("--grid-spacing", gridSpacing,
+                 "Object units between neighbouring copies (default, or 0: the shape box's extent on that axis)")
+      ->type_name("SX,SY,SZ");
+  app.add_option("--mirror", settings.mirror, "Axes of the grid whose odd copies are mirrored, e.g. y (seed 001 Fig. 13)")
+      ->type_name("AXES");
+  app.add_option("--ring", settings.ring, "Copies turned round +y on a ring, instead of a grid")->type_name("N");
+  app.add_option("--ring-radius", settings.ringRadius, "Ring radius (default: the smallest that keeps copies apart)");
+  app.add_flag("!--no-self-shadow", settings.selfShadow,
+               "Do not ask the runtime to march shadow rays toward the light (on by default)");
   app.add_option("--target-error", settings.targetError,
                  "Silhouette mismatch the recorded iteration budget must reach (fraction of rays)")
       ->default_str("0.005");
@@ -68,6 +80,17 @@ int main(int argc, char** argv) {
   return bake::runBaker("revolbake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
     if (projectionOption->count() > 0) settings.projection = projection;
     if (!position.empty()) { BAKE_ASSIGN_OR_RETURN(settings.position, bake::parseTriple(position, "--position")); }
+    if (!grid.empty()) {
+      BAKE_ASSIGN_OR_RETURN(const auto counts, bake::parseTriple(grid, "--grid", "NX,NY,NZ"));
+      for (std::size_t a = 0; a < 3; ++a) {
+        if (counts[a] != std::floor(counts[a]) || counts[a] < 1 || counts[a] > 1e6)
+          return bake::usageError("--grid " + grid + ": the counts must be whole numbers >= 1");
+        settings.grid[a] = int(counts[a]);
+      }
+    }
+    if (!gridSpacing.empty()) {
+      BAKE_ASSIGN_OR_RETURN(settings.gridSpacing, bake::parseTriple(gridSpacing, "--grid-spacing", "SX,SY,SZ"));
+    }
     return {};
   });
 }

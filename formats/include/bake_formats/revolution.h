@@ -44,6 +44,26 @@ inline constexpr float kHitEpsilonTexels = 0.05f;
 // Most proxy bands a package may carry (the shader's uniform array).
 inline constexpr int kMaxProxyBands = 64;
 
+// Replicas (seed 001 Eq. 9: only the fractional part of the hit point's coordinates addresses the
+// maps, so one shape box holds many copies of the object). "replicas" is optional:
+//   {"layout": "grid", "count": [nx, ny, nz], "spacing": [sx, sy, sz], "mirror": [bx, by, bz]}
+//     copy (i, j, k) is the object moved by (i sx, j sy, k sz); a mirrored axis reflects every odd
+//     copy about its box's centre on that axis (the mirror-and-repetition variant, seed 001 Fig. 13);
+//     each spacing is at least the shape box's extent on its axis, so copies never overlap;
+//   {"layout": "ring", "count": n, "radius": R}
+//     copy k is the object moved out to distance R along +x and turned 2 pi k / n about +y; each
+//     copy's solid (r <= the box's rMax) must lie inside its wedge of angle 2 pi / n: R sin(pi / n)
+//     >= rMax.
+inline constexpr const char* kReplicas = "replicas";
+inline constexpr const char* kLayoutGrid = "grid";
+inline constexpr const char* kLayoutRing = "ring";
+inline constexpr int kMaxReplicas = 4096;     // copies in all
+inline constexpr int kMaxReplicasPerAxis = 1024;
+
+// "selfShadow": true marches a second ray from each hit toward the light through the same box (its
+// copies included); a hit on the way puts the point in shadow. Absent: false.
+inline constexpr const char* kSelfShadow = "selfShadow";
+
 // Keys of the material extension that name bufferViews: each of these objects holds one
 // "bufferView" (displacementMap and arcLengthMap are optional).
 inline constexpr const char* kShapeMap = "shapeMap";

@@ -58,6 +58,26 @@ const char* kindName(ProfileKind kind) {
   return "auto";
 }
 
+Status checkReplicaOptions(const Settings& settings) {
+  const int limit = format::revolution::kMaxReplicasPerAxis;
+  for (int count : settings.grid)
+    if (count < 1 || count > limit) return usageError("--grid counts must be within 1 .. " + std::to_string(limit));
+  if (double(settings.grid[0]) * settings.grid[1] * settings.grid[2] > format::revolution::kMaxReplicas)
+    return usageError("--grid asks for more than " + std::to_string(format::revolution::kMaxReplicas) + " copies");
+  for (double spacing : settings.gridSpacing)
+    if (!(spacing >= 0) || !std::isfinite(spacing)) return usageError("--grid-spacing values must be >= 0 (0: the box's extent)");
+  if (settings.mirror.find_first_not_of("xyz") != std::string::npos)
+    return usageError("--mirror takes the axes to mirror, letters among x, y, z (e.g. y), not '" + settings.mirror + "'");
+  if (settings.ring != 0 && (settings.ring < 2 || settings.ring > limit))
+    return usageError("--ring must be within 2 .. " + std::to_string(limit) + " copies");
+  const bool gridAsked = settings.grid != std::array<int, 3>{1, 1, 1};
+  if (settings.ring != 0 && (gridAsked || !settings.mirror.empty()))
+    return usageError("--ring cannot be combined with --grid or --mirror: copies form a grid or a ring");
+  if (!(settings.ringRadius >= 0) || !std::isfinite(settings.ringRadius)) return usageError("--ring-radius must be >= 0");
+  if (settings.ringRadius > 0 && settings.ring == 0) return usageError("--ring-radius needs --ring");
+  return {};
+}
+
 Status checkOptions(const Settings& settings) {
   BAKE_RETURN_IF_ERROR(checkWrittenExtension(settings.output, "-o", ".glb", "the package"));
   if (settings.resolution < 16 || settings.resolution > 16384)
@@ -69,6 +89,7 @@ Status checkOptions(const Settings& settings) {
   if (!(settings.overRelaxation >= 1 && settings.overRelaxation < 2)) return usageError("--over-relaxation must be within [1, 2)");
   if (!(settings.heightScale > 0) || !std::isfinite(settings.heightScale)) return usageError("--height-scale must be > 0");
   if (settings.imageTexelSize < 0 || !std::isfinite(settings.imageTexelSize)) return usageError("--texel-size must be >= 0");
+  BAKE_RETURN_IF_ERROR(checkReplicaOptions(settings));
   for (const auto& [option, value] : {std::pair{"--repeat-u", settings.repeatU}, std::pair{"--repeat-v", settings.repeatV}}) {
     if (value < 0) {
       char text[64];
@@ -92,6 +113,12 @@ json optionsOf(const Settings& settings) {
           {"overRelaxation", settings.overRelaxation},
           {"texelSize", settings.imageTexelSize},
           {"position", settings.position},
+          {"grid", settings.grid},
+          {"gridSpacing", settings.gridSpacing},
+          {"mirror", settings.mirror},
+          {"ring", settings.ring},
+          {"ringRadius", settings.ringRadius},
+          {"selfShadow", settings.selfShadow},
           {"threads", settings.common.threads}};
 }
 

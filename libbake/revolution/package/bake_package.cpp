@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "bake/core/atomic_file.h"
+#include "bake/core/vector_text.h"
 #include "bake_formats/revolution.h"
 #include "revolution/bake/bake_stages.h"
 #include "revolution/input/profile_geometry.h"
@@ -26,7 +27,7 @@ namespace fmt = format::revolution;
 constexpr int kFallbackSteps = 48;
 constexpr std::size_t kFallbackMaxEdges = 4096;
 
-std::vector<std::pair<Point2, Point2>> fallbackEdges(const Profile& profile, double tolerance) {
+std::vector<std::pair<Point2, Point2>> fallbackEdges(const Profile& profile, double tolerance, std::size_t maxEdges) {
   std::vector<std::pair<Point2, Point2>> edges;
   std::vector<Point2> points;
   for (const Contour& contour : profile.contours)
@@ -38,8 +39,8 @@ std::vector<std::pair<Point2, Point2>> fallbackEdges(const Profile& profile, dou
         if (points[k].r != points[k + 1].r || points[k].h != points[k + 1].h) edges.push_back({points[k], points[k + 1]});
     }
   // A profile of very many pieces: every n-th edge's ends joined (only a preview).
-  if (edges.size() > kFallbackMaxEdges) {
-    const std::size_t stride = (edges.size() + kFallbackMaxEdges - 1) / kFallbackMaxEdges;
+  if (edges.size() > maxEdges) {
+    const std::size_t stride = (edges.size() + maxEdges - 1) / maxEdges;
     std::vector<std::pair<Point2, Point2>> coarse;
     for (std::size_t k = 0; k < edges.size(); k += stride)
       coarse.push_back({edges[k].first, edges[std::min(edges.size(), k + stride) - 1].second});
@@ -48,12 +49,12 @@ std::vector<std::pair<Point2, Point2>> fallbackEdges(const Profile& profile, dou
   return edges;
 }
 
-glb::Mesh revolvedFallback(const Profile& profile, const ShapeGrid& grid, const double repeat[2]) {
+glb::Mesh revolvedFallback(const Profile& profile, const ShapeGrid& grid, const double repeat[2], std::size_t maxEdges) {
   const double hMax = grid.hMin + grid.height * grid.texelSize;
   const double extent = std::max(grid.width, grid.height) * grid.texelSize;
   std::vector<float> positions, normals, texcoords;
   std::vector<std::uint32_t> indices;
-  for (const auto& [a, b] : fallbackEdges(profile, extent / 200)) {
+  for (const auto& [a, b] : fallbackEdges(profile, extent / 200, maxEdges)) {
     const double length = std::hypot(b.r - a.r, b.h - a.h);
     Point2 normal{(b.h - a.h) / length, -(b.r - a.r) / length};
     const Point2 mid{0.5 * (a.r + b.r), 0.5 * (a.h + b.h)};
@@ -91,6 +92,128 @@ glb::Mesh revolvedFallback(const Profile& profile, const ShapeGrid& grid, const 
   mesh.name = "revolved preview";
   mesh.primitives.push_back(std::move(primitive));
   return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Replicas (formats/revolution.md, "Replicas")
+
+// Where copy `index` puts a point of the one object: a mirror about the box's centre on the mirrored
+// axes of odd copies, then the copy's offset (grid); the ring radius along +x, then a turn about +y
+// (ring).
+struct CopyPlacement {
+  std::array<double, 9> linear{1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major
+  std::array<double, 3> offset{0, 0, 0};
+  bool mirrored = false;
+  std::array<double, 3> apply(const float* p) const {
+    std::array<double, 3> out = offset;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out[std::size_t(r)] += linear[std::size_t(r * 3 + c)] * p[c];
+    return out;
+  }
+  std::array<double, 3> turn(const float* v) const {
+    std::array<double, 3> out{0, 0, 0};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out[std::size_t(r)] += linear[std::size_t(r * 3 + c)] * v[c];
+    return out;
+  }
+};
+
+struct ReplicaLayout {
+  json extension;  // nothing: one object
+  std::vector<CopyPlacement> copies;
+};
+
+Result<ReplicaLayout> replicaLayout(const Settings& settings, const ShapeGrid& grid) {
+  ReplicaLayout layout;
+  const double rMax = grid.width * grid.texelSize;
+  const double extent[3] = {2 * rMax, grid.height * grid.texelSize, 2 * rMax};
+  const double centre[3] = {0, grid.hMin + 0.5 * extent[1], 0};
+  if (settings.ring >= 2) {
+    const double room = std::sin(std::numbers::pi / settings.ring);
+    double radius = settings.ringRadius > 0 ? settings.ringRadius : rMax / room;
+    if (radius * room < rMax * (1 - 1e-9))
+      return invalidInput("--ring-radius " + numberText(settings.ringRadius) + " is too small: " +
+                              std::to_string(settings.ring) + " copies of radius " + numberText(rMax) +
+                              " need at least " + numberText(rMax / room),
+                          {settings.input, ""});
+    radius = std::max(radius, rMax / room);  // rounding of rMax / room must not fail the reader's check
+    layout.extension = {{"layout", format::revolution::kLayoutRing}, {"count", settings.ring}, {"radius", radius}};
+    for (int k = 0; k < settings.ring; ++k) {
+      const double angle = 2 * std::numbers::pi * k / settings.ring, c = std::cos(angle), sn = std::sin(angle);
+      CopyPlacement copy;
+      copy.linear = {c, 0, -sn, 0, 1, 0, sn, 0, c};
+      copy.offset = {radius * c, 0, radius * sn};
+      layout.copies.push_back(copy);
+    }
+    return layout;
+  }
+  if (settings.grid == std::array<int, 3>{1, 1, 1}) {
+    layout.copies.push_back({});
+    return layout;
+  }
+  std::array<double, 3> spacing{};
+  std::array<bool, 3> mirror{};
+  static const char* kAxes = "xyz";
+  for (std::size_t a = 0; a < 3; ++a) {
+    spacing[a] = settings.gridSpacing[a] > 0 ? settings.gridSpacing[a] : extent[a];
+    if (spacing[a] < extent[a] * (1 - 1e-9))
+      return invalidInput(std::string("--grid-spacing ") + kAxes[a] + " " + numberText(spacing[a]) +
+                              " is smaller than the shape box's extent on that axis (" + numberText(extent[a]) +
+                              "): the copies would overlap",
+                          {settings.input, ""});
+    spacing[a] = std::max(spacing[a], extent[a]);
+    mirror[a] = settings.mirror.find(kAxes[a]) != std::string::npos;
+  }
+  layout.extension = {{"layout", format::revolution::kLayoutGrid},
+                      {"count", settings.grid},
+                      {"spacing", spacing},
+                      {"mirror", mirror}};
+  for (int k = 0; k < settings.grid[2]; ++k)
+    for (int j = 0; j < settings.grid[1]; ++j)
+      for (int i = 0; i < settings.grid[0]; ++i) {
+        CopyPlacement copy;
+        const int index[3] = {i, j, k};
+        int flips = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+          const bool flip = mirror[a] && index[a] % 2 == 1;
+          flips += flip ? 1 : 0;
+          copy.linear[a * 4] = flip ? -1 : 1;
+          copy.offset[a] = index[a] * spacing[a] + (flip ? 2 * centre[a] : 0);
+        }
+        copy.mirrored = flips % 2 == 1;
+        layout.copies.push_back(copy);
+      }
+  return layout;
+}
+
+// The preview mesh once per copy (a mirrored copy's triangles wound back).
+void replicatePreview(glb::Mesh& mesh, const std::vector<CopyPlacement>& copies) {
+  if (copies.size() <= 1) return;
+  glb::Primitive& primitive = mesh.primitives[0];
+  const std::vector<float> positions = primitive.attributes[0].toFloats(), normals = primitive.attributes[1].toFloats(),
+                           texcoords = primitive.attributes[2].toFloats();
+  const std::vector<std::uint32_t> indices = primitive.indices;
+  const std::size_t vertices = positions.size() / 3;
+  std::vector<float> p, n, t;
+  std::vector<std::uint32_t> triangles;
+  for (const CopyPlacement& copy : copies) {
+    const std::uint32_t base = std::uint32_t(p.size() / 3);
+    for (std::size_t v = 0; v < vertices; ++v) {
+      for (double x : copy.apply(&positions[v * 3])) p.push_back(float(x));
+      for (double x : copy.turn(&normals[v * 3])) n.push_back(float(x));
+    }
+    t.insert(t.end(), texcoords.begin(), texcoords.end());
+    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+      triangles.push_back(base + indices[i]);
+      triangles.push_back(base + indices[copy.mirrored ? i + 2 : i + 1]);
+      triangles.push_back(base + indices[copy.mirrored ? i + 1 : i + 2]);
+    }
+  }
+  primitive.attributes.clear();
+  primitive.attributes.push_back(glb::Attribute::fromFloats("POSITION", 3, p));
+  primitive.attributes.push_back(glb::Attribute::fromFloats("NORMAL", 3, n));
+  primitive.attributes.push_back(glb::Attribute::fromFloats("TEXCOORD_0", 2, t));
+  primitive.indices = std::move(triangles);
 }
 
 json projectionJson(const BakeState& state) {
@@ -182,6 +305,9 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
     extension[fmt::kArcLengthMap] = {{fmt::kBufferView, package.blobs.size()}};
     package.blobs.push_back({state.arcLengthMap, 16});
   }
+  BAKE_ASSIGN_OR_RETURN(const ReplicaLayout replicas, replicaLayout(settings, grid));
+  if (!replicas.extension.is_null()) extension[fmt::kReplicas] = replicas.extension;
+  extension[fmt::kSelfShadow] = settings.selfShadow;
 
   json material = {{"name", "revolution"},
                    {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}},
@@ -200,7 +326,10 @@ Result<glb::Package> buildPackage(const Settings& settings, const BakeState& sta
   }
   package.materials.push_back(material);
 
-  package.meshes.push_back(revolvedFallback(state.profile, grid, state.repeat));
+  // The preview's edges shared among the copies, so many copies do not make a huge preview.
+  const std::size_t edgeBudget = std::max<std::size_t>(64, kFallbackMaxEdges / replicas.copies.size());
+  package.meshes.push_back(revolvedFallback(state.profile, grid, state.repeat, edgeBudget));
+  replicatePreview(package.meshes.back(), replicas.copies);
   glb::Node node;
   node.name = std::filesystem::path(settings.input).stem().string();
   node.mesh = 0;

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
+#include "bake/core/vector_text.h"
 #include "core/json_keys.h"
 #include "revolution/package/package_read.h"
 
@@ -224,7 +226,122 @@ Status readProjection(const Fields& root, const glb::Package& package, Revolutio
   return {};
 }
 
+Result<std::array<double, 3>> triple(const Fields& in, const char* key, double lo, double hi) {
+  const nlohmann::json& v = in.at(key);
+  std::array<double, 3> out{};
+  bool ok = v.is_array() && v.size() == 3;
+  for (std::size_t k = 0; ok && k < 3; ++k) {
+    ok = v[k].is_number() && std::isfinite(v[k].get<double>()) && v[k].get<double>() >= lo && v[k].get<double>() <= hi;
+    if (ok) out[k] = v[k].get<double>();
+  }
+  if (!ok) return in.error(key, "must be three numbers in [" + numberText(lo) + ", " + numberText(hi) + "], not " + v.dump());
+  return out;
+}
+
+// The grid of copies: counts, spacings no smaller than the box (copies never overlap, so the march's
+// cells hold one copy each), mirrored axes.
+Status readGridReplicas(const Fields& in, RevolutionParams& params) {
+  RevolutionParams::Replicas& r = params.replicas;
+  r.layout = RevolutionParams::Replicas::Layout::Grid;
+  if (!in.has("count")) return in.error("count", "is missing");
+  BAKE_ASSIGN_OR_RETURN(const auto count, triple(in, "count", 1, fmt::kMaxReplicasPerAxis));
+  const std::array<float, 3> extent = {2 * params.shapeMap.rMax(), params.shapeMap.hMax() - params.shapeMap.hMin,
+                                       2 * params.shapeMap.rMax()};
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (count[a] != std::floor(count[a])) return in.error("count", "must hold whole numbers, not " + in.at("count").dump());
+    r.count[a] = int(count[a]);
+    r.spacing[a] = extent[a];
+  }
+  if (double(r.count[0]) * r.count[1] * r.count[2] > fmt::kMaxReplicas)
+    return in.error("count", "asks for more than " + std::to_string(fmt::kMaxReplicas) + " copies");
+  if (in.has("spacing")) {
+    BAKE_ASSIGN_OR_RETURN(const auto spacing, triple(in, "spacing", 0, 1e30));
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (spacing[a] < double(extent[a]) * (1 - 1e-6))
+        return in.error("spacing", "is " + in.at("spacing").dump() + "; each must be at least the shape box's extent on its axis (" +
+                                       numberText(extent[0]) + ", " + numberText(extent[1]) + ", " +
+                                       numberText(extent[2]) + ") so copies do not overlap");
+      r.spacing[a] = std::max(float(spacing[a]), extent[a]);
+    }
+  }
+  if (in.has("mirror")) {
+    const nlohmann::json& m = in.at("mirror");
+    if (!m.is_array() || m.size() != 3 || !m[0].is_boolean() || !m[1].is_boolean() || !m[2].is_boolean())
+      return in.error("mirror", "must be three booleans (x, y, z), not " + m.dump());
+    for (std::size_t a = 0; a < 3; ++a) r.mirror[a] = m[a].get<bool>();
+  }
+  return {};
+}
+
+// The ring of copies: each copy's solid inside its wedge.
+Status readRingReplicas(const Fields& in, RevolutionParams& params) {
+  RevolutionParams::Replicas& r = params.replicas;
+  r.layout = RevolutionParams::Replicas::Layout::Ring;
+  BAKE_ASSIGN_OR_RETURN(r.ringCount, in.integer("count", 2, fmt::kMaxReplicasPerAxis));
+  BAKE_ASSIGN_OR_RETURN(const double radius, in.positive("radius"));
+  const double rMax = params.shapeMap.rMax();
+  const double room = radius * std::sin(std::numbers::pi / r.ringCount);
+  if (room < rMax * (1 - 1e-6))
+    return in.error("radius", "is " + numberText(radius) + "; " + std::to_string(r.ringCount) +
+                                  " copies of radius " + numberText(rMax) + " need a ring radius of at least " +
+                                  numberText(rMax / std::sin(std::numbers::pi / r.ringCount)));
+  r.ringRadius = float(radius);
+  return {};
+}
+
+Status readReplicas(const Fields& root, RevolutionParams& params) {
+  if (root.has(fmt::kSelfShadow)) {
+    if (!root.at(fmt::kSelfShadow).is_boolean()) return root.error(fmt::kSelfShadow, "must be true or false");
+    params.selfShadow = root.at(fmt::kSelfShadow).get<bool>();
+  }
+  if (!root.has(fmt::kReplicas)) return {};
+  BAKE_ASSIGN_OR_RETURN(const Fields in, root.object(fmt::kReplicas));
+  BAKE_ASSIGN_OR_RETURN(const std::string layout, in.string("layout"));
+  if (layout == fmt::kLayoutGrid) return readGridReplicas(in, params);
+  if (layout == fmt::kLayoutRing) return readRingReplicas(in, params);
+  return in.error("layout", "is \"" + layout + "\"; known: grid, ring");
+}
+
 }  // namespace
+
+int RevolutionParams::Replicas::total() const {
+  switch (layout) {
+    case Layout::One: return 1;
+    case Layout::Grid: return count[0] * count[1] * count[2];
+    case Layout::Ring: return ringCount;
+  }
+  return 1;
+}
+
+int RevolutionParams::Replicas::mostCellsCrossed() const {
+  switch (layout) {
+    case Layout::One: return 1;
+    case Layout::Grid: return count[0] + count[1] + count[2] - 2;
+    case Layout::Ring: return ringCount + 1;
+  }
+  return 1;
+}
+
+std::array<float, 3> RevolutionParams::boxMin() const {
+  const float r = shapeMap.rMax();
+  if (replicas.layout == Replicas::Layout::Ring) {
+    const float outer = replicas.ringRadius + r;
+    return {-outer, shapeMap.hMin, -outer};
+  }
+  return {-r, shapeMap.hMin, -r};
+}
+
+std::array<float, 3> RevolutionParams::boxMax() const {
+  const float r = shapeMap.rMax();
+  if (replicas.layout == Replicas::Layout::Ring) {
+    const float outer = replicas.ringRadius + r;
+    return {outer, shapeMap.hMax(), outer};
+  }
+  std::array<float, 3> hi{r, shapeMap.hMax(), r};
+  if (replicas.layout == Replicas::Layout::Grid)
+    for (std::size_t a = 0; a < 3; ++a) hi[a] += float(replicas.count[a] - 1) * replicas.spacing[a];
+  return hi;
+}
 
 Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const glb::Package& package,
                                          const Location& where) {
@@ -242,6 +359,7 @@ Result<RevolutionParams> parseRevolution(const nlohmann::json& extension, const 
   BAKE_RETURN_IF_ERROR(readBands(root, params));
   BAKE_RETURN_IF_ERROR(readDisplacement(root, package, params));
   BAKE_RETURN_IF_ERROR(readProjection(root, package, params));
+  BAKE_RETURN_IF_ERROR(readReplicas(root, params));
   return params;
 }
 

@@ -47,6 +47,23 @@ struct RevolutionParams {
   std::array<float, 2> repeat{1, 1};
   float sphereCentreH = 0;
   std::optional<int> arcLengthBufferView;
+  // Copies of the object in one box (seed 001 Eq. 9; formats/revolution.md, "Replicas").
+  struct Replicas {
+    enum class Layout { One, Grid, Ring } layout = Layout::One;
+    std::array<int, 3> count{1, 1, 1};  // grid
+    std::array<float, 3> spacing{0, 0, 0};
+    std::array<bool, 3> mirror{false, false, false};
+    int ringCount = 1;
+    float ringRadius = 0;
+    int total() const;
+    // Most cells one straight ray passes through (the march's outer loop): a line crosses each
+    // grid plane, or each ring wedge's boundary half-plane, at most once.
+    int mostCellsCrossed() const;
+  } replicas;
+  bool selfShadow = false;
+  // The object-space box that holds every copy (the one object's shape box without replicas).
+  std::array<float, 3> boxMin() const;
+  std::array<float, 3> boxMax() const;
 };
 
 // Reads a material's BAKE_revolution object and checks it against the package (bufferViews exist and

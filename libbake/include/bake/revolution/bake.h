@@ -38,6 +38,14 @@ struct Settings {
   double overRelaxation = format::revolution::kDefaultOverRelaxation;
   std::string baseColorTexture;  // optional PNG embedded as the material's base colour
   std::array<double, 3> position{0, 0, 0};  // node translation (where the object stands in a scene)
+  // Copies of the object in one shape box (seed 001 Eq. 9, Fig. 13; formats/revolution.md,
+  // "Replicas"): a grid, or a ring round +y; not both.
+  std::array<int, 3> grid{1, 1, 1};            // copies along x, y, z
+  std::array<double, 3> gridSpacing{0, 0, 0};  // object units; 0: the shape box's extent on that axis
+  std::string mirror;                          // axes among "xyz" whose odd copies are reflected
+  int ring = 0;                                // copies round +y (0: no ring)
+  double ringRadius = 0;                       // 0: the smallest that keeps the copies apart
+  bool selfShadow = true;                      // the runtime marches a shadow ray toward the light
   CommonOptions common;  // --report, --depfile, --threads, --quiet
 };
 
