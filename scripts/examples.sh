@@ -34,12 +34,13 @@ for preset in isolines sand-water moss-granite paint-metal-rust water-lava opaci
 done
 
 # Revolution mapping (pipelines/revolution): a vase, a ring and a plate baked from their profiles with
-# textures made by bakeshape, each rendered alone and the three together.
-for object in vase ring plate; do
+# textures made by bakeshape, a row of balusters and a ring of self-shadowing knobs (copies of one
+# profile in one shape box), each rendered alone and all together.
+for object in vase ring plate balusters knobs; do
   "$bin/bakeplay/bakeplay" render -q "$out/$object.glb" -o "$out/revolution-$object.png"
 done
-"$bin/bakeplay/bakeplay" render -q "$out/vase.glb" "$out/ring.glb" "$out/plate.glb" --size 1024x512 \
-  -o "$out/revolution-scene.png"
+"$bin/bakeplay/bakeplay" render -q "$out/vase.glb" "$out/ring.glb" "$out/plate.glb" "$out/balusters.glb" \
+  "$out/knobs.glb" --size 1024x512 --camera 0,1.6,6.5:0,0.4,0 -o "$out/revolution-scene.png"
 
 # Hatching (pipelines/hatching): tonal art maps by tambake on a torus and the pretzel, drawn together
 # and timed beside standard Blinn-Phong shading of the same scene.

@@ -97,7 +97,12 @@ TEST(PipePlan, RevolutionLeavesOutTheUnreadDisplacementAndTheTextureOnlyItUsed) 
   EXPECT_FALSE(hasArgument(stepOf(plan, "revolbake:ring"), "--height-scale"));
   EXPECT_EQ(argumentAfter(stepOf(plan, "revolbake:vase"), "--height-map"), (kOut / "hammered.png").string());
   for (const Step& step : plan.steps) EXPECT_NE(step.id, "bakeshape:knurl.png");
-  EXPECT_EQ(plan.steps.size(), 6u);  // glaze, bands, hammered, three bakes
+  EXPECT_EQ(plan.steps.size(), 8u);  // glaze, bands, hammered, five bakes
+  // Copies of one profile: the list options as revolbake reads them.
+  EXPECT_EQ(argumentAfter(stepOf(plan, "revolbake:balusters"), "--grid"), "5,1,1");
+  EXPECT_EQ(argumentAfter(stepOf(plan, "revolbake:balusters"), "--grid-spacing"), "0.55,0,0");
+  EXPECT_EQ(argumentAfter(stepOf(plan, "revolbake:knobs"), "--ring"), "8");
+  EXPECT_FALSE(hasArgument(stepOf(plan, "revolbake:knobs"), "--no-self-shadow"));
 }
 
 TEST(PipePlan, HatchingLeavesOutThresholdsAndTheLevelNoViewSamples) {

@@ -972,5 +972,47 @@ TEST(RevolutionBaked, VaseSilhouetteMatchesItsProfileWithinTheReportedError) {
   EXPECT_LE(m.fraction(), reported + 0.005) << m.describe() << "; the bake reported " << reported;
 }
 
+// `bakeplay validate --golden` on the example's row of balusters as revolbake writes it (five copies
+// of one profile in one box, self-shadowing on): the package passes, and its first reference view is
+// the golden image (tests/golden/runtime/revolution-balusters.v1.png).
+TEST(RevolutionBaked, BalusterRowValidatesAgainstItsGoldenImage) {
+  const fs::path dir = test::freshTempDir("baked_balusters");
+  revolution::Settings settings;
+  settings.input = (test::sourceDir() / "pipelines" / "revolution" / "baluster.json").string();
+  settings.output = (dir / "balusters.glb").string();
+  settings.resolution = 512;
+  settings.grid = {5, 1, 1};
+  settings.gridSpacing = {0.55, 0, 0};
+  settings.common.quiet = true;
+  Diagnostics quiet("revolbake", true);
+  const Status baked = revolution::run(settings, quiet);
+  ASSERT_TRUE(baked.isOk()) << baked.describe();
+  auto package = glb::read(settings.output);
+  ASSERT_TRUE(package.isOk()) << package.status().describe();
+  const nlohmann::json& extension = package->materials[0]["extensions"][format::revolution::kExtension];
+  EXPECT_EQ(extension["replicas"]["count"], nlohmann::json({5, 1, 1}));
+  EXPECT_EQ(extension["selfShadow"], true);
+
+  ValidateSettings validate;
+  validate.packages = {settings.output};
+  validate.size = 128;
+  validate.viewsDirectory = (dir / "views").string();
+  validate.common.quiet = true;
+  const std::string golden = "runtime/revolution-balusters.v1.png";
+  if (!test::updatingGoldens()) validate.goldens = {test::goldenPath(golden).string()};
+  Diagnostics diagnostics("bakeplay", true);
+  std::FILE* out = std::tmpfile();
+  const Status status = runValidate(validate, diagnostics, out);
+  std::fclose(out);
+  EXPECT_TRUE(status.isOk()) << status.describe();
+  std::vector<fs::path> views;
+  for (const auto& entry : fs::directory_iterator(dir / "views")) views.push_back(entry.path());
+  std::sort(views.begin(), views.end());
+  ASSERT_FALSE(views.empty());
+  Result<Image> first = readImage(views.front());
+  ASSERT_TRUE(first.isOk()) << first.status().describe();
+  EXPECT_TRUE(test::matchesGoldenImage(*first, golden)) << views.front();
+}
+
 }  // namespace
 }  // namespace bake::play

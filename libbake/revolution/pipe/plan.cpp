@@ -22,6 +22,26 @@ Status readRevolutionObject(const pipe::SceneReader& r, const json& node, const 
   return Status::ok();
 }
 
+// A list option ([3, 1, 1]) as the comma-separated value revolbake reads ("3,1,1").
+void listOption(pipe::Step& step, const json& options, const char* key, const char* flag) {
+  if (!options.contains(key)) return;
+  const json& value = options[key];
+  if (!value.is_array()) return pipe::ObjectPlanner::option(step, options, key, flag);
+  std::string text;
+  for (const json& item : value) text += (text.empty() ? "" : ",") + (item.is_string() ? item.get<std::string>() : item.dump());
+  step.arguments.insert(step.arguments.end(), {flag, text});
+}
+
+// Copies of the object (seed 001 Eq. 9) and the self-shadow switch.
+void replicaOptions(pipe::Step& step, const json& options) {
+  listOption(step, options, "grid", "--grid");
+  listOption(step, options, "gridSpacing", "--grid-spacing");
+  pipe::ObjectPlanner::option(step, options, "mirror", "--mirror");
+  pipe::ObjectPlanner::option(step, options, "ring", "--ring");
+  pipe::ObjectPlanner::option(step, options, "ringRadius", "--ring-radius");
+  if (options.contains("selfShadow") && options["selfShadow"] == false) step.arguments.push_back("--no-self-shadow");
+}
+
 Status planRevolution(pipe::ObjectPlanner& p, const pipe::Object& object, pipe::Step& step) {
   const pipe::Material& material = p.scene.materialOf(object);
   p.addInput(step, p.resolve(object.input));
@@ -42,6 +62,7 @@ Status planRevolution(pipe::ObjectPlanner& p, const pipe::Object& object, pipe::
   pipe::ObjectPlanner::option(step, object.options, "resolution", "--resolution");
   pipe::ObjectPlanner::option(step, object.options, "encoding", "--encoding");
   pipe::ObjectPlanner::option(step, object.options, "projection", "--projection");
+  replicaOptions(step, object.options);
   step.outputs.push_back(p.baked(object, ".glb"));
   return {};
 }
@@ -50,7 +71,8 @@ Status planRevolution(pipe::ObjectPlanner& p, const pipe::Object& object, pipe::
 
 const pipe::TechniqueHooks& pipeHooks() {
   static const pipe::TechniqueHooks hooks{
-      .optionKeys = {"resolution", "encoding", "heightScale", "projection"},
+      .optionKeys = {"resolution", "encoding", "heightScale", "projection", "grid", "gridSpacing", "mirror", "ring",
+                     "ringRadius", "selfShadow"},
       .objectKeys = {"textures"},
       .readObject = readRevolutionObject,
       .reads = {{"baseColor", &pipe::Material::readsBaseColor}, {"displacement", &pipe::Material::readsDisplacement}},
