@@ -47,6 +47,10 @@ done
 "$bin/bakeplay/bakeplay" render -q "$out/torus-hatched.glb" "$out/pretzel-stippled.glb" --size 1024x512 \
   --camera -0.1,1.7,6.9:-0.1,0,0 --light -0.5,0.7,0.6 --frames 20 --compare-standard \
   --report "$out/hatching-scene.report.json" -o "$out/hatching-scene.png"
+# The torus's tones by its threshold texture (fine tone control, Webb et al. 2002): strokes drawn
+# whole rather than two layers blended.
+"$bin/bakeplay/bakeplay" render -q "$out/torus-hatched.glb" --size 512x512 --camera -2.4,1.2,3.2:-2.4,0,0 \
+  --light -0.5,0.7,0.6 --hatching-tone threshold -o "$out/hatching-threshold.png"
 
 # Grooves (pipelines/grooves): floor tiles with grout, a vinyl record and an engraved plate baked by
 # groovebake into groove grids and drawn with the seed's groove shading; the plate is timed beside

@@ -1,6 +1,7 @@
 #include "play/render.h"
 
 #include <GL/glcorearb.h>
+#include <bake_formats/tam.h>
 #include <bake_formats/paintstrokes.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "core/path.h"
 #include "gl/context.h"
 #include "render/geodesic.h"
+#include "render/hatching.h"
 #include "render/paintstrokes.h"
 #include "render/renderer.h"
 #include "render/standard.h"
@@ -178,6 +180,10 @@ Result<RendererRegistry> renderersFor(const ViewSettings& view) {
                         makePaintstrokeOptions(view.strokeQuality, view.strokeTolerance, view.strokeTubes));
   RendererRegistry registry = RendererRegistry::builtIn();
   registry.add(format::paintstrokes::kExtension, [strokes] { return std::make_unique<PaintstrokesRenderer>(strokes); });
+  if (view.hatchingTone != "blend" && view.hatchingTone != "threshold")
+    return usageError("--hatching-tone must be blend or threshold, not '" + view.hatchingTone + "'");
+  const HatchingTone tone = view.hatchingTone == "threshold" ? HatchingTone::Threshold : HatchingTone::Blend;
+  registry.add(format::tam::kExtension, [tone] { return std::make_unique<HatchingRenderer>(tone); });
   return registry;
 }
 
@@ -218,7 +224,8 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"time", settings.view.time},
                                {"strokeQuality", settings.view.strokeQuality},
                                {"strokeTolerance", settings.view.strokeTolerance},
-                               {"strokeTubes", settings.view.strokeTubes}});
+                               {"strokeTubes", settings.view.strokeTubes},
+                               {"hatchingTone", settings.view.hatchingTone}});
   return session.finish(renderScene(settings, session));
 }
 

@@ -31,6 +31,9 @@ struct ViewSettings {
   int strokeQuality = 1;
   double strokeTolerance = 0.5;
   std::string strokeTubes;
+  // Hatching: "blend" (the two nearest TAM layers, seed 004) or "threshold" (Webb et al. 2002 fine
+  // tone control by the package's threshold texture).
+  std::string hatchingTone = "blend";
 };
 
 struct RenderSettings {

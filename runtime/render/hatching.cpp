@@ -21,7 +21,10 @@ namespace {
 namespace fmt = format::tam;
 
 constexpr int kPositionLocation = 0;
-constexpr GLuint kTamUnit = 0;
+constexpr GLuint kTamUnit = 0, kThresholdUnit = 1;
+// Webb et al. 2002: the darkness over which a texel goes from paper to ink around its threshold
+// (a little more than one 8-bit step), so the tone changes continuously as the light moves.
+constexpr float kThresholdSoftness = 0.02f;
 
 GLuint makeBuffer(const void* data, std::size_t bytes) {
   GLuint buffer = 0;
@@ -41,6 +44,24 @@ GLuint uploadTam(const ktx2::Texture& tam) {
   for (std::uint32_t level = 0; level < tam.levels.size(); ++level) {
     glTextureSubImage3D(texture, GLint(level), 0, 0, 0, GLsizei(tam.levelWidth(level)), GLsizei(tam.levelHeight(level)),
                         GLsizei(tam.layers), rgba ? GL_RGBA : GL_RED, GL_UNSIGNED_BYTE, tam.levels[level].data());
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return texture;
+}
+
+// The threshold texture: one channel, every level, trilinear and repeating like the TAM.
+GLuint uploadThreshold(const ktx2::Texture& threshold) {
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, GLsizei(threshold.levels.size()), GL_R8, GLsizei(threshold.width), GLsizei(threshold.height));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (std::uint32_t level = 0; level < threshold.levels.size(); ++level) {
+    glTextureSubImage2D(texture, GLint(level), 0, 0, GLsizei(threshold.levelWidth(level)),
+                        GLsizei(threshold.levelHeight(level)), GL_RED, GL_UNSIGNED_BYTE, threshold.levels[level].data());
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -132,12 +153,19 @@ Status HatchingRenderer::prepare(const Scene& scene, const std::vector<std::size
       for (const auto& level : item.params.tam.levels) bytes_ += level.size();
     }
     item.params.tam.levels.clear();  // on the GPU now
+    if (tone_ == HatchingTone::Threshold && item.params.threshold) {
+      item.thresholdTexture = uploadThreshold(*item.params.threshold);
+      textures_.push_back(item.thresholdTexture);
+      for (const auto& level : item.params.threshold->levels) bytes_ += level.size();
+    }
+    item.params.threshold.reset();
 
     gl::Variant variant{{"hatching/hatching.vert", "hatching/hatching.frag", "hatching/hatching.geom", "", ""}, {}};
     variant.defines.push_back("MAX_TONES " + std::to_string(fmt::kMaxTones));
     variant.defines.push_back("MIN_BLEND_COSINE " + floatText(fmt::kMinBlendCosine));
     if (item.params.tam.format == ktx2::Format::RGBA8) variant.defines.push_back("TAM_RGBA");
     if (item.params.orientation == HatchingOrientation::AcrossLight) variant.defines.push_back("ACROSS_LIGHT");
+    if (item.thresholdTexture) variant.defines.push_back("THRESHOLD_TONE");
     BAKE_ASSIGN_OR_RETURN(item.program, shaders.program(variant));
     items_.push_back(std::move(item));
   }
@@ -172,10 +200,16 @@ void HatchingRenderer::draw(const FrameContext& frame) {
     glProgramUniform3fv(program, glGetUniformLocation(program, "uBaseColor"), 1, p.baseColor.data());
     glProgramUniform1i(program, glGetUniformLocation(program, "uTam"), GLint(kTamUnit));
     glBindTextureUnit(kTamUnit, item.tamTexture);
+    if (item.thresholdTexture) {
+      glProgramUniform1i(program, glGetUniformLocation(program, "uThreshold"), GLint(kThresholdUnit));
+      glProgramUniform1f(program, glGetUniformLocation(program, "uThresholdSoftness"), kThresholdSoftness);
+      glBindTextureUnit(kThresholdUnit, item.thresholdTexture);
+    }
     glBindVertexArray(item.vao);
     glDrawElements(GL_TRIANGLES_ADJACENCY, item.indexCount, GL_UNSIGNED_INT, nullptr);
   }
   glBindTextureUnit(kTamUnit, 0);
+  glBindTextureUnit(kThresholdUnit, 0);
   glBindVertexArray(0);
 }
 

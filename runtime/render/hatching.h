@@ -52,9 +52,14 @@ using hatching::checkHatchingPackage;
 // ---------------------------------------------------------------------------------------------
 // hatching.cpp
 
+// How a tone between the TAM's layers is drawn: the seed's blend of the two nearest layers, or Webb
+// et al. 2002's fine tone control by the package's threshold texture (a package without one draws
+// the blend).
+enum class HatchingTone { Blend, Threshold };
+
 class HatchingRenderer : public TechniqueRenderer {
  public:
-  HatchingRenderer() = default;
+  explicit HatchingRenderer(HatchingTone tone = HatchingTone::Blend) : tone_(tone) {}
   HatchingRenderer(const HatchingRenderer&) = delete;
   HatchingRenderer& operator=(const HatchingRenderer&) = delete;
   ~HatchingRenderer() override;
@@ -70,9 +75,11 @@ class HatchingRenderer : public TechniqueRenderer {
     int indexCount = 0;
     unsigned program = 0;
     unsigned tamTexture = 0;
+    unsigned thresholdTexture = 0;  // 0: the two-layer blend
     Mat4 world;
     HatchingParams params;  // tam levels released after upload
   };
+  HatchingTone tone_;
   std::vector<Item> items_;
   std::vector<unsigned> buffers_, vaos_, textures_;  // every GL object made, deleted with the renderer
   std::size_t bytes_ = 0;

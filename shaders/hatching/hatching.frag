@@ -11,6 +11,10 @@
 //
 // TAM texels are paper brightness as displayed (sRGB-encoded 8-bit values); they are decoded to linear
 // so the written frame reproduces the TAM's grey levels. TAM_RGBA: RGB holds the inked colour.
+// THRESHOLD_TONE: Webb et al. 2002's fine tone control instead of the two-layer blend: a texel of the
+// threshold texture holds the darkness at which it turns to ink (graded by the order the strokes were
+// placed); the fragment shows the darkest layer's ink where the darkness asked for has reached the
+// threshold, paper elsewhere, over a ramp of uThresholdSoftness. No blended, half-faded strokes.
 
 in vec4 gCoordsCA;
 in vec4 gCoordsBG;
@@ -44,6 +48,48 @@ vec3 layerColour(vec2 st, vec2 dx, vec2 dy, int layer) {
 #endif
 }
 
+#ifdef THRESHOLD_TONE
+uniform sampler2D uThreshold;  // R8: darkness at which the texel turns to ink; the TAM's size and mips
+uniform float uThresholdSoftness;
+
+// Thresholded first, filtered after: each of the four texels around st at one mip level is ink or
+// paper by its own threshold (the darkest layer's ink, or white), and those colours are weighted
+// bilinearly. Filtering the thresholds instead would mix a thin stroke's low thresholds with its
+// paper neighbours' 1.0 and drop its edges (measured: half the tone missing at the first tone).
+vec3 thresholdColourAtLevel(vec2 st, float d, int level) {
+  ivec2 size = textureSize(uThreshold, level);
+  vec2 p = st * vec2(size) - 0.5;
+  ivec2 base = ivec2(floor(p));
+  vec2 f = p - vec2(base);
+  vec3 colour = vec3(0.0);
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 c = ((base + o) % size + size) % size;  // the TAM repeats
+    float w = mix(1.0 - f.x, f.x, float(o.x)) * mix(1.0 - f.y, f.y, float(o.y));
+    float ink = clamp((d - texelFetch(uThreshold, c, level).r) / uThresholdSoftness + 0.5, 0.0, 1.0);
+    vec4 texel = texelFetch(uTam, ivec3(c, uToneCount - 1), level);
+#ifdef TAM_RGBA
+    vec3 darkest = texel.rgb;
+#else
+    vec3 darkest = texel.rrr;
+#endif
+    colour += w * mix(vec3(1.0), darkest, ink);
+  }
+  return colour;
+}
+
+// Trilinear: the level of detail from the coordinates' screen derivatives, as the sampler would.
+vec3 toneColour(vec2 st, vec2 dx, vec2 dy, float d) {
+  vec2 size = vec2(textureSize(uThreshold, 0));
+  float rho = max(length(dx * size), length(dy * size));
+  float lastLevel = float(textureQueryLevels(uThreshold) - 1);
+  float lod = clamp(log2(max(rho, 1e-8)), 0.0, lastLevel);
+  int level = int(floor(lod));
+  vec3 fine = thresholdColourAtLevel(st, d, level);
+  if (lod == float(level)) return fine;
+  return mix(fine, thresholdColourAtLevel(st, d, min(level + 1, int(lastLevel))), lod - float(level));
+}
+#else
 // The colour of darkness d at coordinates st: between the two tones around d.
 vec3 toneColour(vec2 st, vec2 dx, vec2 dy, float d) {
   int above = 0;  // first layer darker than d
@@ -54,6 +100,7 @@ vec3 toneColour(vec2 st, vec2 dx, vec2 dy, float d) {
   vec3 high = layerColour(st, dx, dy, above);
   return mix(low, high, clamp((d - lowTone) / (uTones[above] - lowTone), 0.0, 1.0));
 }
+#endif
 
 // The light reaching the fragment: its unit direction, and the spot's factor (1 for other lights).
 float spotFactor(vec3 l) {

@@ -237,24 +237,47 @@ TEST(BuildTam, ColouredInkKeepsAColourImage) {
   EXPECT_LE(measureQuality(tam).maxToneErrorOverTolerance, 1.0);
 }
 
-TEST(BuildTam, ThresholdTextureHoldsTheFirstInkingTone) {
+// Webb et al. 2002's thresholds at each stroke level, checked from the textures alone: (a) the order
+// of placement is kept (a texel first inked by a lighter tone never has a higher threshold than one
+// first inked by a darker tone); (b) they reproduce the tone: inking, with the darkest tone's ink,
+// every texel whose threshold is <= d gives mean darkness d (within the last stroke's share, up to the
+// darkest tone's inked darkness); texels no tone inks stay at 1.
+TEST(BuildTam, ThresholdTextureKeepsThePlacementOrderAndReproducesTheTone) {
   const Tam tam = build(smallStyle(StrokeKind::Hatching));
   const std::vector<stroke::Raster> thresholds = thresholdTexture(tam);
   ASSERT_EQ(int(thresholds.size()), tam.mipLevels);
   int none = 0;
-  for (int m = 0; m < tam.mipLevels; ++m) {
+  for (int m = 0; m < tam.strokeLevels; ++m) {
     const stroke::Raster& th = thresholds[std::size_t(m)];
+    const stroke::Raster& darkest = tam.images[std::size_t(tam.tones - 1)][std::size_t(m)];
     ASSERT_EQ(th.width, tam.resolution >> m);
+    std::vector<float> highest(std::size_t(tam.tones), 0.0f), lowest(std::size_t(tam.tones), 1.0f);
+    double inkedDarkness = 0;
     for (int y = 0; y < th.height; ++y) {
       for (int x = 0; x < th.width; ++x) {
         int first = tam.tones;
         for (int t = tam.tones - 1; t >= 0; --t) {
           if (1.0f - tam.images[std::size_t(t)][std::size_t(m)].at(x, y) >= 0.5f) first = t;
         }
-        const float expected = first < tam.tones ? float(tam.targets[std::size_t(first)]) : 1.0f;
-        ASSERT_EQ(th.at(x, y), expected);
-        none += first == tam.tones ? 1 : 0;
+        if (first == tam.tones) {
+          ASSERT_EQ(th.at(x, y), 1.0f) << "mip " << m << " texel " << x << "," << y;
+          ++none;
+          continue;
+        }
+        highest[std::size_t(first)] = std::max(highest[std::size_t(first)], th.at(x, y));
+        lowest[std::size_t(first)] = std::min(lowest[std::size_t(first)], th.at(x, y));
+        inkedDarkness += 1.0 - darkest.at(x, y);
       }
+    }
+    for (int t = 1; t < tam.tones; ++t)
+      EXPECT_LE(highest[std::size_t(t - 1)], lowest[std::size_t(t)]) << "mip " << m << ": tone " << t << " inked before tone " << t - 1;
+    const double texels = double(th.width) * th.height;
+    for (double d = 0.05; d < inkedDarkness / texels; d += 0.05) {
+      double mean = 0;
+      for (int y = 0; y < th.height; ++y)
+        for (int x = 0; x < th.width; ++x)
+          if (th.at(x, y) <= float(d)) mean += 1.0 - darkest.at(x, y);
+      EXPECT_NEAR(mean / texels, d, 0.02) << "mip " << m;
     }
   }
   EXPECT_GT(none, 0);  // the darkest tone 0.8 leaves some paper

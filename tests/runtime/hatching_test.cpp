@@ -11,6 +11,7 @@
 #include <bake_formats/tam.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -891,6 +892,103 @@ TEST(HatchingExample, PipelineStylesBakeValidateAndRenderHeadless) {
     EXPECT_GT(dark, 1000) << "half " << half << ": no ink drawn";
     EXPECT_GT(bright, 1000) << "half " << half << ": no paper left between the strokes";
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fine tone control (Webb et al. 2002) against the seed's two-layer blend. A square lit by a
+// directional light has one Lambert term, so one darkness d over all of it. The reference is the
+// darkness asked for: both modes must give it as the frame's mean (1 - mean displayed grey, the TAM's
+// own measure of a tone), and the threshold must draw strokes whole where the blend fades them: half
+// way between two tones, clearly more of its pixels are near paper or ink.
+
+struct ToneFrame {
+  double darkness = 0;  // 1 - mean grey over the square's centre
+  double crisp = 0;     // share of those pixels near paper or ink: grey above 0.75 or below 0.25
+};
+
+ToneFrame measureTone(const Image& image) {
+  ToneFrame out;
+  int count = 0;
+  for (int y = 24; y < kSize - 24; ++y)
+    for (int x = 24; x < kSize - 24; ++x) {
+      const float g = grey(image, x, y);
+      out.darkness += 1.0 - g;
+      out.crisp += g > 0.75f || g < 0.25f ? 1 : 0;
+      ++count;
+    }
+  out.darkness /= count;
+  out.crisp /= count;
+  return out;
+}
+
+TEST(HatchingTone, ThresholdFollowsTheDarknessAndDrawsStrokesWhole) {
+  const fs::path dir = test::freshTempDir("hatching_threshold_tone");
+  {
+    std::ofstream style(dir / "style.json");
+    style << R"({"tones": [0.2, 0.4, 0.6, 0.8], "resolution": 128, "levels": 3, "candidates": 6, "seed": 5,
+                 "stroke": {"kind": "hatching", "length": {"min": 0.3, "max": 0.6}, "width": {"min": 1.5, "max": 2.0},
+                            "angle": 30}})";
+  }
+  glb::Package squareOnly;
+  glb::Primitive square = squarePrimitive();
+  square.material = -1;
+  squareOnly.meshes.push_back({"square", {square}});
+  glb::Node node;
+  node.mesh = 0;
+  squareOnly.nodes.push_back(node);
+  ASSERT_TRUE(glb::write(dir / "square.glb", squareOnly).isOk());
+  hatching::Settings bake;
+  bake.style = (dir / "style.json").string();
+  bake.output = (dir / "tam.ktx2").string();
+  bake.threshold = (dir / "threshold.ktx2").string();
+  bake.material.mesh = (dir / "square.glb").string();
+  bake.material.package = (dir / "square-hatched.glb").string();
+  bake.material.tilesPerUnit = 0.5;  // one tile over the square: strokes span several pixels
+  bake.common.quiet = true;
+  Diagnostics quiet("tambake", true);
+  const Status baked = hatching::run(bake, quiet);
+  ASSERT_TRUE(baked.isOk()) << baked.describe();
+
+  const auto render = [&](const std::string& tone, double d) {
+    RenderSettings settings;
+    settings.view.scenes = {bake.material.package};
+    settings.view.width = settings.view.height = kSize;
+    settings.view.camera = "0,0,3.2:0,0,0";
+    // Lambert 1 - d: the light tilted off the square's normal (+z) by acos(1 - d).
+    const double tilt = std::acos(1 - d);
+    settings.view.light = std::to_string(std::sin(tilt)) + ",0," + std::to_string(std::cos(tilt));
+    settings.view.hatchingTone = tone;
+    settings.output = (dir / (tone + std::to_string(int(d * 100)) + ".png")).string();
+    Diagnostics diagnostics("bakeplay", true);
+    const Status status = runRender(settings, diagnostics);
+    EXPECT_TRUE(status.isOk()) << status.describe();
+    auto image = readImage(settings.output);
+    EXPECT_TRUE(image.isOk());
+    return image.isOk() ? measureTone(*image) : ToneFrame{};
+  };
+  std::string figures;
+  double worstBlend = 0, worstThreshold = 0;
+  for (double d : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7}) {
+    const ToneFrame blend = render("blend", d), threshold = render("threshold", d);
+    figures += "d " + std::to_string(d) + ": blend " + std::to_string(blend.darkness) + " (crisp " +
+               std::to_string(blend.crisp) + "), threshold " + std::to_string(threshold.darkness) + " (crisp " +
+               std::to_string(threshold.crisp) + "); ";
+    worstBlend = std::max(worstBlend, std::abs(blend.darkness - d));
+    worstThreshold = std::max(worstThreshold, std::abs(threshold.darkness - d));
+    // Half way between two tones the blend shows the darker layer's new strokes at half strength
+    // (measured: 11 to 20 points more crisp pixels with the threshold); at a tone both draw the layer.
+    if (int(std::lround(d * 10)) % 2 == 1) EXPECT_GT(threshold.crisp, blend.crisp + 0.08) << figures;
+    else EXPECT_GT(threshold.crisp, blend.crisp - 0.02) << figures;
+  }
+  RecordProperty("toneFigures", figures);
+  // The threshold's picture half way between two tones, as a golden (BAKE_UPDATE_GOLDEN=1 rewrites it).
+  Result<Image> between = readImage(dir / "threshold50.png");
+  ASSERT_TRUE(between.isOk()) << between.status().describe();
+  EXPECT_TRUE(test::matchesGoldenImage(*between, "runtime/hatching-threshold-tone.v1.png"));
+  RecordProperty("worstBlendError", std::to_string(worstBlend));
+  RecordProperty("worstThresholdError", std::to_string(worstThreshold));
+  EXPECT_LT(worstBlend, 0.05) << figures;
+  EXPECT_LT(worstThreshold, 0.06) << figures;
 }
 
 }  // namespace

@@ -37,6 +37,11 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
   command.add_option("--stroke-tubes", view.strokeTubes,
                      "Paintstrokes: draw fixed tubes tessellated on the CPU instead, SIDES around and STEPS per segment "
                      "(SIDESxSTEPS, e.g. 64x32 for the fine reference, 6x2 for coarse tubes)");
+  command.add_option("--hatching-tone", view.hatchingTone,
+                     "Hatching: blend (the two nearest TAM layers) or threshold (fine tone control by the package's "
+                     "threshold texture, Webb et al. 2002; packages without one draw the blend)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"blend", "threshold"}));
 }
 
 CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, std::string& size) {

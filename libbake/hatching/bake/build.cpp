@@ -67,6 +67,7 @@ class Builder {
   void run() {
     const int levels = tam_.strokeLevels;
     for (int l = 0; l < levels; ++l) levels_.push_back(detail::blankLevel(side(l), tam_.coloured));
+    for (int l = 0; l < levels; ++l) thresholds_.emplace_back(side(l), side(l), 1, true);
     const int tones = tam_.tones;
     for (int t = 0; t < tones; ++t) {
       for (int l = 0; l < levels; ++l) {
@@ -78,6 +79,11 @@ class Builder {
         tam_.images[std::size_t(t)][std::size_t(mip)] = levels_[std::size_t(l)].brightness;
         if (tam_.coloured) tam_.colourImages[std::size_t(t)][std::size_t(mip)] = levels_[std::size_t(l)].colour;
       }
+    }
+    tam_.thresholds.resize(std::size_t(tam_.mipLevels));
+    for (int l = 0; l < levels; ++l) {
+      respaceThresholds(thresholds_[std::size_t(l)], levels_[std::size_t(l)].brightness);  // the darkest tone's
+      tam_.thresholds[std::size_t(levels - 1 - l)] = std::move(thresholds_[std::size_t(l)]);
     }
   }
 
@@ -133,14 +139,53 @@ class Builder {
       if (std::abs(mean + chosen.darkening - target) >= std::abs(mean - target)) return;
       for (int l = level; l < tam_.strokeLevels; ++l) {
         detail::applyFootprint(chosen.footprints[std::size_t(l - level)], kernel_, levels_[std::size_t(l)]);
+        markThresholds(chosen.footprints[std::size_t(l - level)], tone, l);
       }
       tam_.strokes.push_back({tone, level, chosen.stroke});
+    }
+  }
+
+  // Webb et al. draw the darkest layer's ink where the darkness asked for has reached the threshold,
+  // so the thresholds must reproduce the tone: with every texel whose threshold is <= d inked, the
+  // image's mean darkness must be d. The placement order is kept and the values respaced: the texels
+  // one stroke turned to ink (one value) get the mean darkness of the darkest image's ink over them and
+  // every texel inked before them.
+  static void respaceThresholds(stroke::Raster& thresholds, const stroke::Raster& darkest) {
+    std::vector<std::size_t> inked;
+    for (std::size_t i = 0; i < thresholds.values.size(); ++i)
+      if (thresholds.values[i] < 1.0f) inked.push_back(i);
+    std::stable_sort(inked.begin(), inked.end(),
+                     [&](std::size_t a, std::size_t b) { return thresholds.values[a] < thresholds.values[b]; });
+    const double texels = double(thresholds.values.size());
+    double ink = 0;
+    for (std::size_t begin = 0; begin < inked.size();) {
+      std::size_t end = begin;
+      const float value = thresholds.values[inked[begin]];
+      for (; end < inked.size() && thresholds.values[inked[end]] == value; ++end) ink += 1.0 - double(darkest.values[inked[end]]);
+      const float respaced = float(std::min(ink / texels, 1.0));
+      for (std::size_t k = begin; k < end; ++k) thresholds.values[inked[k]] = respaced;
+      begin = end;
+    }
+  }
+
+  // The texels of the footprint that this stroke turned to ink get the image's darkness now, kept
+  // within the tone's range: Webb et al.'s threshold, graded by the order of placement (respaced
+  // once the darkest tone is built).
+  void markThresholds(const stroke::InkFootprint& footprint, int tone, int level) {
+    const LevelImage& image = levels_[std::size_t(level)];
+    const double low = tone > 0 ? tam_.targets[std::size_t(tone - 1)] : 0.0;
+    const float value = float(std::clamp(image.meanDarkness(), low, tam_.targets[std::size_t(tone)]));
+    stroke::Raster& thresholds = thresholds_[std::size_t(level)];
+    for (const stroke::InkFootprint::Pixel& p : footprint.pixels) {
+      float& threshold = thresholds.at(p.x, p.y);
+      if (threshold == 1.0f && 1.0 - double(image.brightness.at(p.x, p.y)) >= format::tam::kThresholdInk) threshold = value;
     }
   }
 
   const Style& style_;
   const BuildOptions& options_;
   Tam& tam_;
+  std::vector<stroke::Raster> thresholds_;  // per stroke level, level 0 = coarsest
   detail::Kernel kernel_;
   detail::StepPool pool_;
   std::vector<Candidate> candidates_;
@@ -216,7 +261,9 @@ Result<Tam> buildTam(const Style& style, const BuildOptions& options) {
 
   Builder(style, options, tam).run();
 
-  // Mips below the stroke levels: 2x2 box averages (mean-preserving).
+  // Mips below the stroke levels: 2x2 box averages (mean-preserving), the thresholds too.
+  for (int m = tam.strokeLevels; m < tam.mipLevels; ++m)
+    tam.thresholds[std::size_t(m)] = detail::boxHalve(tam.thresholds[std::size_t(m - 1)]);
   for (int t = 0; t < tam.tones; ++t) {
     for (int m = tam.strokeLevels; m < tam.mipLevels; ++m) {
       auto& chain = tam.images[std::size_t(t)];
@@ -230,24 +277,6 @@ Result<Tam> buildTam(const Style& style, const BuildOptions& options) {
   return tam;
 }
 
-std::vector<stroke::Raster> thresholdTexture(const Tam& tam) {
-  std::vector<stroke::Raster> thresholds;
-  for (int m = 0; m < tam.mipLevels; ++m) {
-    const int n = std::max(1, tam.resolution >> m);
-    stroke::Raster out(n, n, 1, true);  // 1: no tone inks the texel
-    for (int y = 0; y < n; ++y) {
-      for (int x = 0; x < n; ++x) {
-        for (int t = 0; t < tam.tones; ++t) {
-          if (1.0 - double(tam.images[std::size_t(t)][std::size_t(m)].at(x, y)) >= format::tam::kThresholdInk) {
-            out.at(x, y) = float(tam.targets[std::size_t(t)]);
-            break;
-          }
-        }
-      }
-    }
-    thresholds.push_back(std::move(out));
-  }
-  return thresholds;
-}
+std::vector<stroke::Raster> thresholdTexture(const Tam& tam) { return tam.thresholds; }
 
 }  // namespace bake::hatching

@@ -44,6 +44,12 @@ struct Tam {
   std::vector<std::vector<stroke::Raster>> images;
   // Coloured ink only: the same images in RGB (the ink composited on white paper), 3 channels.
   std::vector<std::vector<stroke::Raster>> colourImages;
+  // Fine tone control (Webb et al. 2002): per mip, the darkness at which each texel turns to ink.
+  // Stroke levels: texels are ordered by the stroke that first inked them (1 - brightness >=
+  // kThresholdInk), and each stroke's texels get the mean darkness of the darkest tone's image over
+  // them and all texels inked before them, so that inking every texel whose threshold is <= d gives
+  // mean darkness d; 1 where no tone inks the texel. Coarser mips: 2x2 averages. One channel.
+  std::vector<stroke::Raster> thresholds;
   std::vector<PlacedStroke> strokes;  // in placement order
   std::vector<double> targets;        // target darkness per tone
   std::shared_ptr<const stroke::StrokeTexture> strokeTexture;  // image strokes' alpha (shared by copies)
@@ -68,8 +74,7 @@ Status checkStyle(const Style& style);
 // Deterministic for a style (seed included), whatever the thread count.
 Result<Tam> buildTam(const Style& style, const BuildOptions& options = {});
 
-// Threshold texture (Webb et al. 2002): per texel of every mip, the darkness of the first tone whose
-// image inks it (1 - brightness >= kThresholdInk), or 1 when none. thresholds[mip] is one channel.
+// Threshold texture (Webb et al. 2002): Tam::thresholds, one channel per mip.
 std::vector<stroke::Raster> thresholdTexture(const Tam& tam);
 
 }  // namespace bake::hatching

@@ -187,9 +187,10 @@ Result<HatchingParams> parseHatching(const nlohmann::json& extension, const glb:
     auto threshold = ktx2::decode(t, where.file + " " + ext + ".threshold");
     if (!threshold.isOk()) return invalidInput(ext + ".threshold does not decode: " + threshold.status().message(), where);
     if (threshold->layers != 0 || threshold->format != ktx2::Format::R8 || threshold->width != p.tam.width ||
-        threshold->height != p.tam.height) {
-      return invalidInput(ext + ".threshold must be a 2D R8_UNORM texture of the TAM's size", where);
+        threshold->height != p.tam.height || threshold->levels.size() != p.tam.levels.size()) {
+      return invalidInput(ext + ".threshold must be a 2D R8_UNORM texture of the TAM's size and mip levels", where);
     }
+    p.threshold = std::move(threshold).value();
   }
   return p;
 }

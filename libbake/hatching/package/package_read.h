@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct HatchingParams {
   HatchingOrientation orientation = HatchingOrientation::TowardLight;
   std::array<float, 3> baseColor{1, 1, 1};
   ktx2::Texture tam;  // 2D array, layers == tones.size(), full mip chain, R8 or RGBA8
+  std::optional<ktx2::Texture> threshold;  // 2D R8, the TAM's size and mip chain (Webb et al. 2002)
 };
 
 // Reads a material's BAKE_hatching object and checks it against the package: the fields and their
