@@ -302,30 +302,36 @@ Status assembleObject(const Scene& scene, std::size_t index, const fs::path& pat
   return {};
 }
 
-// The scene's cameras as glTF perspective cameras on nodes of their own (looking down local -Z from
-// the eye at the target, +Y up as near the world's +Y as the view allows), so a viewer opens the
+// A node at `eye` looking down its local -Z toward `target`, +Y up as near the world's +Y as the
+// direction allows (glTF cameras and lights both point down -Z).
+glb::Node nodeLookingAt(const std::array<double, 3>& eye, const std::array<double, 3>& target) {
+  std::array<double, 3> back{}, up{0, 1, 0}, right{}, trueUp{};
+  double length = 0;
+  for (int k = 0; k < 3; ++k) {
+    back[k] = eye[k] - target[k];
+    length += back[k] * back[k];
+  }
+  for (double& b : back) b /= std::sqrt(length);
+  if (std::abs(back[1]) > 0.999) up = {0, 0, -1};
+  const auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  right = cross(up, back);
+  const double r = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+  for (double& x : right) x /= r;
+  trueUp = cross(back, right);
+  glb::Node node;
+  node.matrix = std::array<double, 16>{right[0], right[1], right[2], 0, trueUp[0], trueUp[1], trueUp[2], 0,
+                                       back[0],  back[1],  back[2],  0, eye[0],    eye[1],    eye[2],    1};
+  return node;
+}
+
+// The scene's cameras as glTF perspective cameras on nodes of their own, so a viewer opens the
 // assembled scene in the view the scene was planned for; the first is the one bakeplay takes.
 void addCameras(const Scene& scene, glb::Package& out) {
   for (const Camera& camera : scene.cameras) {
-    std::array<double, 3> back{}, up{0, 1, 0}, right{}, trueUp{};
-    double length = 0;
-    for (int k = 0; k < 3; ++k) {
-      back[k] = camera.eye[k] - camera.target[k];
-      length += back[k] * back[k];
-    }
-    for (double& b : back) b /= std::sqrt(length);
-    if (std::abs(back[1]) > 0.999) up = {0, 0, -1};
-    const auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-      return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    };
-    right = cross(up, back);
-    const double r = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
-    for (double& x : right) x /= r;
-    trueUp = cross(back, right);
-    glb::Node node;
+    glb::Node node = nodeLookingAt(camera.eye, camera.target);
     node.name = camera.name.empty() ? "camera" : camera.name;
-    node.matrix = std::array<double, 16>{right[0], right[1], right[2], 0, trueUp[0], trueUp[1], trueUp[2], 0,
-                                         back[0],  back[1],  back[2],  0, camera.eye[0], camera.eye[1], camera.eye[2], 1};
     node.camera = int(out.cameras.size());
     out.cameras.push_back({{"type", "perspective"},
                            {"name", node.name},
@@ -336,6 +342,29 @@ void addCameras(const Scene& scene, glb::Package& out) {
     out.sceneRoots.push_back(int(out.nodes.size()));
     out.nodes.push_back(std::move(node));
   }
+}
+
+// The scene's lights as KHR_lights_punctual lights on nodes of their own (the packages' own lights are
+// dropped); the first is the one bakeplay takes. A spot's cone is its outer angle (no inner fade) and
+// its exponent goes to extras.spotExponent, which bakeplay reads (seed 004's OpenGL spot).
+void addLights(const Scene& scene, glb::Package& out) {
+  if (scene.lights.empty()) return;
+  json lights = json::array();
+  for (const SceneLight& light : scene.lights) {
+    glb::Node node = light.type == "point" ? glb::Node{} : nodeLookingAt(light.position, light.target);
+    if (light.type == "point") node.translation = light.position;
+    node.name = light.name.empty() ? "light" : light.name;
+    json entry = {{"type", light.type}, {"name", node.name}, {"color", light.colour}, {"intensity", light.intensity}};
+    if (light.type == "spot") {
+      entry["spot"] = {{"innerConeAngle", 0.0}, {"outerConeAngle", light.cutoffDegrees * std::acos(-1.0) / 180.0}};
+      entry["extras"] = {{"spotExponent", light.exponent}};
+    }
+    node.extensions[kLightsExtension] = {{"light", lights.size()}};
+    lights.push_back(entry);
+    out.sceneRoots.push_back(int(out.nodes.size()));
+    out.nodes.push_back(std::move(node));
+  }
+  out.extensions[kLightsExtension] = {{"lights", lights}};
 }
 
 }  // namespace
@@ -351,6 +380,7 @@ Result<glb::Package> assemble(const Scene& scene, const std::vector<fs::path>& p
   for (std::size_t k = 0; k < scene.objects.size(); ++k)
     BAKE_RETURN_IF_ERROR(assembleObject(scene, k, packages[k], settings, out, assembled));
   addCameras(scene, assembled);
+  addLights(scene, assembled);
   return assembled;
 }
 

@@ -161,6 +161,42 @@ Result<Camera> readCamera(const SceneReader& r, const json& node, const std::str
   return c;
 }
 
+// A light (formats/scene.md, "Lights"): every number checked, the cone within (0, 90] degrees.
+Result<SceneLight> readLight(const SceneReader& r, const json& node, const std::string& where) {
+  BAKE_RETURN_IF_ERROR(r.object(node, where, {"name", "type", "position", "target", "colour", "intensity", "cutoff", "exponent"}));
+  BAKE_RETURN_IF_ERROR(r.required(node, where, {"type", "position"}));
+  SceneLight light;
+  if (node.contains("name")) { BAKE_ASSIGN_OR_RETURN(light.name, r.name(node["name"], child(where, "name"))); }
+  BAKE_ASSIGN_OR_RETURN(light.type, r.string(node["type"], child(where, "type")));
+  if (light.type != "directional" && light.type != "point" && light.type != "spot")
+    return r.error(child(where, "type"), "is \"" + light.type + "\"; known: directional, point, spot");
+  BAKE_ASSIGN_OR_RETURN(light.position, r.vec3(node["position"], child(where, "position")));
+  if (light.type != "point") {
+    if (!node.contains("target")) return r.error(child(where, "target"), "is missing: a " + light.type + " light shines toward it");
+    BAKE_ASSIGN_OR_RETURN(light.target, r.vec3(node["target"], child(where, "target")));
+    if (light.target == light.position) return r.error(child(where, "target"), "must differ from the position");
+  } else if (node.contains("target") || node.contains("cutoff") || node.contains("exponent")) {
+    return r.error(where, "a point light takes no target, cutoff or exponent");
+  }
+  if (node.contains("colour")) {
+    BAKE_ASSIGN_OR_RETURN(light.colour, r.vec3(node["colour"], child(where, "colour")));
+    for (int c = 0; c < 3; ++c)
+      if (light.colour[std::size_t(c)] < 0) return r.error(child(child(where, "colour"), c), "must be >= 0");
+  }
+  if (node.contains("intensity")) { BAKE_ASSIGN_OR_RETURN(light.intensity, r.positive(node["intensity"], child(where, "intensity"))); }
+  if (light.type != "spot" && (node.contains("cutoff") || node.contains("exponent")))
+    return r.error(where, "only a spot light takes a cutoff and an exponent");
+  if (node.contains("cutoff")) {
+    BAKE_ASSIGN_OR_RETURN(light.cutoffDegrees, r.positive(node["cutoff"], child(where, "cutoff")));
+    if (light.cutoffDegrees > 90) return r.error(child(where, "cutoff"), "must be at most 90 degrees");
+  }
+  if (node.contains("exponent")) {
+    BAKE_ASSIGN_OR_RETURN(light.exponent, r.number(node["exponent"], child(where, "exponent")));
+    if (light.exponent < 0 || light.exponent > 128) return r.error(child(where, "exponent"), "must be in [0, 128]");
+  }
+  return light;
+}
+
 }  // namespace
 
 // A JSON file, parsed; `what` names it in the error when it cannot be read ("scene file", ...).
@@ -250,7 +286,7 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
   r.file = path.string();
   const Vocabulary vocabulary = Vocabulary::fromRegistry();
   BAKE_RETURN_IF_ERROR(r.object(doc, "", {"$schema", "description", "version", "name", "generated", "objects",
-                                          "materials", "cameras", "pixelsPerUnit"}));
+                                          "materials", "cameras", "lights", "pixelsPerUnit"}));
   BAKE_RETURN_IF_ERROR(r.required(doc, "", {"version", "objects", "materials"}));
   if (!doc["version"].is_number_integer() || doc["version"].get<long long>() != key::kVersion)
     return r.error("/version", "must be " + std::to_string(key::kVersion));
@@ -309,6 +345,13 @@ Result<Scene> parseScene(const json& doc, const fs::path& path) {
     for (std::size_t k = 0; k < doc["cameras"].size(); ++k) {
       BAKE_ASSIGN_OR_RETURN(Camera c, readCamera(r, doc["cameras"][k], child("/cameras", k)));
       scene.cameras.push_back(std::move(c));
+    }
+  }
+  if (doc.contains("lights")) {
+    if (!doc["lights"].is_array()) return r.error("/lights", "must be a list");
+    for (std::size_t k = 0; k < doc["lights"].size(); ++k) {
+      BAKE_ASSIGN_OR_RETURN(SceneLight light, readLight(r, doc["lights"][k], child("/lights", k)));
+      scene.lights.push_back(std::move(light));
     }
   }
   if (doc.contains("pixelsPerUnit")) {

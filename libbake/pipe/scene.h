@@ -70,6 +70,20 @@ struct Camera {
   int height = 768;
 };
 
+// A light of the assembled scene (KHR_lights_punctual): directional (shining from `position` toward
+// `target`), point (at `position`) or spot (at `position`, toward `target`, the cone's half-angle
+// `cutoffDegrees` and OpenGL's falloff exponent, kept in the light's extras.spotExponent).
+struct SceneLight {
+  std::string name;
+  std::string type = "directional";
+  std::array<double, 3> position{0, 5, 5};
+  std::array<double, 3> target{0, 0, 0};
+  std::array<double, 3> colour{1, 1, 1};
+  double intensity = 1;
+  double cutoffDegrees = 45;
+  double exponent = 0;
+};
+
 struct Scene {
   std::filesystem::path file;       // the scene file, absolute
   std::filesystem::path directory;  // its directory: relative paths start here
@@ -78,6 +92,7 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Material> materials;
   std::vector<Camera> cameras;
+  std::vector<SceneLight> lights;
   std::optional<std::array<double, 2>> pixelsPerUnit;  // explicit [min, max]
 
   const Material& materialOf(const Object& object) const { return materials[object.material]; }

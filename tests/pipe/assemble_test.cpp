@@ -169,6 +169,46 @@ TEST(PipeAssemble, TheScenesCameraFramesTheAssembledScene) {
   EXPECT_NEAR(m[5], 0.8, 1e-12);  // +Y: up, tilted with the view
 }
 
+// The scene's lights as KHR_lights_punctual lights, each on a node pointing down -Z at its target;
+// the spot's cone and OpenGL exponent where bakeplay reads them.
+TEST(PipeAssemble, TheScenesLightsBecomePunctualLights) {
+  Scene scene = torusAndPlate();
+  SceneLight spot;
+  spot.name = "lamp";
+  spot.type = "spot";
+  spot.position = {0, 3, 4};
+  spot.target = {0, 0, 0};
+  spot.cutoffDegrees = 30;
+  spot.exponent = 5;
+  SceneLight point;
+  point.type = "point";
+  point.position = {1, 2, 3};
+  point.colour = {1, 0.5, 0.25};
+  scene.lights = {spot, point};
+  auto assembled = assemble(scene, {inputs().geodesic, inputs().grooves}, {});
+  ASSERT_TRUE(assembled.isOk()) << assembled.status().describe();
+  const glb::Package p = encodedAndRead(*assembled);
+  const json& lights = p.extensions["KHR_lights_punctual"]["lights"];
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0]["type"], "spot");
+  EXPECT_NEAR(lights[0]["spot"]["outerConeAngle"].get<double>(), 30 * std::acos(-1.0) / 180, 1e-12);
+  EXPECT_EQ(lights[0]["extras"]["spotExponent"], 5);
+  EXPECT_EQ(lights[1]["type"], "point");
+  EXPECT_EQ(lights[1]["color"], json::array({1, 0.5, 0.25}));
+  ASSERT_EQ(p.sceneRoots.size(), 4u);
+  const glb::Node& lamp = p.nodes.at(std::size_t(p.sceneRoots[2]));
+  EXPECT_EQ(lamp.name, "lamp");
+  EXPECT_EQ(lamp.extensions["KHR_lights_punctual"]["light"], 0);
+  const std::array<double, 16> m = lamp.localMatrix();
+  EXPECT_NEAR(m[13], 3, 1e-12);
+  EXPECT_NEAR(-m[9], -0.6, 1e-12);  // -Z toward the target, (0, -3, -4) / 5
+  EXPECT_NEAR(-m[10], -0.8, 1e-12);
+  const glb::Node& bulb = p.nodes.at(std::size_t(p.sceneRoots[3]));
+  EXPECT_EQ(bulb.extensions["KHR_lights_punctual"]["light"], 1);
+  EXPECT_NEAR(bulb.localMatrix()[14], 3, 1e-12);
+  EXPECT_NE(std::find(p.extensionsUsed.begin(), p.extensionsUsed.end(), "KHR_lights_punctual"), p.extensionsUsed.end());
+}
+
 TEST(PipeAssemble, KeepsOnlyTheFieldsTheMaterialReadsRenumbered) {
   const Scene scene = torusAndPlate();
   const glb::Package original = readBack(inputs().geodesic);

@@ -58,6 +58,13 @@ TEST(PipeScene, ReadsTheExampleScenes) {
   EXPECT_EQ(named("tiles").rotation, (std::array<double, 4>{0, 0, 0, 1}));
   ASSERT_TRUE(named("column").mesh.has_value());
   EXPECT_TRUE(named("column").mesh->generated);
+  // Hatching: lit by a spot light.
+  const Result<Scene> hatching = readScene(fs::path(BAKE_SOURCE_DIR) / "pipelines/hatching/scene.json");
+  ASSERT_TRUE(hatching.isOk()) << hatching.status().describe();
+  ASSERT_EQ(hatching->lights.size(), 1u);
+  EXPECT_EQ(hatching->lights[0].type, "spot");
+  EXPECT_EQ(hatching->lights[0].cutoffDegrees, 38);
+  EXPECT_EQ(hatching->lights[0].exponent, 6);
   EXPECT_FALSE(named("plate").mesh.has_value());
 }
 
@@ -108,6 +115,17 @@ TEST(PipeScene, ErrorsNameTheElement) {
   json camera = geodesicScene();
   camera["cameras"] = {{{"eye", {0, 0, 1}}, {"target", {0, 0, 1}}, {"yfov", 40}, {"width", 64}, {"height", 64}}};
   expectError(camera, "/cameras/0/target", "must differ from the eye");
+  json light = geodesicScene();
+  light["lights"] = {{{"type", "area"}, {"position", {0, 1, 0}}}};
+  expectError(light, "/lights/0/type", "known: directional, point, spot");
+  light["lights"] = {{{"type", "spot"}, {"position", {0, 1, 0}}}};
+  expectError(light, "/lights/0/target", "a spot light shines toward it");
+  light["lights"] = {{{"type", "point"}, {"position", {0, 1, 0}}, {"cutoff", 30}}};
+  expectError(light, "/lights/0", "a point light takes no target, cutoff or exponent");
+  light["lights"] = {{{"type", "spot"}, {"position", {0, 1, 0}}, {"target", {0, 0, 0}}, {"cutoff", 120}}};
+  expectError(light, "/lights/0/cutoff", "at most 90 degrees");
+  light["lights"] = {{{"type", "directional"}, {"position", {0, 1, 0}}, {"target", {0, 0, 0}}, {"exponent", 2}}};
+  expectError(light, "/lights/0", "only a spot light takes a cutoff and an exponent");
 }
 
 TEST(PipeScene, UnreadableFilesAreIoErrors) {
