@@ -32,6 +32,9 @@ for preset in isolines sand-water moss-granite paint-metal-rust water-lava opaci
   "$bin/bakeplay/bakeplay" render -q "$out/pretzel-fields.glb" --geotexture "$preset" \
     -o "$out/geodesic-$preset.png"
 done
+# The waves (amplitude and frequency falling with the distance, C.6.3) reflecting a sky (C.6.4).
+"$bin/bakeplay/bakeplay" render -q "$out/pretzel-fields.glb" --geotexture wave-displacement \
+  --environment-map "$out/sky.exr" -o "$out/geodesic-wave-sky.png"
 
 # Revolution mapping (pipelines/revolution): a vase, a ring and a plate baked from their profiles with
 # textures made by bakeshape, a row of balusters and a ring of self-shadowing knobs (copies of one

@@ -75,26 +75,47 @@ double knurl(double u, double v) {
   return std::min(a, b);
 }
 
+// An outdoor sky for environment lighting, in linear radiance (values above 1: the sun), for the
+// equirectangular layout bakeplay reads: the direction of row theta (from +Y) and column phi (from -Z
+// toward +X) is (sin theta sin phi, cos theta, -sin theta cos phi).
+void sky(double theta, double phi, float* rgb) {
+  const double d[3] = {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+  static const double zenith[3] = {0.12, 0.28, 0.75}, horizon[3] = {0.85, 0.88, 0.92}, ground[3] = {0.22, 0.2, 0.17};
+  if (d[1] >= 0) {
+    mixInto(rgb, horizon, zenith, std::pow(d[1], 0.45));
+  } else {
+    mixInto(rgb, horizon, ground, smoothstep(0.0, 0.08, -d[1]));
+  }
+  // The sun, up and to the left of -Z, with a soft glow around its disc.
+  const double sun[3] = {-0.45, 0.55, -0.7};
+  const double length = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+  const double cosine = (d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2]) / length;
+  const double glow = 0.6 * std::pow(std::max(cosine, 0.0), 64) + (cosine > 0.9995 ? 30.0 : 0.0);
+  for (int c = 0; c < 3; ++c) rgb[c] += float(glow * (c == 2 ? 0.85 : 1.0));
+}
+
 }  // namespace
 
-std::vector<std::string> patternNames() { return {"glaze", "bands", "hammered", "knurl"}; }
+std::vector<std::string> patternNames() { return {"glaze", "bands", "hammered", "knurl", "sky"}; }
 
 Result<Image> makePattern(const std::string& name, int size) {
   const auto names = patternNames();
   if (std::find(names.begin(), names.end(), name) == names.end())
     return usageError("unknown pattern '" + name + "'");
   if (size < 8 || size > 8192) return usageError("--resolution for a pattern must be within 8 .. 8192 pixels");
-  const bool colour = name == "glaze" || name == "bands";
+  const bool colour = name == "glaze" || name == "bands" || name == "sky";
   Image image;
   image.width = image.height = size;
+  if (name == "sky") image.height = std::max(1, size / 2);  // equirectangular: 360 by 180 degrees
   image.channels = colour ? 3 : 1;
-  image.pixels.resize(std::size_t(size) * size * image.channels);
-  for (int y = 0; y < size; ++y) {
+  image.pixels.resize(std::size_t(image.width) * std::size_t(image.height) * image.channels);
+  for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < size; ++x) {
       // Pixel centres; v grows upwards (the image's top row is v near 1).
-      const double u = (x + 0.5) / size, v = 1 - (y + 0.5) / size;
+      const double u = (x + 0.5) / size, v = 1 - (y + 0.5) / image.height;
       float* pixel = &image.pixels[(std::size_t(y) * size + x) * image.channels];
-      if (name == "glaze") glaze(u, v, pixel);
+      if (name == "sky") sky((y + 0.5) / image.height * std::numbers::pi, (u - 0.5) * kTau, pixel);
+      else if (name == "glaze") glaze(u, v, pixel);
       else if (name == "bands") bands(u, v, pixel);
       else if (name == "hammered") pixel[0] = float(hammered(u, v));
       else pixel[0] = float(knurl(u, v));

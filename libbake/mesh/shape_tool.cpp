@@ -74,7 +74,9 @@ Status runPattern(const ShapeToolSettings& settings, Diagnostics& diagnostics) {
   auto bake = [&]() -> Status {
     StageTimer timer(&session.report(), "pattern");
     BAKE_ASSIGN_OR_RETURN(const Image image, makePattern(settings.shape.name, settings.shape.resolution));
-    BAKE_RETURN_IF_ERROR(writeImage(settings.output, image, PixelType::U8));
+    // PNG: 8-bit; EXR: half floats, for images whose values exceed 1 (the sky's sun).
+    const bool exr = lowercaseExtension(settings.output) == ".exr";
+    BAKE_RETURN_IF_ERROR(writeImage(settings.output, image, exr ? PixelType::Half : PixelType::U8));
     session.recordWrittenOutput(settings.output);
     session.report().setStatistic("pixels", image.width * image.height);
     return {};
@@ -86,9 +88,9 @@ Status runPattern(const ShapeToolSettings& settings, Diagnostics& diagnostics) {
 
 Status runShapeTool(const ShapeToolSettings& settings, Diagnostics& diagnostics) {
   const std::string extension = lowercaseExtension(settings.output);
-  if (extension == ".png") return runPattern(settings, diagnostics);
+  if (extension == ".png" || extension == ".exr") return runPattern(settings, diagnostics);
   if (extension != ".glb" && extension != ".obj")
-    return usageError("-o " + settings.output + ": the output must end in .glb, .obj (shapes) or .png (patterns)");
+    return usageError("-o " + settings.output + ": the output must end in .glb, .obj (shapes) or .png, .exr (patterns)");
   BakeSession session("bakeshape", settings.common, diagnostics);
   session.report().setOptions({{"shape", settings.shape.name}, {"resolution", settings.shape.resolution}});
   auto bake = [&]() -> Status {

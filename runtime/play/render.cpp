@@ -2,6 +2,7 @@
 
 #include <GL/glcorearb.h>
 #include <bake_formats/tam.h>
+#include <bake_formats/geodesic.h>
 #include <bake_formats/paintstrokes.h>
 
 #include <algorithm>
@@ -184,6 +185,15 @@ Result<RendererRegistry> renderersFor(const ViewSettings& view) {
     return usageError("--hatching-tone must be blend or threshold, not '" + view.hatchingTone + "'");
   const HatchingTone tone = view.hatchingTone == "threshold" ? HatchingTone::Threshold : HatchingTone::Blend;
   registry.add(format::tam::kExtension, [tone] { return std::make_unique<HatchingRenderer>(tone); });
+  if (!view.environmentMap.empty()) {
+    BAKE_ASSIGN_OR_RETURN(Image image, readImage(view.environmentMap));
+    if (image.width < 2 || image.height < 1 || image.width > 16384 || image.height > 16384)
+      return invalidInput("the environment map is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                              " pixels; it must be 2 to 16384 wide and 1 to 16384 high",
+                          {view.environmentMap, ""});
+    const auto environment = std::make_shared<const Image>(std::move(image));
+    registry.add(format::geodesic::kExtension, [environment] { return std::make_unique<GeodesicRenderer>(environment); });
+  }
   return registry;
 }
 
@@ -225,7 +235,8 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"strokeQuality", settings.view.strokeQuality},
                                {"strokeTolerance", settings.view.strokeTolerance},
                                {"strokeTubes", settings.view.strokeTubes},
-                               {"hatchingTone", settings.view.hatchingTone}});
+                               {"hatchingTone", settings.view.hatchingTone},
+                               {"environmentMap", settings.view.environmentMap}});
   return session.finish(renderScene(settings, session));
 }
 

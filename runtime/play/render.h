@@ -34,6 +34,9 @@ struct ViewSettings {
   // Hatching: "blend" (the two nearest TAM layers, seed 004) or "threshold" (Webb et al. 2002 fine
   // tone control by the package's threshold texture).
   std::string hatchingTone = "blend";
+  // GeoTextures' wave preset: an equirectangular environment image reflected by the displaced
+  // surface (seed 003 C.6.4); empty: none.
+  std::string environmentMap;
 };
 
 struct RenderSettings {

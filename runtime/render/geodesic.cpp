@@ -136,6 +136,34 @@ Status attachGeoTextures(Scene& scene, const std::string& preset) {
 // ---------------------------------------------------------------------------------------------
 // The renderer
 
+constexpr GLuint kEnvironmentUnit = 0;
+
+// The equirectangular environment as an RGB float texture: repeating across (the longitude wraps),
+// clamped down (the poles), linear, no mipmaps (the reflected direction's derivatives jump at the
+// seam).
+GLuint uploadEnvironment(const Image& image) {
+  std::vector<float> rgb(std::size_t(image.width) * std::size_t(image.height) * 3);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgb[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3 + std::size_t(c)] =
+            image.at(x, y, image.channels >= 3 ? c : 0);
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, GL_RGB32F, image.width, image.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(texture, 0, 0, 0, image.width, image.height, GL_RGB, GL_FLOAT, rgb.data());
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+GeodesicRenderer::~GeodesicRenderer() {
+  if (environmentTexture_) glDeleteTextures(1, &environmentTexture_);
+}
+
 Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size_t>& instances,
                                  gl::ShaderLibrary& shaders) {
   for (std::size_t index : instances) {
@@ -187,6 +215,10 @@ Status GeodesicRenderer::prepare(const Scene& scene, const std::vector<std::size
       variant.program.tessControl = "geodesic/geotexture.tesc";
       variant.program.tessEvaluation = "geodesic/geotexture.tese";
       variant.defines.push_back("DISPLACE");
+    }
+    if (environment_ && params.preset == GeoPreset::WaveDisplacement) {
+      if (!environmentTexture_) environmentTexture_ = uploadEnvironment(*environment_);
+      variant.defines.push_back("ENVIRONMENT_MAP");
     }
     item.translucent = params.preset == GeoPreset::OpacityFront;
     if (item.translucent) variant.defines.push_back("TRANSLUCENT");
@@ -248,6 +280,10 @@ void GeodesicRenderer::setUniforms(const Item& item, const FrameContext& frame) 
 
 void GeodesicRenderer::drawItem(const Item& item, int pass) const {
   glUseProgram(item.program);
+  if (environmentTexture_) {
+    glProgramUniform1i(item.program, glGetUniformLocation(item.program, "uEnvironmentMap"), GLint(kEnvironmentUnit));
+    glBindTextureUnit(kEnvironmentUnit, environmentTexture_);
+  }
   glProgramUniform1i(item.program, glGetUniformLocation(item.program, "uPass"), pass);
   if (item.tessellated) {
     glPatchParameteri(GL_PATCH_VERTICES, 3);
@@ -279,6 +315,7 @@ void GeodesicRenderer::draw(const FrameContext& frame) {
 
 std::size_t GeodesicRenderer::gpuBytes() const {
   std::size_t total = 0;
+  if (environmentTexture_) total += std::size_t(environment_->width) * std::size_t(environment_->height) * 12;
   for (const Item& item : items_) total += item.gpu.uploadedBytes();
   return total;
 }

@@ -11,12 +11,14 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bake/io/image.h"
 #include "geodesic/package/package_read.h"
 #include "render/gpu_mesh.h"
 #include "render/renderer.h"
@@ -45,6 +47,12 @@ Status attachGeoTextures(Scene& scene, const std::string& preset);
 
 class GeodesicRenderer : public TechniqueRenderer {
  public:
+  // `environment`: an equirectangular image (linear RGB) the wave preset reflects (seed 003 C.6.4);
+  // none: the wave is lit like the other presets.
+  explicit GeodesicRenderer(std::shared_ptr<const Image> environment = nullptr) : environment_(std::move(environment)) {}
+  GeodesicRenderer(const GeodesicRenderer&) = delete;
+  GeodesicRenderer& operator=(const GeodesicRenderer&) = delete;
+  ~GeodesicRenderer() override;
   Status prepare(const Scene& scene, const std::vector<std::size_t>& instances,
                  gl::ShaderLibrary& shaders) override;
   void draw(const FrameContext& frame) override;
@@ -66,6 +74,8 @@ class GeodesicRenderer : public TechniqueRenderer {
   void setUniforms(const Item& item, const FrameContext& frame) const;
   void drawItem(const Item& item, int pass) const;
   std::vector<Item> items_;
+  std::shared_ptr<const Image> environment_;
+  unsigned environmentTexture_ = 0;
 };
 
 }  // namespace bake::play

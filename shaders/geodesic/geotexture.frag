@@ -33,6 +33,16 @@ uniform float uHeightScale;  // world units per object radius
 uniform float uBumpScale;    // strength of the presets' bump heights (0: none)
 uniform vec3 uUnreachableColour;
 uniform int uPass;           // 0 opaque, 1 translucent
+#ifdef ENVIRONMENT_MAP
+uniform sampler2D uEnvironmentMap;  // equirectangular, linear RGB; row 0 at +Y
+
+// Seed 003 C.6.4 looks the reflected direction up in a sphere map; here an equirectangular one:
+// u = 0.5 + atan2(x, -z) / 2 pi (-Z in the middle), v = acos(y) / pi (+Y on the first row).
+vec3 environmentAlong(vec3 r) {
+  vec2 uv = vec2(0.5 + atan(r.x, -r.z) / 6.28318530718, acos(clamp(r.y, -1.0, 1.0)) / 3.14159265359);
+  return textureLod(uEnvironmentMap, uv, 0.0).rgb;
+}
+#endif
 
 layout(location = 0) out vec4 fragColor;
 
@@ -90,5 +100,12 @@ void main() {
   vec3 l = normalize(uLightDir);
   vec3 v = normalize(uCameraPos - vWorldPosition);
   vec3 colour = blinnPhong(n, l, v, surface.colour, uLightColour) + surface.emission;
+#ifdef ENVIRONMENT_MAP
+  // C.6.4: the environment seen along the view reflected about the displaced surface, plus the
+  // light's highlight (the diffuse term is replaced).
+  vec3 h = normalize(l + v);
+  float specular = dot(n, l) > 0.0 ? kSpecularStrength * pow(max(dot(n, h), 0.0), kShininess) : 0.0;
+  colour = environmentAlong(reflect(-v, n)) + specular * uLightColour;
+#endif
   fragColor = vec4(colour, opaque ? 1.0 : surface.alpha);
 }

@@ -70,7 +70,7 @@ void addSphere(Vec3 centre, float radius, const std::function<std::array<float, 
 
 enum class Encoding { Float, Unorm16 };
 
-glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = Encoding::Float) {
+glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = Encoding::Float, bool loneSphere = true) {
   std::vector<float> positions, normals, f0, f1;
   std::vector<std::uint32_t> indices;
   addSphere(
@@ -80,7 +80,7 @@ glb::Package spherePackage(const nlohmann::json& material, Encoding encoding = E
       },
       positions, normals, f0, f1, indices);
   const float flag = encoding == Encoding::Float ? format::geodesic::kUnreachableFloat : 1.0f;
-  addSphere(
+  if (loneSphere) addSphere(
       kLoneCentre, kLoneRadius,
       [&](const Vec3&) {
         return std::array{flag, flag};
@@ -591,8 +591,8 @@ struct WaveFrame {
 class GeoTextureWave : public test::GlTest {
  protected:
   // Draws through SceneRenderer, counting the primitives that reach the rasteriser.
-  WaveFrame draw(const nlohmann::json& material, bool withNormals = true) {
-    glb::Package package = spherePackage(material);
+  WaveFrame draw(const nlohmann::json& material, bool withNormals = true, bool loneSphere = true) {
+    glb::Package package = spherePackage(material, Encoding::Float, loneSphere);
     if (!withNormals)
       std::erase_if(package.meshes[0].primitives[0].attributes,
                     [](const glb::Attribute& a) { return a.name == "NORMAL"; });
@@ -682,6 +682,125 @@ TEST_F(GeoTextureWave, DisplacementMovesTheSilhouetteBumpsDoNot) {
   auto shading = compareImages(still.image, bumped.image, 0.05);
   ASSERT_TRUE(shading.isOk());
   EXPECT_GT(shading->percentOver, 1.0) << "but bumps change the shading";
+}
+
+// The wave of C.6.3, whose amplitude and frequency fall with the distance, against its closed form
+// (formats/geodesic-material.md): on the unit sphere alone (object radius 1), seen down the field's
+// axis, the displaced surface is a surface of revolution r(theta) = 1 + h(theta / pi), so its outline
+// is a circle whose radius is the largest angle any point subtends at the eye. The frame's covered
+// area gives the drawn radius in pixels.
+double smoothStep(double a, double b, double x) {
+  const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
+  return t * t * (3 - 2 * t);
+}
+double fadingWave(double d, double amplitude, double wavelength, double reach, double front, bool fade = true) {
+  const double envelope = smoothStep(front - reach, front - 0.6 * reach, d) * (1 - smoothStep(front - 0.15 * reach, front, d));
+  const double falloff = fade ? 1 - std::clamp(d, 0.0, 1.0) : 1.0;
+  return amplitude * falloff * envelope * std::sin(2 * std::numbers::pi * (d - front) * falloff / wavelength);
+}
+double outlineRadiusPixels(const std::function<double(double)>& height) {
+  double widest = 0;
+  for (int k = 0; k <= 200000; ++k) {
+    const double theta = std::numbers::pi * k / 200000;
+    const double r = 1 + height(theta / std::numbers::pi);
+    widest = std::max(widest, std::atan2(r * std::sin(theta), kEye - r * std::cos(theta)));
+  }
+  return std::tan(widest) / std::tan(kFov / 2) * kSize / 2;
+}
+
+TEST_F(GeoTextureWave, OutlineFollowsTheClosedFormOfTheFadingWave) {
+  constexpr double kAmplitude = 0.08, kWavelength = 0.06, kReach = 0.3, kFront = 0.45;
+  const nlohmann::json material = geoMaterial("wave-displacement", {{"fields", {0}},
+                                                                    {"thresholds", {kFront}},
+                                                                    {"wave",
+                                                                     {{"amplitude", kAmplitude},
+                                                                      {"wavelength", kWavelength},
+                                                                      {"reach", kReach},
+                                                                      {"displace", true},
+                                                                      {"pixelsPerEdge", 2},
+                                                                      {"maxLevel", 64}}}});
+  const WaveFrame frame = draw(material, true, false);
+  int covered = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      covered += std::fabs(frame.image.at(x, y, 2) - frame.image.at(0, 0, 2)) > 1e-4f ||
+                         std::fabs(frame.image.at(x, y, 0) - frame.image.at(0, 0, 0)) > 1e-4f
+                     ? 1
+                     : 0;
+  const double drawn = std::sqrt(covered / std::numbers::pi);
+  const double expected = outlineRadiusPixels([&](double d) { return fadingWave(d, kAmplitude, kWavelength, kReach, kFront); });
+  const double constantPacket =
+      outlineRadiusPixels([&](double d) { return fadingWave(d, kAmplitude, kWavelength, kReach, kFront, false); });
+  const double undisplaced = outlineRadiusPixels([](double) { return 0.0; });
+  RecordProperty("drawnRadiusPixels", std::to_string(drawn));
+  RecordProperty("closedFormRadiusPixels", std::to_string(expected));
+  RecordProperty("constantPacketRadiusPixels", std::to_string(constantPacket));
+  // The three outlines are told apart, and the frame's is the fading wave's.
+  ASSERT_GT(std::abs(expected - constantPacket), 1.0);
+  ASSERT_GT(std::abs(expected - undisplaced), 1.0);
+  EXPECT_NEAR(drawn, expected, 0.3) << "constant packet " << constantPacket << ", undisplaced " << undisplaced;
+}
+
+// C.6.4: with an environment map the wave preset shows the environment along the reflected view.
+// The map holds a smooth colour of the direction, so the reference is its closed form at the
+// direction the exact sphere reflects each pixel's ray to; the light is behind the sphere (no
+// highlight on the visible side) and the wave's amplitude 0 (no bumps).
+Vec3 environmentColour(const Vec3& direction) {
+  return {0.1f + 0.4f * (1 + direction[0]), 0.1f + 0.4f * (1 + direction[1]), 0.1f + 0.4f * (1 + direction[2])};
+}
+
+TEST(GeoTextureEnvironment, ReflectionFollowsTheClosedForm) {
+  const fs::path dir = test::freshTempDir("environment_map");
+  Image environment;
+  environment.width = 512;
+  environment.height = 256;
+  environment.channels = 3;
+  for (int y = 0; y < environment.height; ++y)
+    for (int x = 0; x < environment.width; ++x) {
+      // The inverse of the stated mapping at the texel's centre: u = 0.5 + atan2(x, -z) / 2 pi, v = acos(y) / pi.
+      const double phi = ((x + 0.5) / environment.width - 0.5) * 2 * std::numbers::pi;
+      const double theta = (y + 0.5) / environment.height * std::numbers::pi;
+      const Vec3 c = environmentColour(
+          {float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)), float(-std::sin(theta) * std::cos(phi))});
+      environment.pixels.insert(environment.pixels.end(), c.begin(), c.end());
+    }
+  const Status written = writeImage(dir / "room.exr", environment, PixelType::Half);
+  ASSERT_TRUE(written.isOk()) << written.describe();
+
+  const nlohmann::json material =
+      geoMaterial("wave-displacement", {{"fields", {0}}, {"wave", {{"amplitude", 0.0}, {"displace", false}}}});
+  const fs::path file = writePackage(spherePackage(material, Encoding::Float, false), "environment");
+  RenderSettings settings;
+  settings.view.scenes = {file.string()};
+  settings.view.width = settings.view.height = kSize;
+  settings.view.camera = "0,0," + std::to_string(kEye) + ":0,0,0";
+  settings.view.light = "0,0,-1";
+  settings.view.environmentMap = (dir / "room.exr").string();
+  settings.output = (dir / "reflection.exr").string();
+  Diagnostics diagnostics("bakeplay", true);
+  const Status status = runRender(settings, diagnostics);
+  ASSERT_TRUE(status.isOk()) << status.describe();
+  auto image = readImage(settings.output);
+  ASSERT_TRUE(image.isOk()) << image.status().describe();
+
+  int compared = 0;
+  double worst = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const auto hit = unitSphereHit(x, y);
+      if (!hit) continue;
+      const Vec3 n = normalize(*hit), view = normalize(Vec3{0, 0, kEye} - *hit);
+      const Vec3 reflected = n * (2 * dot(n, view)) - view;
+      const Vec3 expected = environmentColour(reflected);
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::fabs(image->at(x, y, c) - expected[std::size_t(c)])));
+      ++compared;
+    }
+  RecordProperty("comparedPixels", compared);
+  RecordProperty("largestError", std::to_string(worst));
+  EXPECT_GT(compared, 3000);
+  // Interpolated vertex normals of the 40 x 80 sphere against the exact normal, and bilinear
+  // filtering of the map, stay within this.
+  EXPECT_LT(worst, 0.03);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -42,6 +42,10 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
                      "threshold texture, Webb et al. 2002; packages without one draw the blend)")
       ->capture_default_str()
       ->check(CLI::IsMember({"blend", "threshold"}));
+  command.add_option("--environment-map", view.environmentMap,
+                     "GeoTextures' wave-displacement preset: an equirectangular image (linear RGB, e.g. EXR) the "
+                     "displaced surface reflects (seed 003 C.6.4)")
+      ->type_name("FILE");
 }
 
 CLI::App* addRenderCommand(CLI::App& app, bake::play::RenderSettings& render, std::string& size) {

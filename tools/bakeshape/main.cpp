@@ -15,10 +15,10 @@ int main(int argc, char** argv) {
                "UV-mapped shapes for texture-space techniques (column, globe: parametric, with TEXCOORD_0),\n"
                "and tileable example images (colour textures, height maps) when the output ends in .png.",
                "bakeshape"};
-  app.add_option("shape", settings.shape.name, "A shape: " + names + "; or, with a .png output, a pattern: " + patterns)
+  app.add_option("shape", settings.shape.name, "A shape: " + names + "; or, with a .png or .exr output, a pattern: " + patterns)
       ->type_name("NAME")
       ->required();
-  app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj), or pattern image (.png)")->required();
+  app.add_option("-o,--output", settings.output, "Mesh to write (.glb or .obj), or pattern image (.png, or .exr for the sky's radiance)")->required();
   app.add_option("--resolution", settings.shape.resolution,
                  "Grid cells along the longest side (shapes, default 64) or pixels per side (patterns)")
       ->default_str("64");
