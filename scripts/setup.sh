@@ -30,7 +30,8 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# Independent checkers used by the tests (Khronos glTF-Validator, ktx-parse, Ajv for JSON Schema).
+# Independent checkers used by the tests (Khronos glTF-Validator, ktx-parse, Ajv for JSON Schema), and
+# glTF-Transform, the tool the packages must survive (tests/pipe/gltf_transform_round_trip.sh).
 js="$here/tests/js"
 if [[ ! -f "$js/node_modules/.setup-stamp" || "$js/package-lock.json" -nt "$js/node_modules/.setup-stamp" ]]; then
   echo "setup: installing npm test checkers" >&2

@@ -7,7 +7,10 @@
 namespace bake::play {
 
 std::array<float, 4> baseColourOf(const nlohmann::json& material) {
-  std::array<float, 4> colour{0.8f, 0.8f, 0.8f, 1.0f};
+  // A material without baseColorFactor has glTF's default, white (glTF 2.0, 5.22); a primitive with no
+  // material at all is drawn light grey, so bare meshes keep some contrast against white paper.
+  const float fallback = material.is_object() ? 1.0f : 0.8f;
+  std::array<float, 4> colour{fallback, fallback, fallback, 1.0f};
   const nlohmann::json& factor = jsonMember(jsonMember(material, "pbrMetallicRoughness"), "baseColorFactor");
   if (factor.is_array() && factor.size() == 4) {
     for (std::size_t i = 0; i < 4; ++i) {

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The example packages of Makefile.examples (label cli): baked into a fresh folder, every one passes
-# the Khronos glTF-Validator with no errors and warnings only from tests/js/gltf_allowed_warnings.json.
+# the Khronos glTF-Validator with no errors and warnings only from tests/js/gltf_allowed_warnings.json,
+# and survives glTF-Transform's copy, prune, dedup and optimize with its baked data and its picture
+# (gltf_transform_round_trip.sh).
 #   example_packages_test.sh TOOLS_DIR SOURCE_DIR TMP_DIR
 set -euo pipefail
 tools="$1" source="$2" tmp="$3"
@@ -11,3 +13,5 @@ make -s -f "$source/Makefile.examples" -j2 BIN="$tools" OUT="$tmp" all >"$tmp/ma
 mapfile -t packages < <(find "$tmp" -name '*.glb' | sort)
 ((${#packages[@]} >= 10)) || { echo "FAIL: only ${#packages[@]} example packages" >&2; exit 1; }
 node "$source/tests/js/validate_packages.mjs" "${packages[@]}"
+# The same packages through glTF-Transform with the project's extension modules.
+bash "$source/tests/pipe/gltf_transform_round_trip.sh" "$tools" "$source" "$tmp"

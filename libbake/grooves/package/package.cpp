@@ -211,6 +211,10 @@ Result<glb::Package> buildGroovePackage(const GrooveScene& scene, const GrooveGr
   for (const Material& m : scene.materials) materials.push_back(packMaterial(m));
 
   glb::Package package;
+  // Required: a preview plane whose grooves live only in the extension's arrays: a tool that does not know
+  // BAKE_grooves must refuse the file rather than keep a plain plane (docs/architecture.md, "Required
+  // extensions").
+  package.extensionsRequired = {fmt::kExtension};
   // Blob i is bufferView i, in the order of fmt::kArrayKeys.
   package.blobs.reserve(fmt::kArrayCount);
   package.blobs.push_back(blobOf(grid.cellStart));
