@@ -127,8 +127,10 @@ Result<double> ObjectPlanner::meshRadius(const InputPath& mesh) const {
   return radius;
 }
 
-// At the least depth along the view axis of the object's bounding sphere (formats/scene.md; a
-// pinhole camera's scale depends on the depth, not the distance).
+// At the least depth along the view axis of the object's bounding sphere (formats/scene.md). A
+// pinhole camera maps a segment at depth z off the axis by angle theta to at most f / (z cos theta)
+// pixels per unit (a segment parallel to the image plane gets f / z; one turned toward the axis more),
+// so the scale at the nearest depth is divided by the cosine of the image corner's angle.
 Result<double> ObjectPlanner::pixelsPerUnit(const Object& object, double radius) const {
   if (scene.pixelsPerUnit) return (*scene.pixelsPerUnit)[1] * object.scale;
   double most = 0;
@@ -142,8 +144,10 @@ Result<double> ObjectPlanner::pixelsPerUnit(const Object& object, double radius)
     for (int k = 0; k < 3; ++k) depth += (object.position[k] - camera.eye[k]) * axis[k] / length;
     const double nearest = depth - radius * object.scale;
     if (nearest <= 0) return HUGE_VAL;
-    const double halfHeight = std::tan(camera.yfovDegrees * std::numbers::pi / 360.0) * nearest;
-    most = std::max(most, camera.height / (2 * halfHeight) * object.scale);
+    const double tanHalf = std::tan(camera.yfovDegrees * std::numbers::pi / 360.0);
+    const double aspect = double(camera.width) / camera.height;
+    const double cornerSecant = std::sqrt(1 + tanHalf * tanHalf * (1 + aspect * aspect));
+    most = std::max(most, camera.height / (2 * tanHalf * nearest) * cornerSecant * object.scale);
   }
   return most;
 }

@@ -6,7 +6,7 @@
 #   a. a parallel bake (make -j2) bakes and validates every example; a second run executes nothing
 #      (make -q says up to date, make -n prints no command, and no file under OUT changes);
 #   b. touching one input re-runs only what depends on it: ring.json re-bakes and re-validates the
-#      ring alone; hatching.json runs tambake once for its two outputs (grouped targets); the
+#      ring alone; hatching.json runs tambake once for its three outputs (grouped targets); the
 #      re-baked files are byte-identical to the first bake's (same options, a second run);
 #   c. determinism: a second full bake with the same options, and a third with every baker at -j 1
 #      (runs a and b have -j 2), are byte-identical to run a, file by file. Reports (*.report.json:
@@ -29,10 +29,11 @@ a="$tmp/a"
 b="$tmp/b"
 c="$tmp/c"
 baked=(pretzel.glb torus.glb glaze.png bands.png hammered.png knurl.png pretzel-fields.glb vase.glb ring.glb
-       plate.glb hatching.ktx2 torus-hatched.glb stippling.ktx2 pretzel-stippled.glb grooves-tiles.glb
-       grooves-record.glb grooves-plate.glb strokes-fur.glb strokes-tree.glb)
+       plate.glb balusters.glb knobs.glb sky.exr hatching.ktx2 hatching-threshold.ktx2 torus-hatched.glb
+       stippling.ktx2 pretzel-stippled.glb grooves-tiles.glb grooves-record.glb grooves-plate.glb strokes-fur.glb
+       strokes-tree.glb)
 # Validation renders every package headless (bakeplay validate: several views, non-empty images).
-validated=(pretzel-fields vase ring plate torus-hatched pretzel-stippled grooves-tiles grooves-record grooves-plate
+validated=(pretzel-fields vase ring plate balusters knobs torus-hatched pretzel-stippled grooves-tiles grooves-record grooves-plate
            strokes-fur strokes-tree)
 
 # a. Everything, in parallel; then nothing to do.
@@ -72,13 +73,13 @@ want="ring.d ring.glb ring.report.json stamps/ring.validated "
 [[ "$got" == "$want" ]] || fail "b: touching ring.json changed [$got], expected [$want]"
 [[ "$(grep -c '/revolbake ' <<<"$log")" == 1 ]] || fail "b: revolbake did not run exactly once: $log"
 
-step "b: touch hatching/hatching.json (one tambake run, two outputs)"
+step "b: touch hatching/hatching.json (one tambake run, three outputs)"
 touch "$tmp/pipelines/hatching/hatching.json"
 before="$after"
 log="$(mk -j2 OUT="$a" THREADS=2 all validate)"
 after="$(snapshot "$a")"
 got="$(changed "$before" "$after")"
-want="hatching.d hatching.ktx2 hatching.report.json stamps/torus-hatched.validated torus-hatched.glb "
+want="hatching-threshold.ktx2 hatching.d hatching.ktx2 hatching.report.json stamps/torus-hatched.validated torus-hatched.glb "
 [[ "$got" == "$want" ]] || fail "b: touching hatching.json changed [$got], expected [$want]"
 [[ "$(grep -c '/tambake ' <<<"$log")" == 1 ]] || fail "b: tambake did not run exactly once: $log"
 mk -q OUT="$a" THREADS=2 all validate || fail "b: still out of date after the re-bake"

@@ -149,7 +149,12 @@ void close(void* opaque) {
 OIIO::ImageSpec outputSpec(const Image& image, PixelType type, const std::string& extension) {
   OIIO::ImageSpec spec(image.width, image.height, image.channels, typeDescOf(type));
   spec.attribute("oiio:UnassociatedAlpha", 1);  // write the given values, no alpha division
-  if (extension == ".exr") spec.attribute("compression", "zip");
+  if (extension == ".exr") {
+    spec.attribute("compression", "zip");
+    // OpenEXR's writer stamps the current time (capDate) unless the image has one: a fixed empty
+    // stamp keeps equal images byte-identical.
+    spec.attribute("DateTime", "");
+  }
   return spec;
 }
 
