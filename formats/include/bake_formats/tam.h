@@ -18,9 +18,10 @@ inline constexpr const char* kMetadataKey = "BAKE_tam";
 inline constexpr int kMaxTones = 16;
 
 // The threshold texture (Webb et al. 2002, fine tone control): R8, same size and mip chain as the
-// TAM, one layer; a texel holds the darkness of the first tone whose image inks it (ink >= 0.5), or
-// 255 when no tone does. Its KTX2 metadata entry kMetadataKey carries the same JSON plus
-// "threshold": true.
+// TAM, one layer; a texel holds the darkness at which it turns to ink (ink >= kThresholdInk), ordered
+// by the stroke that first inked it and spaced so that inking every texel at or below a darkness
+// reproduces that darkness (formats/tam.md), or 255 when no tone inks it. Its KTX2 metadata entry
+// kMetadataKey carries the same JSON plus "threshold": true.
 inline constexpr double kThresholdInk = 0.5;
 
 // glTF material extension pointing a mesh at a TAM embedded in the package (an image with
