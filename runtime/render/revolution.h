@@ -6,6 +6,8 @@
 // map's gradient (Eq. 6), the projection's texture coordinates (cylindrical Eq. 10-13, spherical
 // Eq. 14-17, or arc length along the profile), the base colour, bump mapping from the displacement
 // map (Eq. 4-5) and Blinn-Phong; its depth is written so revolved objects intersect other geometry.
+// Copies in one box (Eq. 9, Fig. 13: a grid with mirrored axes, or a ring) are found by walking their
+// cells along the ray; with selfShadow a second march toward the light decides the direct light.
 //
 // libbake's reader (revolution/package/package_read.h) reads and checks the material extension;
 // revolution.cpp uploads the maps and draws.
@@ -52,7 +54,7 @@ class RevolutionRenderer : public TechniqueRenderer {
     unsigned program = 0;
     Mat4 world;
     RevolutionParams params;
-    Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};  // where the march runs: mesh bounds within the map's box
+    Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};  // the drawn box: the shape map's, or every copy's
     std::array<float, 4> baseColour{0.8f, 0.8f, 0.8f, 1.0f};
     unsigned shapeTexture = 0, displacementTexture = 0, arcLengthTexture = 0, colourTexture = 0;
   };
