@@ -1,11 +1,10 @@
 #!/usr/bin/env bash
 # Baked data survive glTF-Transform (npm @gltf-transform/cli, pinned in tests/js/package.json) with our
-# extension modules (integrations/gltf-transform): every package in FOLDER goes through `copy`,
-# `prune`, `dedup` and `optimize` (without the steps that rewrite what the extensions index: geometry
-# simplification, welding, vertex-attribute pruning, mesh and texture compression; see
-# integrations/gltf-transform/README.md), and the result must pass `bakeplay
-# validate` and show the first reference view of the original package (the same tolerances as a
-# golden image).
+# extension modules (integrations/gltf-transform): every package in FOLDER goes through `copy`, then
+# `prune`, `dedup` and `optimize`, each on the one before, without the steps that rewrite what the
+# extensions index (geometry simplification, welding, vertex-attribute pruning, mesh and texture
+# compression; integrations/gltf-transform/README.md). The result must pass `bakeplay validate` and
+# show the original package's first reference view (the tolerances of a golden image).
 #   gltf_transform_round_trip.sh TOOLS_DIR SOURCE_DIR FOLDER
 set -euo pipefail
 tools="$(cd "$1" && pwd)" source="$(cd "$2" && pwd)" folder="$(cd "$3" && pwd)"
@@ -18,12 +17,17 @@ mkdir -p "$work/views"
 failures=0
 checked=0
 mapfile -t packages < <(find "$folder" -maxdepth 1 -name '*.glb' | sort)
+# One chain per package, copy -> prune -> dedup -> optimize, each step reading the one before: every
+# step must run and know every extension, and the chain's end must still be the same package (one
+# validation per package keeps the test to about a minute).
 for package in "${packages[@]}"; do
   name="$(basename "$package" .glb)"
   # Only packages that carry a BAKE_* extension (the generated meshes are plain glTF).
   grep -aq '"BAKE_' "$package" || continue
   "$tools/bakeplay/bakeplay" validate -q "$package" --views "$work/views/$name" --size 96
   golden="$work/views/$name/$name.view0.png"
+  input="$package"
+  ok=true
   for step in copy prune dedup optimize; do
     # Vertex-attribute pruning keeps TEXCOORD_n only for materials with standard textures, and the
     # grooves' TEXCOORD_0 is the groove domain: prune and optimize run without it.
@@ -32,20 +36,21 @@ for package in "${packages[@]}"; do
     [[ $step == optimize ]] && options=(--compress false --texture-compress false --simplify false --weld false
                                         --prune-attributes false)
     out="$work/$name.$step.glb"
-    if ! (cd "$source/tests/js" && "$cli" "$step" "$package" "$out" "${options[@]}" --config "$config") \
+    if ! (cd "$source/tests/js" && "$cli" "$step" "$input" "$out" "${options[@]}" --config "$config") \
         >"$work/$name.$step.log" 2>&1; then
-      echo "FAIL: gltf-transform $step $name:"; cat "$work/$name.$step.log"; failures=$((failures + 1)); continue
+      echo "FAIL: gltf-transform $step $name:"; cat "$work/$name.$step.log"; ok=false; break
     fi
     if grep -q "Missing" "$work/$name.$step.log"; then
-      echo "FAIL: gltf-transform $step $name did not know an extension:"; cat "$work/$name.$step.log"
-      failures=$((failures + 1)); continue
+      echo "FAIL: gltf-transform $step $name did not know an extension:"; cat "$work/$name.$step.log"; ok=false; break
     fi
-    if ! "$tools/bakeplay/bakeplay" validate -q "$out" --golden "$golden" --size 96; then
-      echo "FAIL: $name after gltf-transform $step"; failures=$((failures + 1)); continue
-    fi
-    checked=$((checked + 1))
+    input="$out"
   done
+  if $ok && ! "$tools/bakeplay/bakeplay" validate -q "$input" --golden "$golden" --size 96; then
+    echo "FAIL: $name after gltf-transform copy, prune, dedup and optimize"; ok=false
+  fi
+  if $ok; then checked=$((checked + 1)); else failures=$((failures + 1)); fi
 done
-echo "gltf-transform round trip: $checked package/step pairs kept their baked data and picture, $failures failed"
-((checked >= 40)) || { echo "FAIL: only $checked pairs checked" >&2; exit 1; }
+echo "gltf-transform round trip: $checked packages kept their baked data and picture through copy, prune," \
+     "dedup and optimize; $failures failed"
+((checked >= 12)) || { echo "FAIL: only $checked packages checked" >&2; exit 1; }
 ((failures == 0))
