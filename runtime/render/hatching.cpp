@@ -33,6 +33,14 @@ GLuint makeBuffer(const void* data, std::size_t bytes) {
   return buffer;
 }
 
+// Trilinear filtering over the mip chain, repeating both ways: how the TAM tiles the surface.
+void trilinearRepeating(GLuint texture) {
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
 // Every level of the TAM, layers as array slices.
 GLuint uploadTam(const ktx2::Texture& tam) {
   const bool rgba = tam.format == ktx2::Format::RGBA8;
@@ -46,10 +54,7 @@ GLuint uploadTam(const ktx2::Texture& tam) {
                         GLsizei(tam.layers), rgba ? GL_RGBA : GL_RED, GL_UNSIGNED_BYTE, tam.levels[level].data());
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  trilinearRepeating(texture);
   return texture;
 }
 
@@ -64,10 +69,7 @@ GLuint uploadThreshold(const ktx2::Texture& threshold) {
                         GLsizei(threshold.levelHeight(level)), GL_RED, GL_UNSIGNED_BYTE, threshold.levels[level].data());
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  trilinearRepeating(texture);
   return texture;
 }
 

@@ -1018,34 +1018,7 @@ TEST_F(GroovesOracle, ColumnPackageValidatesAgainstItsGoldenImage) {
   ASSERT_FALSE(surface.tangents.empty());
   const Baked baked = bake(exampleScene("flutes.json"), "column_validate", std::nullopt, 1, &surface, false);
   ASSERT_FALSE(baked.file.empty());
-  const fs::path folder = baked.file.parent_path();
-  const fs::path file = baked.file;
-
-  ValidateSettings settings;
-  settings.packages = {file.string()};
-  settings.size = 128;
-  settings.viewsDirectory = (folder / "views").string();
-  settings.common.quiet = true;
-  const std::string golden = "runtime/grooves-column.v1.png";
-  if (!test::updatingGoldens()) settings.goldens = {test::goldenPath(golden).string()};
-  Diagnostics diagnostics("bakeplay", true);
-  std::FILE* out = std::tmpfile();
-  const Status status = runValidate(settings, diagnostics, out);
-  std::rewind(out);
-  std::string verdicts;
-  char line[4096];
-  while (std::fgets(line, sizeof line, out)) verdicts += line;
-  std::fclose(out);
-  EXPECT_TRUE(status.isOk()) << status.describe() << "\n" << verdicts;
-  // The first view as written, against the golden with the runtime tests' tolerance (and written as
-  // the golden in update mode).
-  std::vector<fs::path> views;
-  for (const auto& entry : fs::directory_iterator(folder / "views")) views.push_back(entry.path());
-  std::sort(views.begin(), views.end());
-  ASSERT_FALSE(views.empty());
-  Result<Image> first = readImage(views.front());
-  ASSERT_TRUE(first.isOk()) << first.status().describe();
-  EXPECT_TRUE(test::matchesGoldenImage(*first, golden)) << views.front();
+  test::expectValidatesAgainstGolden(baked.file, "runtime/grooves-column.v1.png", baked.file.parent_path() / "views");
 }
 
 TEST(GroovesPackage, RegisteredForTheExtension) {

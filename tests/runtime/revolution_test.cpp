@@ -927,15 +927,25 @@ TEST(RevolutionValidate, RenderRefusesADamagedPackage) {
 // ---------------------------------------------------------------------------------------------
 // End to end: revolbake's package of the example vase against the vase's own profile
 
-TEST(RevolutionBaked, VaseSilhouetteMatchesItsProfileWithinTheReportedError) {
-  const fs::path dir = test::freshTempDir("baked_vase");
+// revolbake's settings for an example profile of pipelines/revolution, baked into `dir` at 512 texels.
+revolution::Settings exampleBake(const std::string& profile, const fs::path& dir) {
   revolution::Settings settings;
-  settings.input = (test::sourceDir() / "pipelines" / "revolution" / "vase.json").string();
-  settings.output = (dir / "vase.glb").string();
+  settings.input = (test::sourceDir() / "pipelines" / "revolution" / (profile + ".json")).string();
+  settings.output = (dir / (profile + ".glb")).string();
   settings.resolution = 512;
   settings.common.quiet = true;
+  return settings;
+}
+
+Status runBake(const revolution::Settings& settings) {
   Diagnostics quiet("revolbake", true);
-  const Status baked = revolution::run(settings, quiet);
+  return revolution::run(settings, quiet);
+}
+
+TEST(RevolutionBaked, VaseSilhouetteMatchesItsProfileWithinTheReportedError) {
+  const fs::path dir = test::freshTempDir("baked_vase");
+  const revolution::Settings settings = exampleBake("vase", dir);
+  const Status baked = runBake(settings);
   ASSERT_TRUE(baked.isOk()) << baked.describe();
   auto package = glb::read(settings.output);
   ASSERT_TRUE(package.isOk()) << package.status().describe();
@@ -977,15 +987,10 @@ TEST(RevolutionBaked, VaseSilhouetteMatchesItsProfileWithinTheReportedError) {
 // the golden image (tests/golden/runtime/revolution-balusters.v1.png).
 TEST(RevolutionBaked, BalusterRowValidatesAgainstItsGoldenImage) {
   const fs::path dir = test::freshTempDir("baked_balusters");
-  revolution::Settings settings;
-  settings.input = (test::sourceDir() / "pipelines" / "revolution" / "baluster.json").string();
-  settings.output = (dir / "balusters.glb").string();
-  settings.resolution = 512;
+  revolution::Settings settings = exampleBake("baluster", dir);
   settings.grid = {5, 1, 1};
   settings.gridSpacing = {0.55, 0, 0};
-  settings.common.quiet = true;
-  Diagnostics quiet("revolbake", true);
-  const Status baked = revolution::run(settings, quiet);
+  const Status baked = runBake(settings);
   ASSERT_TRUE(baked.isOk()) << baked.describe();
   auto package = glb::read(settings.output);
   ASSERT_TRUE(package.isOk()) << package.status().describe();
@@ -993,25 +998,7 @@ TEST(RevolutionBaked, BalusterRowValidatesAgainstItsGoldenImage) {
   EXPECT_EQ(extension["replicas"]["count"], nlohmann::json({5, 1, 1}));
   EXPECT_EQ(extension["selfShadow"], true);
 
-  ValidateSettings validate;
-  validate.packages = {settings.output};
-  validate.size = 128;
-  validate.viewsDirectory = (dir / "views").string();
-  validate.common.quiet = true;
-  const std::string golden = "runtime/revolution-balusters.v1.png";
-  if (!test::updatingGoldens()) validate.goldens = {test::goldenPath(golden).string()};
-  Diagnostics diagnostics("bakeplay", true);
-  std::FILE* out = std::tmpfile();
-  const Status status = runValidate(validate, diagnostics, out);
-  std::fclose(out);
-  EXPECT_TRUE(status.isOk()) << status.describe();
-  std::vector<fs::path> views;
-  for (const auto& entry : fs::directory_iterator(dir / "views")) views.push_back(entry.path());
-  std::sort(views.begin(), views.end());
-  ASSERT_FALSE(views.empty());
-  Result<Image> first = readImage(views.front());
-  ASSERT_TRUE(first.isOk()) << first.status().describe();
-  EXPECT_TRUE(test::matchesGoldenImage(*first, golden)) << views.front();
+  test::expectValidatesAgainstGolden(settings.output, "runtime/revolution-balusters.v1.png", dir / "views");
 }
 
 }  // namespace
