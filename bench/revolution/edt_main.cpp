@@ -1,10 +1,12 @@
 // bench-revolution-edt: the exact binary EDT behind shape maps from binary images (libbake
-// squaredEdt2d, Felzenszwalb & Huttenlocher 2012) against OpenCV's exact distance transform
-// (cv::distanceTransform, DIST_L2 with DIST_MASK_PRECISE) on the same images: random discs on square
-// images of 512^2 ... 4096^2. Both produce the Euclidean distance of every texel to the nearest
-// feature texel (the discs' texels); ours includes the conversion to 0/inf and the final square
-// root, so both columns time "uint8 image in, float distances out". Medians of --repeats runs; the
-// figure to quote is the ratio from one run. Both sides use all hardware threads.
+// distanceEdtBinary, edt_binary.cpp) against OpenCV's exact distance transform (cv::distanceTransform,
+// DIST_L2 with DIST_MASK_PRECISE) on the same images: random discs on square images. Both go from the
+// 8-bit image (features = its zero texels) to float distances and use all hardware threads. Medians
+// of --repeats runs; the figure to quote is the ratio from one run.
+// Correctness is checked apart from OpenCV (which is wrong beyond 4096 wide): at 4,096 random texels
+// plus the corners of every image, ours must equal the square root of the brute-force squared distance
+// to the feature texels that border a non-feature texel (the nearest feature always does), computed
+// here in 64-bit integers. --check-sizes adds sizes that are only checked, not timed against OpenCV.
 // Output: CSV on stdout, one row per size.
 #include <algorithm>
 #include <chrono>
@@ -14,13 +16,14 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "bake/revolution/shape_map.h"
-#include "core/parallel.h"
 
 namespace {
 
@@ -49,47 +52,70 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-// Conversion and square root are part of our pipeline (distanceFromBinary does the same), so they
-// run in parallel too.
 void ours(const cv::Mat& image, std::vector<float>& out) {
+  out.resize(std::size_t(image.cols) * image.rows);
+  bake::revolution::distanceEdtBinary(image.data, bake::revolution::FeatureTexels::zero, image.cols, image.rows, out.data());
+}
+
+// The check described above: texels checked and texels that differ.
+std::pair<int, int> checkAgainstBruteForce(const cv::Mat& image, const std::vector<float>& mine, unsigned seed) {
   const int w = image.cols, h = image.rows;
-  out.resize(std::size_t(w) * h);
-  bake::parallelForBlocks(std::size_t(h), std::max<std::size_t>(1, (std::size_t(1) << 20) / w), 0, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t y = begin; y < end; ++y) {
-      const unsigned char* row = image.ptr<unsigned char>(int(y));
-      float* dst = out.data() + y * w;
-      for (int x = 0; x < w; ++x) dst[x] = row[x] == 0 ? 0.0f : std::numeric_limits<float>::infinity();
+  auto isFeature = [&](int x, int y) { return image.at<unsigned char>(y, x) == 0; };
+  std::vector<std::pair<int, int>> border;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!isFeature(x, y)) continue;
+      const bool edge = (x > 0 && !isFeature(x - 1, y)) || (x + 1 < w && !isFeature(x + 1, y)) ||
+                        (y > 0 && !isFeature(x, y - 1)) || (y + 1 < h && !isFeature(x, y + 1));
+      if (edge) border.push_back({x, y});
     }
-  });
-  bake::revolution::squaredEdt2d(out, w, h);
-  bake::parallelForBlocks(out.size(), std::size_t(1) << 20, 0, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) out[k] = std::sqrt(out[k]);
-  });
+  std::vector<std::pair<int, int>> probes{{0, 0}, {w - 1, 0}, {0, h - 1}, {w - 1, h - 1}};
+  std::mt19937 rng(seed);
+  for (int k = 0; k < 4096; ++k) probes.push_back({int(rng() % unsigned(w)), int(rng() % unsigned(h))});
+  int wrong = 0;
+  for (const auto& [x, y] : probes) {
+    std::uint64_t best = isFeature(x, y) ? 0 : std::numeric_limits<std::uint64_t>::max();
+    for (const auto& [bx, by] : border) {
+      if (best == 0) break;
+      const std::int64_t dx = bx - x, dy = by - y;
+      best = std::min(best, std::uint64_t(dx * dx + dy * dy));
+    }
+    const float expected = best == std::numeric_limits<std::uint64_t>::max() ? std::numeric_limits<float>::infinity()
+                                                                               : float(std::sqrt(double(best)));
+    if (mine[std::size_t(y) * w + x] != expected) ++wrong;
+  }
+  return {int(probes.size()), wrong};
 }
 
 }  // namespace
 
+std::vector<int> parseSizes(const std::string& list) {
+  std::vector<int> sizes;
+  for (std::size_t at = 0; at < list.size();) {
+    const std::size_t comma = list.find(',', at);
+    sizes.push_back(std::atoi(list.substr(at, comma == std::string::npos ? std::string::npos : comma - at).c_str()));
+    at = comma == std::string::npos ? list.size() : comma + 1;
+  }
+  return sizes;
+}
+
 int main(int argc, char** argv) {
-  std::vector<int> sizes{512, 1024, 2048, 4096};
+  std::vector<int> sizes{512, 1024, 2048, 4096, 8192}, checkSizes;
   int repeats = 5;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     if (arg == "--repeats" && k + 1 < argc) {
       repeats = std::max(1, std::atoi(argv[++k]));
     } else if (arg == "--sizes" && k + 1 < argc) {
-      sizes.clear();
-      std::string list = argv[++k];
-      for (std::size_t at = 0; at < list.size();) {
-        const std::size_t comma = list.find(',', at);
-        sizes.push_back(std::atoi(list.substr(at, comma - at).c_str()));
-        at = comma == std::string::npos ? list.size() : comma + 1;
-      }
+      sizes = parseSizes(argv[++k]);
+    } else if (arg == "--check-sizes" && k + 1 < argc) {
+      checkSizes = parseSizes(argv[++k]);
     } else {
-      std::fprintf(stderr, "usage: bench-revolution-edt [--sizes 512,1024,...] [--repeats N]\n");
+      std::fprintf(stderr, "usage: bench-revolution-edt [--sizes 512,1024,...] [--check-sizes 16384] [--repeats N]\n");
       return 1;
     }
   }
-  std::printf("size,ours_ms,opencv_ms,ours_over_opencv,max_abs_diff_texels,opencv_threads\n");
+  std::printf("size,ours_ms,opencv_ms,ours_over_opencv,max_abs_diff_opencv,checked,wrong,threads\n");
   for (int size : sizes) {
     const cv::Mat image = randomDiscs(size, 1234u + unsigned(size));
     std::vector<double> oursTimes, peerTimes;
@@ -110,8 +136,19 @@ int main(int argc, char** argv) {
       for (int x = 0; x < size; ++x)
         worst = std::max(worst, double(std::abs(row[x] - mine[std::size_t(y) * size + x])));
     }
+    const auto [checked, wrong] = checkAgainstBruteForce(image, mine, unsigned(size));
     const double a = median(oursTimes) * 1e3, b = median(peerTimes) * 1e3;
-    std::printf("%d,%.3f,%.3f,%.3f,%.3g,%d\n", size, a, b, a / b, worst, cv::getNumThreads());
+    std::printf("%d,%.3f,%.3f,%.3f,%.3g,%d,%d,%d\n", size, a, b, a / b, worst, checked, wrong, cv::getNumThreads());
+    std::fflush(stdout);
+  }
+  for (int size : checkSizes) {
+    const cv::Mat image = randomDiscs(size, 1234u + unsigned(size));
+    std::vector<float> mine;
+    auto t0 = std::chrono::steady_clock::now();
+    ours(image, mine);
+    const double a = seconds(t0, std::chrono::steady_clock::now()) * 1e3;
+    const auto [checked, wrong] = checkAgainstBruteForce(image, mine, unsigned(size));
+    std::printf("%d,%.3f,,,,%d,%d,%d\n", size, a, checked, wrong, cv::getNumThreads());
     std::fflush(stdout);
   }
   return 0;

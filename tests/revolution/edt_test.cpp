@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <tuple>
+#include <utility>
+#include <cstdint>
 
 #include "bake/revolution/shape_map.h"
 #include "revolution/profile_shapes.h"
@@ -28,22 +31,85 @@ std::vector<float> bruteForceSquared(const std::vector<float>& f, int w, int h) 
   return out;
 }
 
+// Brute force over a list of feature texels (64-bit, so large images stay exact).
+std::uint64_t nearestSquared(const std::vector<std::pair<int, int>>& features, int i, int j) {
+  std::uint64_t best = std::numeric_limits<std::uint64_t>::max();
+  for (const auto& [x, y] : features) {
+    const std::int64_t dx = x - i, dy = y - j;
+    best = std::min(best, std::uint64_t(dx * dx + dy * dy));
+  }
+  return best;
+}
+
+// Every texel of an image with random features, both polarities, squared and rooted, against brute
+// force. The sizes cross the transform's bands of rows (tall images) and its row blocks.
 TEST(SquaredEdt, MatchesBruteForceOnRandomImages) {
   std::mt19937 rng(42);
-  for (auto [w, h, density] : {std::tuple{17, 23, 0.1}, {40, 9, 0.02}, {1, 30, 0.1}, {33, 1, 0.2}, {31, 31, 0.001}, {25, 25, 0.6}}) {
+  for (auto [w, h, density] : {std::tuple{17, 23, 0.1}, {40, 9, 0.02}, {1, 30, 0.1}, {33, 1, 0.2}, {31, 31, 0.001},
+                               {25, 25, 0.6}, {7, 1100, 0.002}, {300, 900, 0.0002}, {3000, 50, 0.0005}}) {
     std::bernoulli_distribution feature(density);
-    std::vector<float> f(std::size_t(w) * h);
-    for (float& v : f) v = feature(rng) ? 0.0f : kInf;
-    const std::vector<float> expected = bruteForceSquared(f, w, h);
-    squaredEdt2d(f, w, h);
-    for (std::size_t k = 0; k < f.size(); ++k) ASSERT_EQ(f[k], expected[k]) << w << "x" << h << " texel " << k;
+    std::vector<std::uint8_t> image(std::size_t(w) * h);
+    for (std::uint8_t& v : image) v = feature(rng) ? 255 : 0;
+    for (const FeatureTexels which : {FeatureTexels::nonZero, FeatureTexels::zero}) {
+      // The feature texels that border another kind of texel (or all, when there are only features):
+      // the nearest feature to a texel that is not one always does, which keeps the dense polarity cheap.
+      auto isFeature = [&](int i, int j) {
+        return i >= 0 && j >= 0 && i < w && j < h && (image[std::size_t(j) * w + i] != 0) == (which == FeatureTexels::nonZero);
+      };
+      std::vector<std::pair<int, int>> features;
+      bool any = false;
+      for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+          if (!isFeature(i, j)) continue;
+          any = true;
+          const bool border = (i > 0 && !isFeature(i - 1, j)) || (i + 1 < w && !isFeature(i + 1, j)) ||
+                              (j > 0 && !isFeature(i, j - 1)) || (j + 1 < h && !isFeature(i, j + 1));
+          if (border) features.push_back({i, j});
+        }
+      std::vector<std::uint32_t> squared(image.size());
+      std::vector<float> distance(image.size());
+      squaredEdtBinary(image.data(), which, w, h, squared.data());
+      distanceEdtBinary(image.data(), which, w, h, distance.data());
+      for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+          const std::size_t k = std::size_t(j) * w + i;
+          const std::uint64_t expected = isFeature(i, j) ? 0 : nearestSquared(features, i, j);
+          ASSERT_EQ(squared[k], any ? expected : kNoFeature) << w << "x" << h << " texel " << i << "," << j;
+          ASSERT_EQ(distance[k], any ? float(std::sqrt(double(expected))) : kInf) << w << "x" << h << " texel " << k;
+        }
+    }
   }
 }
 
-TEST(SquaredEdt, NoFeatureStaysInfinite) {
-  std::vector<float> f(12, kInf);
-  squaredEdt2d(f, 4, 3);
-  for (float v : f) EXPECT_EQ(v, kInf);
+TEST(SquaredEdt, NoFeatureIsReported) {
+  const std::vector<std::uint8_t> image(12, 0);
+  std::vector<std::uint32_t> squared(12);
+  std::vector<float> distance(12);
+  squaredEdtBinary(image.data(), FeatureTexels::nonZero, 4, 3, squared.data());
+  distanceEdtBinary(image.data(), FeatureTexels::nonZero, 4, 3, distance.data());
+  for (std::uint32_t v : squared) EXPECT_EQ(v, kNoFeature);
+  for (float v : distance) EXPECT_EQ(v, kInf);
+  squaredEdtBinary(image.data(), FeatureTexels::zero, 4, 3, squared.data());
+  for (std::uint32_t v : squared) EXPECT_EQ(v, 0u);
+}
+
+// Distances beyond 4096 texels, whose squares a float no longer holds: two single features in the
+// far corners of a long image, checked in closed form along the row and at the far end of the column.
+TEST(SquaredEdt, ExactBeyondFloatPrecision) {
+  const int w = 20000, h = 3;
+  std::vector<std::uint8_t> image(std::size_t(w) * h, 0);
+  image[0] = 1;                                  // (0, 0)
+  image[std::size_t(2) * w + (w - 1)] = 1;       // (w - 1, 2)
+  std::vector<std::uint32_t> squared(image.size());
+  squaredEdtBinary(image.data(), FeatureTexels::nonZero, w, h, squared.data());
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; i += 997) {
+      const std::uint64_t a = std::uint64_t(i) * i + std::uint64_t(j) * j;
+      const std::uint64_t b = std::uint64_t(w - 1 - i) * (w - 1 - i) + std::uint64_t(2 - j) * (2 - j);
+      ASSERT_EQ(squared[std::size_t(j) * w + i], std::min(a, b)) << i << "," << j;
+    }
+  // Texel (10000, 0): 9999^2 + 2^2 to the far feature, an odd number above 2^24 that no float holds.
+  EXPECT_EQ(squared[std::size_t(w / 2)], 99980005u);
 }
 
 TEST(DistanceFromBinary, SurfaceHalfATexelBetweenThePhases) {

@@ -1,11 +1,6 @@
 // Shape maps from images (shape_map.h).
-// Binary images: the exact Euclidean distance transform of Felzenszwalb & Huttenlocher ("Distance
-// transforms of sampled functions", Theory of Computing 2012, section 2): the squared distance is
-// separable, min over columns of (min over rows), and each 1D pass is the lower envelope of the
-// parabolas (q - v)^2 + f(v), built left to right in linear time. For a 0/inf input the column pass
-// reduces to the distance to the nearest feature in the column (two sweeps over the rows, all
-// columns at once); the row pass runs the envelope, rows in parallel. Both phases are transformed and
-// the surface put half a texel between inside and outside centres.
+// Binary images: the exact Euclidean distance transform of both phases (edt_binary.cpp), the surface
+// put half a texel between inside and outside centres.
 // Anti-aliased images: after Gustavson & Strand ("Anti-aliased Euclidean distance transform",
 // Pattern Recognition Letters 2011): an edge texel's coverage a and the local edge direction give
 // the offset of the edge from its centre (the area cut from a unit square by a line), hence the
@@ -22,81 +17,9 @@
 #include <limits>
 
 #include "bake/revolution/shape_map.h"
-#include "core/parallel.h"
 
 namespace bake::revolution {
 namespace {
-
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr std::size_t kBlockTexels = std::size_t(1) << 20;
-
-// Lower envelope of parabolas over one line: d[q] = min_v (q - v)^2 + f[v], for f holding integer
-// squared distances (or inf). `v` and `g` (the parabolas' f[v] + v^2) are scratch of size n; d may
-// alias f. Integer arithmetic without division: parabola k on the stack is hidden by the new one at
-// q when their meeting point s(k, q) is not right of s(k - 1, k), i.e. when
-// (g_q - g_k)(v_k - v_{k-1}) <= (g_k - g_{k-1})(q - v_k); the fill then moves to the next parabola
-// where it becomes the lower one.
-void envelope1d(const float* f, int n, float* d, int* v, std::int64_t* g) {
-  int k = -1;
-  for (int q = 0; q < n; ++q) {
-    if (f[q] == kInf) continue;
-    const std::int64_t gq = std::int64_t(f[q]) + std::int64_t(q) * q;
-    while (k >= 1 && (gq - g[k]) * (v[k] - v[k - 1]) <= (g[k] - g[k - 1]) * (q - v[k])) --k;
-    ++k;
-    v[k] = q;
-    g[k] = gq;
-  }
-  if (k < 0) {
-    std::fill(d, d + n, kInf);
-    return;
-  }
-  int j = 0;
-  for (int q = 0; q < n; ++q) {
-    // Value of parabola j at q is g_j - 2 q v_j + q^2; compare without the common q^2.
-    while (j < k && g[j + 1] - 2 * std::int64_t(q) * v[j + 1] <= g[j] - 2 * std::int64_t(q) * v[j]) ++j;
-    d[q] = float(g[j] - 2 * std::int64_t(q) * v[j] + std::int64_t(q) * q);
-  }
-}
-
-// Column pass for a 0/inf image: squared distance to the nearest feature in the same column.
-// Blocks of columns sweep up, then down; within a block the rows are contiguous, so all its
-// columns advance together.
-void columnPass(std::vector<float>& f, int width, int height) {
-  // Blocks of about a million texels: small images run on the calling thread, as starting workers
-  // would cost more than the work (block sizes depend on the image only, so results never vary).
-  const std::size_t columnsPerBlock = std::max<std::size_t>(128, kBlockTexels / std::max(1, height));
-  parallelForBlocks(std::size_t(width), columnsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
-    const std::size_t n = end - begin;
-    std::vector<float> run(n, kInf);
-    for (int j = 0; j < height; ++j) {
-      float* row = f.data() + std::size_t(j) * width + begin;
-      for (std::size_t i = 0; i < n; ++i) {
-        run[i] = row[i] == 0 ? 0.0f : run[i] + 1.0f;
-        row[i] = run[i];
-      }
-    }
-    std::fill(run.begin(), run.end(), kInf);
-    for (int j = height - 1; j >= 0; --j) {
-      float* row = f.data() + std::size_t(j) * width + begin;
-      for (std::size_t i = 0; i < n; ++i) {
-        run[i] = std::min(row[i], run[i] + 1.0f);  // row[i] is 0 at features
-        row[i] = run[i] * run[i];                   // inf stays inf
-      }
-    }
-  });
-}
-
-void rowPass(std::vector<float>& f, int width, int height) {
-  const std::size_t rowsPerBlock = std::max<std::size_t>(1, kBlockTexels / std::max(1, width));
-  parallelForBlocks(std::size_t(height), rowsPerBlock, 0, [&](std::size_t begin, std::size_t end) {
-    std::vector<int> v(width);
-    std::vector<std::int64_t> g(width);
-    for (std::size_t j = begin; j < end; ++j) {
-      float* row = f.data() + j * width;
-      envelope1d(row, width, row, v.data(), g.data());  // in place: the fill reads only v and g
-    }
-  });
-}
 
 bool insideAt(const CoverageImage& image, std::size_t k) { return image.coverage[k] >= 0.5f; }
 
@@ -142,12 +65,6 @@ void gradientFromDistance(ShapeField& field) {
 
 }  // namespace
 
-void squaredEdt2d(std::vector<float>& f, int width, int height) {
-  if (width <= 0 || height <= 0) return;
-  columnPass(f, width, height);
-  rowPass(f, width, height);
-}
-
 bool isBinary(const CoverageImage& image) {
   for (float a : image.coverage)
     if (a != 0.0f && a != 1.0f) return false;
@@ -158,21 +75,17 @@ ShapeField distanceFromBinary(const CoverageImage& input) {
   const CoverageImage image = sanitised(input);
   ShapeField field = emptyField(image);
   const std::size_t count = field.distance.size();
-  std::vector<float> toInside(count), toOutside(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    const bool inside = insideAt(image, k);
-    toInside[k] = inside ? 0.0f : kInf;
-    toOutside[k] = inside ? kInf : 0.0f;
-  }
-  squaredEdt2d(toInside, image.width, image.height);
-  squaredEdt2d(toOutside, image.width, image.height);
+  std::vector<std::uint8_t> inside(count);
+  for (std::size_t k = 0; k < count; ++k) inside[k] = insideAt(image, k) ? 1 : 0;
+  std::vector<std::uint32_t> toInside(count), toOutside(count);
+  squaredEdtBinary(inside.data(), FeatureTexels::nonZero, image.width, image.height, toInside.data());
+  squaredEdtBinary(inside.data(), FeatureTexels::zero, image.width, image.height, toOutside.data());
   // No texel of the other phase at all: the distance is unbounded; store a large finite value.
   const float far = float(2.0 * (image.width + image.height));
   for (std::size_t k = 0; k < count; ++k) {
-    const bool inside = insideAt(image, k);
-    const float squared = inside ? toOutside[k] : toInside[k];
-    const float texels = squared == kInf ? far : std::sqrt(squared) - 0.5f;
-    field.distance[k] = float((inside ? -texels : texels) * image.texelSize);
+    const std::uint32_t squared = inside[k] ? toOutside[k] : toInside[k];
+    const float texels = squared == kNoFeature ? far : float(std::sqrt(double(squared)) - 0.5);
+    field.distance[k] = float((inside[k] ? -texels : texels) * image.texelSize);
   }
   gradientFromDistance(field);
   return field;

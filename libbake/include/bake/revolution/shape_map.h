@@ -62,9 +62,15 @@ ShapeField distanceFromBinary(const CoverageImage& image);
 // the coverage and its gradient.
 ShapeField distanceFromCoverage(const CoverageImage& image);
 
-// Exact 1D/2D squared EDT building blocks (Felzenszwalb & Huttenlocher 2012), exposed for tests and
-// the benchmark: `f` holds 0 at feature texels and +inf elsewhere.
-void squaredEdt2d(std::vector<float>& f, int width, int height);
+// The exact EDT of a binary image (edt_binary.cpp): `image` holds width x height bytes; the feature
+// texels are its non-zero bytes, or its zero bytes (as OpenCV's distanceTransform counts them).
+// squaredEdtBinary writes the squared distance in texels to the nearest feature texel (kNoFeature
+// where the image has none); distanceEdtBinary its square root, correctly rounded (+inf where none).
+// Exact for images up to 32767 texels a side; threads never change the result.
+enum class FeatureTexels { nonZero, zero };
+constexpr std::uint32_t kNoFeature = 0xffffffffu;
+void squaredEdtBinary(const std::uint8_t* image, FeatureTexels which, int width, int height, std::uint32_t* out);
+void distanceEdtBinary(const std::uint8_t* image, FeatureTexels which, int width, int height, float* out);
 
 // Encoded texels, ready for upload (RGBA of the encoding's component type, little-endian), and the
 // scale the distance is stored with.
