@@ -10,7 +10,7 @@ quick=0
 for arg in "$@"; do if [[ "$arg" == "--quick" ]]; then quick=1; fi; done
 bench_build bench-revolution-march bench-revolution-edt
 "$build/bench/revolution/bench-revolution-march" "${args[@]}"
-if [[ $quick == 1 ]]; then edt_args=(--sizes 512,1024,2048 --repeats 3); else edt_args=(); fi
+if [[ $quick == 1 ]]; then edt_args=(--sizes 512,1024,2048 --repeats 3); else edt_args=(--check-sizes 16384); fi
 echo "bench-revolution-edt ${edt_args[*]}" >&2
 "$build/bench/revolution/bench-revolution-edt" "${edt_args[@]}" > "$out/edt.csv"
 
@@ -21,7 +21,7 @@ echo "bench-revolution-edt ${edt_args[*]}" >&2
   echo "bake seconds at resolution 1024 (distance + encode/decode/margin):"
   awk -F, 'NR > 1 && $2 == 1024 { printf "  %-8s %-8s %.4f + %.4f = %.4f\n", $1, $5, $6, $7, $6 + $7 }' "$out/bake.csv"
   echo "EDT ours / OpenCV:"
-  awk -F, 'NR > 1 { printf "  %5d^2  %.2f\n", $1, $4 }' "$out/edt.csv"
+  awk -F, 'NR > 1 { printf "  %5d^2  %s  (wrong %d of %d checked)\n", $1, ($4 == "" ? "-" : $4), $7, $6 }' "$out/edt.csv"
 } | tee "$out/summary.txt"
 
 profiles="$(awk -F, 'NR > 1 { print $1 }' "$out/march.csv" | awk '!seen[$0]++' | tr '\n' ' ')"
