@@ -49,7 +49,9 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
     stats.details = {{"edgeFlips", h.edgeFlips},
                      {"timeStep", h.timeStep},
                      {"mollifyEpsilon", h.mollifyEpsilon},
-                     {"tuftedEdges", h.tuftedEdges}};
+                     {"tuftedEdges", h.tuftedEdges},
+                     {"intrinsicSeconds", h.intrinsicSeconds},
+                     {"factorSeconds", h.factorSeconds}};
   }
   stats.setupSeconds = secondsSince(setupStart);
 

@@ -1,16 +1,23 @@
 // CHOLMOD wrapper for the heat method's two systems. One analysis (METIS nested dissection, which
 // fills less than AMD on surface meshes; AMD if METIS fails) is copied into one factor per matrix. The
-// numeric factorisation is supernodal LL^T, whose dense blocks make it fast; the factor is then
-// turned into a simplicial LL^T, because a single right-hand side solves faster column by column
-// than through the small dense triangular solves of the supernodes (measured: about 1.5x on a
-// 41k-vertex sphere). Solves build a private cholmod_common so that several threads share a factor.
+// numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so with an
+// optimised BLAS such as OpenBLAS, which Debian's alternatives put in place of the reference one); the
+// factor is then turned into a simplicial LL^T, because a single right-hand side solves faster column
+// by column than through the small dense triangular solves of the supernodes (measured: about 1.5x on
+// a 41k-vertex sphere). The matrices factorise in parallel, each in its own CHOLMOD workspace, with
+// the BLAS held to one thread: each factor is then computed by one sequential code path, so it does
+// not depend on the thread count (a threaded BLAS splits its sums by its thread count). Solves build
+// a private cholmod_common so that several threads share a factor.
 #include "geodesic/bake/heat_cholmod.h"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
+
+#include "core/parallel.h"
 
 namespace bake::geodesic {
 namespace {
@@ -46,6 +53,13 @@ cholmod_sparse viewUpper(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>
   return a;
 }
 
+// OpenBLAS threads its own kernels; held to one thread, a factor's sums never depend on how many
+// cores the machine has. Other BLAS libraries (the reference one) have no threads to hold.
+void holdBlasToOneThread() {
+  using SetThreads = void (*)(int);
+  if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+}
+
 }  // namespace
 
 struct CholeskyFactor::Impl {
@@ -64,7 +78,7 @@ CholeskyFactor::~CholeskyFactor() = default;
 std::size_t CholeskyFactor::size() const { return impl_->factor->n; }
 
 Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
-    std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers) {
+    std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads) {
   std::vector<CholeskyFactor> factors;
   if (uppers.empty()) return factors;
   Common common = startCommon();
@@ -79,23 +93,34 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   }
   if (!symbolic)
     return internalError("sparse Cholesky analysis failed (status " + std::to_string(common->status) + ")");
-  for (const auto* upper : uppers) {
-    cholmod_sparse a = viewUpper(*upper);
+  // One factor per matrix, each with its own workspace (a cholmod_common is not shared between
+  // threads), copied from the analysis.
+  std::vector<std::unique_ptr<Impl>> impls;
+  for (std::size_t k = 0; k < uppers.size(); ++k) {
     auto impl = std::make_unique<Impl>();
-    impl->common = common;
-    impl->factor = cholmod_copy_factor(symbolic, common.get());
-    int ok = impl->factor ? cholmod_factorize(&a, impl->factor, common.get()) : 0;
-    if (ok && common->status == CHOLMOD_OK && impl->factor->is_super)
-      ok = cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0, /*to_packed=*/1,
-                                 /*to_monotonic=*/1, impl->factor, common.get());
-    if (!ok || common->status != CHOLMOD_OK) {
-      const int status = common->status;
-      cholmod_free_factor(&symbolic, common.get());
-      return internalError("sparse Cholesky factorisation failed (status " + std::to_string(status) + ")");
-    }
-    factors.push_back(CholeskyFactor(std::move(impl)));
+    impl->common = startCommon();
+    impl->common->supernodal = CHOLMOD_SUPERNODAL;
+    impl->factor = cholmod_copy_factor(symbolic, impl->common.get());
+    impls.push_back(std::move(impl));
   }
   cholmod_free_factor(&symbolic, common.get());
+  holdBlasToOneThread();
+  std::vector<int> status(uppers.size(), CHOLMOD_OK);
+  parallelForBlocks(uppers.size(), 1, threads, [&](std::size_t k, std::size_t) {
+    Impl& impl = *impls[k];
+    cholmod_common* c = impl.common.get();
+    cholmod_sparse a = viewUpper(*uppers[k]);
+    int ok = impl.factor ? cholmod_factorize(&a, impl.factor, c) : 0;
+    if (ok && c->status == CHOLMOD_OK && impl.factor->is_super)
+      ok = cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0, /*to_packed=*/1,
+                                 /*to_monotonic=*/1, impl.factor, c);
+    status[k] = ok && c->status == CHOLMOD_OK ? CHOLMOD_OK : (c->status != CHOLMOD_OK ? c->status : CHOLMOD_INVALID);
+  });
+  for (std::size_t k = 0; k < uppers.size(); ++k) {
+    if (status[k] != CHOLMOD_OK)
+      return internalError("sparse Cholesky factorisation failed (status " + std::to_string(status[k]) + ")");
+    factors.push_back(CholeskyFactor(std::move(impls[k])));
+  }
   return factors;
 }
 

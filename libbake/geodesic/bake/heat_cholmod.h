@@ -17,9 +17,10 @@ namespace bake::geodesic {
 class CholeskyFactor {
  public:
   // Factorises each matrix (upper triangles of symmetric positive definite matrices, all with the
-  // same pattern) after one shared analysis.
+  // same pattern) after one shared analysis, up to `threads` at once (0: all cores); the factors do
+  // not depend on `threads`.
   static Result<std::vector<CholeskyFactor>> factoriseAll(
-      std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers);
+      std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads = 0);
 
   CholeskyFactor(CholeskyFactor&&) noexcept;
   CholeskyFactor& operator=(CholeskyFactor&&) noexcept;

@@ -22,7 +22,7 @@ struct HeatOptions {
   double timeFactor = 0.0;
   // Mollification epsilon relative to the mean edge length.
   double mollifyFactor = 1e-6;
-  unsigned threads = 0;  // not used yet: build() and distances() run on the calling thread
+  unsigned threads = 0;  // build() factorises the two systems at once (0: all cores); never changes the output
   // Up to this many sources, the field is the minimum of one field per source (two solves each),
   // which is more accurate than one field from the heat of all sources together.
   std::size_t maxSeparateSources = 8;
@@ -39,7 +39,8 @@ struct HeatStats {
   std::size_t tuftedEdges = 0;  // non-manifold edges resolved by the tufted cover
   bool doubledCover = false;    // both sides of every face (boundary, non-manifold or unoriented input)
   double geodesicExtent = 0.0;  // estimated longest geodesic, which bounds the time step from below
-  double factorSeconds = 0.0;
+  double intrinsicSeconds = 0.0;  // tufted cover, mollification, Delaunay flips, operators
+  double factorSeconds = 0.0;     // assembly and sparse Cholesky factorisation of both systems
 };
 
 class HeatSolver {
