@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <sstream>
 
 #include "bake/core/atomic_file.h"
@@ -292,7 +291,9 @@ std::string vectorText(const json& values) {
 }
 
 std::string plural(std::size_t n, const std::string& word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+  if (n == 1) return "1 " + word;
+  const bool sibilant = word.ends_with('s') || word.ends_with('x') || word.ends_with("sh") || word.ends_with("ch");
+  return std::to_string(n) + " " + word + (sibilant ? "es" : "s");
 }
 
 std::string formatText(const json& description) {

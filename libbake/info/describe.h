@@ -21,6 +21,6 @@ std::string formatText(const nlohmann::json& description);
 // Pieces of the text form, also for the lines a technique adds (techniques/registry.h).
 std::string numberText(const nlohmann::json& value);          // 6 significant digits; "-" for null
 std::string vectorText(const nlohmann::json& values);         // "(x, y, z)"
-std::string plural(std::size_t n, const std::string& word);  // "1 stroke", "3 strokes"
+std::string plural(std::size_t n, const std::string& word);  // "1 stroke", "3 strokes", "2 meshes"
 
 }  // namespace bake::info

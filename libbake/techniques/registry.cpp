@@ -40,6 +40,7 @@ Status add(Technique technique) {
 }
 
 bool usedBy(const Technique& technique, const glb::Package& package) {
+  if (package.extensions.is_object() && package.extensions.contains(technique.extension)) return true;
   for (const nlohmann::json& material : package.materials)
     if (material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
         material["extensions"].contains(technique.extension))

@@ -48,7 +48,7 @@ const Technique* byExtension(std::string_view extension);
 // no longer hold. Not thread-safe; add before any other thread reads the registry.
 Status add(Technique technique);
 
-// Whether a material of the package carries the technique's extension.
+// Whether the package (at its root) or a material of it carries the technique's extension.
 bool usedBy(const Technique& technique, const glb::Package& package);
 
 // The built-in rows, defined by each technique's module.

@@ -45,8 +45,10 @@ std::uint64_t nearestSquared(const std::vector<std::pair<int, int>>& features, i
 // force. The sizes cross the transform's bands of rows (tall images) and its row blocks.
 TEST(SquaredEdt, MatchesBruteForceOnRandomImages) {
   std::mt19937 rng(42);
-  for (auto [w, h, density] : {std::tuple{17, 23, 0.1}, {40, 9, 0.02}, {1, 30, 0.1}, {33, 1, 0.2}, {31, 31, 0.001},
-                               {25, 25, 0.6}, {7, 1100, 0.002}, {300, 900, 0.0002}, {3000, 50, 0.0005}}) {
+  for (const auto& [width, height, density] : {std::tuple{17, 23, 0.1}, {40, 9, 0.02}, {1, 30, 0.1}, {33, 1, 0.2},
+                                              {31, 31, 0.001}, {25, 25, 0.6}, {7, 1100, 0.002}, {300, 900, 0.0002},
+                                              {3000, 50, 0.0005}}) {
+    const int w = width, h = height;  // plain variables: the lambda below captures them
     std::bernoulli_distribution feature(density);
     std::vector<std::uint8_t> image(std::size_t(w) * h);
     for (std::uint8_t& v : image) v = feature(rng) ? 255 : 0;

@@ -2,17 +2,18 @@
 // Felzenszwalb & Huttenlocher ("Distance transforms of sampled functions", Theory of Computing 2012,
 // section 2): the squared distance is separable, min over columns of (min over rows).
 // - Column pass: for a binary image the 1D transform along a column is the distance to the nearest
-//   feature in that column, found by a sweep down and a sweep up. Both sweep a block of columns at once
-//   (rows are contiguous, so the inner loop is a vector loop over columns) and store the distance, not
-//   its square, in the output itself.
-// - Row pass: the lower envelope of the parabolas (x - v)^2 + dy(v)^2, built left to right in linear
-//   time with exact integer predicates (no division, no rounding), then read off left to right; the
-//   square root, when wanted, is taken as each texel is written. Rows run in parallel.
-// Every value is an integer held exactly: distances along a column (float holds integers to 2^24,
-// uint32 more), squared distances in 64 bits while compared and in uint32 when stored (2 x 32767^2
-// fits), so the result is exact for images up to 32767 texels a side; the float output is the
-// correctly rounded square root of the exact squared distance. Work is cut by image size only, so
-// results never depend on the thread count.
+//   feature in that column. The image is cut into bands of whole rows (transform() below); each band
+//   finds it by a sweep down and a sweep up over its own rows, seeded with the nearest feature row
+//   above and below the band, so the bands run in parallel and a band's rows stay in cache.
+// - Row pass: on each row of the band, the lower envelope of the parabolas (x - v)^2 + dy(v)^2, built
+//   left to right in linear time with exact integer predicates (no division, no rounding), then
+//   filled parabola by parabola over the texels where each is the lowest; the square root, when
+//   wanted, is taken as each texel is written.
+// Every value is an integer held exactly: column distances in uint32, squared distances in 64 bits
+// while compared, in a double while filled and in uint32 when stored (2 x 32767^2 fits), so the
+// result is exact for images up to 32767 texels a side; the float output is the correctly rounded
+// square root of the exact squared distance. Bands depend on the image size only, so results never
+// depend on the thread count.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
