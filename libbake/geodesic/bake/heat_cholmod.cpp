@@ -1,7 +1,7 @@
 // CHOLMOD wrapper for the heat method's two systems. One analysis (METIS nested dissection, which
 // fills less than AMD on surface meshes; AMD if METIS fails) is copied into one factor per matrix. The
 // numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so with an
-// optimised BLAS such as OpenBLAS, which Debian's alternatives put in place of the reference one); the
+// optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the reference one); the
 // factor is then turned into a simplicial LL^T, because a single right-hand side solves faster column
 // by column than through the small dense triangular solves of the supernodes (measured: about 1.5x on
 // a 41k-vertex sphere). The matrices factorise in parallel, each in its own CHOLMOD workspace, with
