@@ -36,11 +36,8 @@ Result<json> describeGeodesic(const glb::Package& package, const std::string& na
     if (root.contains(fmt::kKeyFields) && root[fmt::kKeyFields].is_array())
       for (const json& field : root[fmt::kKeyFields]) description["fields"].push_back(fieldJson(field));
   }
-  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+  for (const std::size_t m : materialsWith(package, fmt::kExtension)) {
     const json& material = package.materials[m];
-    if (!material.is_object() || !material.contains("extensions") || !material["extensions"].is_object() ||
-        !material["extensions"].contains(fmt::kExtension))
-      continue;
     BAKE_ASSIGN_OR_RETURN(const geodesic::GeoTextureParams p,
                           geodesic::parseGeoTexture(material["extensions"][fmt::kExtension],
                                                     {name, "material " + std::to_string(m)}));

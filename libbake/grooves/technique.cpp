@@ -18,11 +18,8 @@ namespace fmt = format::grooves;
 
 Result<json> describeGrooves(const glb::Package& package, const std::string& name) {
   json materials = json::array();
-  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+  for (const std::size_t m : materialsWith(package, fmt::kExtension)) {
     const json& material = package.materials[m];
-    if (!material.is_object() || !material.contains("extensions") || !material["extensions"].is_object() ||
-        !material["extensions"].contains(fmt::kExtension))
-      continue;
     BAKE_ASSIGN_OR_RETURN(const grooves::GroovePackage p,
                           grooves::decodeGrooveExtension(package, material["extensions"][fmt::kExtension], name));
     const grooves::GroovePackageHeader& h = p.header;

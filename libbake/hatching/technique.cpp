@@ -27,11 +27,8 @@ json textureJson(const ktx2::Texture& t) {
 
 Result<json> describeHatching(const glb::Package& package, const std::string& name) {
   json materials = json::array();
-  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+  for (const std::size_t m : materialsWith(package, fmt::kExtension)) {
     const json& material = package.materials[m];
-    if (!material.is_object() || !material.contains("extensions") || !material["extensions"].is_object() ||
-        !material["extensions"].contains(fmt::kExtension))
-      continue;
     BAKE_ASSIGN_OR_RETURN(const hatching::HatchingParams p,
                           hatching::parseHatching(material["extensions"][fmt::kExtension], package,
                                                   {name, "material " + std::to_string(m)}));

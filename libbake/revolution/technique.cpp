@@ -50,11 +50,8 @@ json materialJson(std::size_t index, const RevolutionParams& p) {
 
 Result<json> describeRevolution(const glb::Package& package, const std::string& name) {
   json materials = json::array();
-  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+  for (const std::size_t m : materialsWith(package, format::revolution::kExtension)) {
     const json& material = package.materials[m];
-    if (!material.is_object() || !material.contains("extensions") || !material["extensions"].is_object() ||
-        !material["extensions"].contains(format::revolution::kExtension))
-      continue;
     BAKE_ASSIGN_OR_RETURN(const RevolutionParams p,
                           revolution::parseRevolution(material["extensions"][format::revolution::kExtension], package,
                                                       {name, "material " + std::to_string(m)}));

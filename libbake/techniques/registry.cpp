@@ -39,13 +39,20 @@ Status add(Technique technique) {
   return {};
 }
 
+std::vector<std::size_t> materialsWith(const glb::Package& package, std::string_view extension) {
+  std::vector<std::size_t> indices;
+  for (std::size_t m = 0; m < package.materials.size(); ++m) {
+    const nlohmann::json& material = package.materials[m];
+    if (material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
+        material["extensions"].contains(extension))
+      indices.push_back(m);
+  }
+  return indices;
+}
+
 bool usedBy(const Technique& technique, const glb::Package& package) {
   if (package.extensions.is_object() && package.extensions.contains(technique.extension)) return true;
-  for (const nlohmann::json& material : package.materials)
-    if (material.is_object() && material.contains("extensions") && material["extensions"].is_object() &&
-        material["extensions"].contains(technique.extension))
-      return true;
-  return false;
+  return !materialsWith(package, technique.extension).empty();
 }
 
 }  // namespace bake::techniques

@@ -50,6 +50,8 @@ Status add(Technique technique);
 
 // Whether the package (at its root) or a material of it carries the technique's extension.
 bool usedBy(const Technique& technique, const glb::Package& package);
+// The indices of the package's materials that carry `extension` (what a technique's describe reads).
+std::vector<std::size_t> materialsWith(const glb::Package& package, std::string_view extension);
 
 // The built-in rows, defined by each technique's module.
 #define BAKE_TECHNIQUE(name) Technique name##Technique();
