@@ -1,7 +1,7 @@
 // Descriptions of our packages for bakeinfo: a .glb/.gltf (glTF summary, attributes and their value
 // ranges, extensions and their versions, Draco use) or a .ktx2 (format, size, layers, levels,
 // supercompression, metadata). The file kind is recognised by its magic bytes, not its name.
-// The JSON form is stable (formats/bakeinfo.schema.json); the text form is for people.
+// The JSON form is for programs (docs/tools/bakeinfo.md), the text form for people.
 #pragma once
 
 #include <filesystem>
