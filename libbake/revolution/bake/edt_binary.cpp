@@ -96,6 +96,9 @@ struct StoreDistance {
   float none() const { return std::numeric_limits<float>::infinity(); }
 };
 
+// Whether an image byte is a feature texel; `zeroIsFeature` is 1 for FeatureTexels::zero.
+inline bool isFeature(std::uint8_t byte, std::uint8_t zeroIsFeature) { return (byte != 0) != zeroIsFeature; }
+
 // The image in bands of whole rows. Per band and column, the first and last feature row in the band
 // (step 1, bands in parallel); then, per band, the nearest feature row above it and below it in every
 // column, by running those along the bands (step 2); then each band alone (step 3, in parallel): the
@@ -122,9 +125,9 @@ void featureRowsPerBand(const std::uint8_t* feature, FeatureTexels which, std::s
     for (int j = begin; j < end; ++j) {
       const std::uint8_t* f = feature + std::size_t(j) * w;
       for (std::size_t i = 0; i < w; ++i) {
-        const bool isFeature = (f[i] != 0) != flip;
-        first[i] = isFeature ? std::min(first[i], j) : first[i];
-        last[i] = isFeature ? j : last[i];
+        const bool hit = isFeature(f[i], flip);
+        first[i] = hit ? std::min(first[i], j) : first[i];
+        last[i] = hit ? j : last[i];
       }
     }
   });
@@ -162,7 +165,7 @@ void transformBand(const std::uint8_t* feature, FeatureTexels which, std::size_t
     const std::uint8_t* f = feature + std::size_t(j) * w;
     std::uint32_t* d = dy.data() + std::size_t(j - begin) * w;
     for (std::size_t i = 0; i < w; ++i) {
-      row[i] = (f[i] != 0) != flip ? j : row[i];
+      row[i] = isFeature(f[i], flip) ? j : row[i];
       d[i] = std::min(std::uint32_t(j - row[i]), kNoneInColumn);
     }
   }
@@ -171,7 +174,7 @@ void transformBand(const std::uint8_t* feature, FeatureTexels which, std::size_t
     const std::uint8_t* f = feature + std::size_t(j) * w;
     std::uint32_t* d = dy.data() + std::size_t(j - begin) * w;
     for (std::size_t i = 0; i < w; ++i) {
-      row[i] = (f[i] != 0) != flip ? j : row[i];
+      row[i] = isFeature(f[i], flip) ? j : row[i];
       d[i] = std::min(d[i], std::min(std::uint32_t(row[i] - j), kNoneInColumn));
     }
   }
