@@ -271,6 +271,55 @@ TEST(SeedShader, MirrorVGrooveWithBouncesAgreesWithTheReference) {
   }
 }
 
+// Inter-reflections where footprints are area sampled (seed §7 in §6's special cases): two mirror
+// grooves crossing, a mirror groove's open end and a polyline's corner, each seen around the special
+// case, with one and three bounces and with and without an environment, against the reference's
+// traced rays. The reflections must show: without them (maxBounces 0) the image is off the reference
+// by far more, which the second check makes sure of (in the oblique crossing the mirror's rays all
+// leave the surface, so there only the environment shows).
+TEST(SeedShader, MirrorSpecialCasesWithBouncesAgreeWithTheReference) {
+  struct Case {
+    const char* name;
+    std::string grooves;
+    double theta, phi;
+    Vec3 light;
+    bool reflectsGrooves = true;  // false: the mirror's rays all leave the surface (only the environment shows)
+  };
+  const Case cases[] = {
+      {"crossing", line("deep", "chrome", {0.1, 0.5}, {0.9, 0.5}) + ", " + line("deep", "chrome", {0.5, 0.1}, {0.5, 0.9}),
+       0.5, 1.1, {0.1, 0.3, 1}},
+      {"crossing, oblique", line("v", "chrome", {0.1, 0.45}, {0.9, 0.55}) + ", " + line("deep", "paint", {0.5, 0.1}, {0.5, 0.9}),
+       1.0, -2.2, {-0.4, 0.2, 0.6}, false},
+      {"open end", line("deep", "chrome", {0.1, 0.5}, {0.5, 0.5}), 0.7, 0.3, {0.3, -0.2, 0.8}},
+      {"corner", R"({"profile": "deep", "material": "chrome", "path": {"polyline": [[0.1, 0.5], [0.5, 0.5], [0.5, 0.9]]}})",
+       0.6, 2.5, {0.2, 0.1, 1}},
+  };
+  for (const Case& c : cases) {
+    const GrooveScene s = sceneOf(c.grooves);
+    const View view = windowView({0.485, 0.485}, {0.515, 0.515}, 12, c.theta, c.phi);
+    const GrooveGrid grid = buildGridOk(s);
+    const SeedShader shader(s, grid);
+    ShadeStats stats;
+    shader.shade(square({0.5, 0.5}, 0.002), directionFromAngles(c.theta, c.phi), lightTowards(c.light, 1), &stats);
+    ASSERT_TRUE(stats.special) << c.name << ": not area sampled";
+    for (int bounces : {1, 3})
+      for (bool environment : {false, true}) {
+        SCOPED_TRACE(std::string(c.name) + ", " + std::to_string(bounces) + (environment ? " bounces, environment" : " bounces"));
+        Lighting l = lightTowards(c.light, bounces);
+        if (environment) l.environment = {0.3, 0.5, 0.7};
+        const double rmse = expectMatchesReference(s, view, l);
+        Lighting none = l;
+        none.maxBounces = 0;
+        ReferenceSettings settings;
+        settings.samplesPerPixel = 64;
+        const double missing = imageError(renderSeed(s, grid, view, none, 0), renderReference(s, view, l, settings)).rmse;
+        if (c.reflectsGrooves || environment) EXPECT_GT(missing, 5 * rmse) << "the reflections hardly show";
+        std::printf("[ grooves ] mirror %s, %d bounces%s: RMSE against the reference %.4g (without bounces %.4g)\n",
+                    c.name, bounces, environment ? ", environment" : "", rmse, missing);
+      }
+  }
+}
+
 // Light from outside the grooves (seed §7: a reflected beam's rays that leave the surface see the rest
 // of the scene, weighted by the uncovered part, 1 - Σ r_i): a mirror V-groove under a constant
 // environment, against the reference, whose reflected rays that leave see that environment too. The

@@ -11,14 +11,14 @@
 //   from there along the view onto the base plane (both affine maps of the piece's plane), and
 //   subtracted from the visible part.
 // - reflection (§6.4, Eq. 1): r_i = (area of the visible, lit part on the base plane) / footprint area,
-//   and the pixel is sum r_i directRadiance(material_i, N_i, E, L), plus, for mirror pieces while
-//   bounces are followed, their visible share (lit or not) x mirror x the environment (seed §7's light
-//   from outside; their reflections are not traced in area-sampled footprints).
+//   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
+// - inter-reflections (§7): while bounces are followed, the visible part of a mirror piece (lit or
+//   not) is a beam, sampled like a footprint of its own along the mirrored view (followBeam below):
+//   what it shows is added x the mirror's reflectance, its own mirrors' parts become beams in turn,
+//   and its rays that leave the surface see the environment (§7's light from outside, 1 - Σ r_i).
 // Both tests first compare the other piece with the piece's plane: wholly behind it, it can neither
 // hide nor shadow the piece; wholly in front, the one-point test's verdict is known and the clip
 // against the piece is skipped.
-// Inter-reflections of direct light (§7) are not followed in special cases yet; a mirror piece
-// reflects only the environment there (above).
 // A zero-area footprint is a point sample: the radiance of the point seen along the view line.
 // The working region covers the footprint, what its view lines cross and what can shadow that, as a
 // box (workingRegion below); for a light near the horizon, shadows are looked for up to kMaxLightSlope
@@ -37,6 +37,7 @@
 
 #include "bake_formats/grooves.h"
 #include "grooves/oracle/area_surface.h"
+#include "grooves/oracle/line_sampling_section.h"  // kMaxBeams
 
 namespace bake::grooves {
 namespace {
@@ -58,13 +59,26 @@ struct Projected {
 struct Frame {
   Vec3 toViewer, toLight;
   Vec3 lightAxis1, lightAxis2;  // orthonormal, perpendicular to L
+  // The screen the view lines are projected onto: the base plane for the eye's view (the footprint
+  // lives there), the plane through the origin perpendicular to the view for a reflected beam (whose
+  // direction may be horizontal or point down).
+  bool baseScreen = true;
+  Vec3 screenAxis1{1, 0, 0}, screenAxis2{0, 1, 0};  // orthonormal, perpendicular to toViewer
   double minArea = 0, depthTolerance = 0;
   bool lightAllOccluders = false;  // light near or below the horizon: back faces occlude too
 };
 
 Vec2 toScreen(const Frame& f, const Vec3& p) {
+  if (!f.baseScreen) return {dot(p, f.screenAxis1), dot(p, f.screenAxis2)};
   const double k = p.w / f.toViewer.w;
   return {p.u - k * f.toViewer.u, p.v - k * f.toViewer.v};
+}
+
+// The screen point x in 3D.
+Vec3 fromScreen(const Frame& f, Vec2 x) {
+  if (f.baseScreen) return {x.u, x.v, 0};
+  const Vec3 &a = f.screenAxis1, &b = f.screenAxis2;
+  return {x.u * a.u + x.v * b.u, x.u * a.v + x.v * b.v, x.u * a.w + x.v * b.w};
 }
 
 Vec2 toLightPlane(const Frame& f, const Vec3& p) { return {dot(p, f.lightAxis1), dot(p, f.lightAxis2)}; }
@@ -94,23 +108,23 @@ Projected project(const Frame& f, const SurfacePiece& piece, bool withLightView)
   // A facet's screen image keeps its counter-clockwise order when it faces the viewer (the map
   // x -> x - h(x) E_uv / E_w has determinant N.E / (N_w E_w) > 0, and the sampler skips the pieces
   // facing it less than that); walls and back faces are sorted.
-  if (piece.wall || !(p.facingViewer > 1e-12)) makeCounterClockwise(p.screen);
+  if (piece.wall || !(p.facingViewer > 1e-12) || !f.baseScreen) makeCounterClockwise(p.screen);
   if (withLightView) makeCounterClockwise(p.lightView);
   p.screenBox = boundsOf(p.screen);
   return p;
 }
 
-// Distance along the view line through screen point x (from the base plane, towards the viewer) to
-// the piece's plane.
-double viewDepth(const Projected& p, Vec2 x) {
-  const Vec3& n = p.piece->normal;
-  return (p.piece->planeOffset - n.u * x.u - n.v * x.v) / p.facingViewer;
+// Distance along the view line through screen point x (from the screen, towards the viewer) to the
+// piece's plane.
+double viewDepth(const Frame& f, const Projected& p, Vec2 x) {
+  return (p.piece->planeOffset - dot(p.piece->normal, fromScreen(f, x))) / p.facingViewer;
 }
 
 // The point of piece p seen at screen point x.
 Vec3 seenPoint(const Frame& f, const Projected& p, Vec2 x) {
-  const double t = viewDepth(p, x);
-  return {x.u + t * f.toViewer.u, x.v + t * f.toViewer.v, t * f.toViewer.w};
+  const double t = viewDepth(f, p, x);
+  const Vec3 s = fromScreen(f, x);
+  return {s.u + t * f.toViewer.u, s.v + t * f.toViewer.v, s.w + t * f.toViewer.w};
 }
 
 // Signed distance from q along L to the plane of p (positive: the plane is towards the light).
@@ -195,7 +209,7 @@ void visiblePart(const Frame& f, const std::vector<Projected>& all, std::size_t 
     const ConvexPolygon overlap = intersect(other.screen, meEdges.edge, meEdges.count);
     if (overlap.empty() || area(overlap) <= f.minArea) continue;
     const Vec2 c = centroid(overlap);
-    if (viewDepth(other, c) > viewDepth(me, c) + f.depthTolerance) {
+    if (viewDepth(f, other, c) > viewDepth(f, me, c) + f.depthTolerance) {
       visible.subtract(other.screen);
       bounds = visible.bounds();
     }
@@ -214,14 +228,15 @@ ConvexPolygon shadowOnScreen(const Frame& f, const Projected& receiver, const Pr
   return s;
 }
 
-// The lit part of `part` (visible fragments of piece i).
-void litPart(const Frame& f, const std::vector<Projected>& all, std::size_t i, const ScreenEdges& meEdges,
-             FragmentSet& part) {
-  const Projected& me = all[i];
+// The lit part of `part` (visible fragments of piece me), shadowed by the pieces `casters` but `self`
+// (the piece me was cut from, or me).
+void litPart(const Frame& f, const Projected& me, const std::vector<Projected>& casters, const SurfacePiece* self,
+             const ScreenEdges& meEdges, FragmentSet& part) {
   Box2 bounds = part.bounds();  // kept up to date: it only changes with a subtraction
-  for (std::size_t j = 0; j < all.size() && part.count > 0; ++j) {
-    const Projected& other = all[j];
-    if (j == i || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox)) continue;
+  for (std::size_t j = 0; j < casters.size() && part.count > 0; ++j) {
+    const Projected& other = casters[j];
+    if (other.piece == self || !occludesLight(f, other) || !other.lightBox.overlaps(me.lightBox))
+      continue;
     if (me.facingLight > 0 && behindPlaneOf(me, other)) continue;
     // Against the caster's plane, when the caster faces the light.
     const Against side = other.facingLight > 1e-12 ? sideOfPlaneOf(me, other, f.depthTolerance) : Against::across;
@@ -252,7 +267,7 @@ Rgb pointSample(const GrooveScene& scene, const Frame& f, const std::vector<Proj
   double best = -1e300;
   for (const Projected& p : all) {
     if (p.facingViewer <= 1e-12 || !contains(p.screen, centre)) continue;
-    const double t = viewDepth(p, centre);
+    const double t = viewDepth(f, p, centre);
     if (t > best) best = t, front = &p;
   }
   if (!front) return {0, 0, 0};
@@ -297,6 +312,7 @@ struct Job {
   const GrooveScene& scene;
   const std::vector<StraightGroove>& grooves;
   const Lighting& lighting;
+  bool traceReflections = true;
   Frame frame;
   double height = 0, depth = 0, lengthScale = 0;  // the grooves' extent above and below the base plane
 };
@@ -343,9 +359,8 @@ ConvexPolygon workingRegion(const Job& job, const Box2& footprintBox) {
 
 // The pieces of the surface over the working region of the footprint box; false when a cap was
 // reached.
-bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool stopAtCap,
-                 std::vector<SurfacePiece>& pieces, AreaSampleStats& stats) {
-  const ConvexPolygon region = workingRegion(job, footprintBox);
+bool buildPiecesOver(const Job& job, const ConvexPolygon& region, double minArea, bool stopAtCap,
+                     std::vector<SurfacePiece>& pieces, AreaSampleStats& stats) {
   SurfaceBuildStats local;
   buildHeightPieces(job.grooves, job.scene.baseMaterial, region, minArea, stopAtCap, pieces, local);
   buildWalls(job.grooves, job.scene.baseMaterial, region, job.lengthScale, stopAtCap, pieces, local);
@@ -355,6 +370,221 @@ bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool 
   if (local.overflows == 0) return true;
   stats.surface.overflows += local.overflows;
   return false;
+}
+
+bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool stopAtCap,
+                 std::vector<SurfacePiece>& pieces, AreaSampleStats& stats) {
+  return buildPiecesOver(job, workingRegion(job, footprintBox), minArea, stopAtCap, pieces, stats);
+}
+
+// --- Inter-reflections (seed 000 §7) in area-sampled footprints ------------------------------------
+// A beam is the visible part of a mirror piece (convex fragments on its plane, with their weights)
+// and the share of the footprint it covers. Its rays leave along R, the view mirrored about the piece's
+// normal, so the beam is sampled as a footprint of its own: the view becomes -R, the screen the plane
+// perpendicular to R, the footprint the beam's fragments projected onto it. The pieces it can reach lie
+// in front of the mirror's plane (those are cut to that half-space) within the region its rays cross
+// over the grooves' height range; what each piece facing -R shows of the beam is found as for the eye
+// (visiblePart), lit as for the eye (litPart, against every piece, cut or not). A piece caught adds
+// weight x (lit share) x its direct radiance seen from -R, and, while bounces remain, a mirror piece's
+// caught part becomes a beam in turn. Rays no piece catches leave the surface when R points up and see
+// the environment (1 - Σ r_i of the beam). Affine maps between planes keep area ratios, so a share of
+// the beam's projected area is the same share of its part of the footprint. Beams live on a stack of
+// kMaxBeams entries and at most kMaxBeamSteps are followed per mirror piece seen by the eye, as in the
+// line-sampled sections (interreflection.cpp); a beam carrying less than 1e-12 of the pixel is dropped.
+
+struct Polygon3 {
+  std::array<Vec3, kPolygonMaxVertices> vertex;
+  int count = 0;
+  double weight = 1;
+};
+
+struct AreaBeam {
+  std::vector<Polygon3> fragments;  // on the mirror's plane
+  Vec3 normal;                      // the mirror's
+  std::size_t material = 0;
+  Vec3 toViewer;                    // what looks at the mirror: E, then back along the previous ray
+  Rgb weight{1, 1, 1};              // product of the mirror reflectances already applied
+  double share = 0;                 // of the footprint
+  int bounce = 0;                   // reflections made before this one
+};
+
+constexpr int kMaxAreaBeamSteps = 4 * kMaxBeams;
+constexpr double kNegligibleBeam = 1e-12;
+
+// The fragments of `set` (on the screen of frame f) lifted onto piece p's plane, each weight scaled.
+void liftFragments(const Frame& f, const Projected& p, const FragmentSet& set, double scale,
+                   std::vector<Polygon3>& out) {
+  for (int k = 0; k < set.count; ++k) {
+    const Fragment& fragment = set.fragment[k];
+    Polygon3 lifted;
+    for (int v = 0; v < fragment.polygon.count; ++v) lifted.vertex[lifted.count++] = seenPoint(f, p, fragment.polygon.vertex[v]);
+    lifted.weight = scale * fragment.weight;
+    out.push_back(lifted);
+  }
+}
+
+// The part of piece p on the side of the plane (normal, offset) that the normal points to, by more than
+// `tolerance` (Sutherland-Hodgman in 3D); count 0 when nothing is left.
+SurfacePiece inFrontOfPlane(const SurfacePiece& p, const Vec3& normal, double offset, double tolerance) {
+  SurfacePiece out = p;
+  out.count = 0;
+  for (int k = 0; k < p.count; ++k) {
+    const Vec3& a = p.vertex[k];
+    const Vec3& b = p.vertex[(k + 1) % p.count];
+    const double da = dot(normal, a) - offset - tolerance, db = dot(normal, b) - offset - tolerance;
+    if (da > 0) out.vertex[out.count++] = a;
+    if ((da > 0) != (db > 0) && out.count < kPolygonMaxVertices) {
+      const double t = da / (da - db);
+      out.vertex[out.count++] = {a.u + t * (b.u - a.u), a.v + t * (b.v - a.v), a.w + t * (b.w - a.w)};
+    }
+    if (out.count == kPolygonMaxVertices) break;
+  }
+  if (out.count < 3) out.count = 0;
+  return out;
+}
+
+// The region the beam's rays cross over the grooves' height range (and what shadows it), boxed: the
+// fragments' box swept along R by the whole height range either way, then along L (as workingRegion).
+ConvexPolygon beamRegion(const Job& job, const AreaBeam& beam, const Vec3& R) {
+  const double e = 1e-6 * job.lengthScale, range = job.height + job.depth + e;
+  const Vec2 ray = shiftPerHeight(R), light = shiftPerHeight(job.frame.toLight);
+  Box2 start;
+  for (const Polygon3& p : beam.fragments)
+    for (int v = 0; v < p.count; ++v) {
+      start.lower = {std::min(start.lower.u, p.vertex[v].u), std::min(start.lower.v, p.vertex[v].v)};
+      start.upper = {std::max(start.upper.u, p.vertex[v].u), std::max(start.upper.v, p.vertex[v].v)};
+    }
+  Box2 b;
+  for (const double cu : {start.lower.u - e, start.upper.u + e})
+    for (const double cv : {start.lower.v - e, start.upper.v + e})
+      for (const double h : {-range, range})
+        for (const double k : {0.0, range}) {
+          const Vec2 x{cu + h * ray.u + k * light.u, cv + h * ray.v + k * light.v};
+          b.lower = {std::min(b.lower.u, x.u), std::min(b.lower.v, x.v)};
+          b.upper = {std::max(b.upper.u, x.u), std::max(b.upper.v, x.v)};
+        }
+  ConvexPolygon region;
+  region.add(b.lower);
+  region.add({b.upper.u, b.lower.v});
+  region.add(b.upper);
+  region.add({b.lower.u, b.upper.v});
+  return region;
+}
+
+void addWeighted(Rgb& sum, const Rgb& weight, double share, const Rgb& radiance) {
+  for (int c = 0; c < 3; ++c) sum[c] += weight[c] * share * radiance[c];
+}
+
+// Follows one beam: adds what its rays see to `sum` and pushes the beams of the mirrors they reach.
+void followBeam(const Job& job, const AreaBeam& beam, Rgb& sum, std::vector<AreaBeam>& stack, AreaSampleStats& stats) {
+  const Vec3 N = beam.normal;
+  if (!(dot(N, beam.toViewer) > 0)) return;
+  const Vec3 R = reflect(beam.toViewer, N);
+  const Material& mirror = job.scene.materials[beam.material];
+  Rgb weight;
+  for (int c = 0; c < 3; ++c) weight[c] = beam.weight[c] * mirror.mirror[c];
+  Frame f = job.frame;
+  f.toViewer = {-R.u, -R.v, -R.w};
+  f.baseScreen = false;
+  perpendicularAxes(f.toViewer, f.screenAxis1, f.screenAxis2);
+
+  // The beam on the new screen.
+  thread_local std::vector<ConvexPolygon> windows;
+  thread_local std::vector<double> windowWeights;
+  windows.clear();
+  windowWeights.clear();
+  double beamArea = 0;
+  for (const Polygon3& p : beam.fragments) {
+    ConvexPolygon w;
+    for (int v = 0; v < p.count; ++v) w.add(toScreen(f, p.vertex[v]));
+    makeCounterClockwise(w);
+    const double a = area(w);
+    if (!(a > 0)) continue;
+    windows.push_back(w);
+    windowWeights.push_back(p.weight);
+    beamArea += p.weight * a;
+  }
+  if (!(beamArea > 0)) return;  // seen edge-on: the beam carries no rays
+  f.minArea = 1e-13 * beamArea;
+
+  // What the rays can reach: the pieces in front of the mirror (`front`, cut to that side) and every
+  // piece for the shadows (`casters`).
+  thread_local std::vector<SurfacePiece> pieces, cut;
+  thread_local std::vector<std::size_t> origin;  // the piece each cut piece comes from
+  thread_local std::vector<Projected> casters, front;
+  pieces.clear();
+  cut.clear();
+  origin.clear();
+  if (!buildPiecesOver(job, beamRegion(job, beam, R), f.minArea, false, pieces, stats)) ++stats.incomplete;
+  const double mirrorOffset = dot(N, beam.fragments.front().vertex[0]);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const SurfacePiece c = inFrontOfPlane(pieces[k], N, mirrorOffset, f.depthTolerance);
+    if (c.count == 0) continue;
+    cut.push_back(c);
+    origin.push_back(k);
+  }
+  casters.clear();
+  for (const SurfacePiece& p : pieces) casters.push_back(project(f, p, false));
+  front.clear();
+  for (const SurfacePiece& c : cut) front.push_back(project(f, c, false));
+
+  RadianceMemo radianceOf(job.scene.materials, f.toViewer, job.lighting);
+  thread_local FragmentSet visible;
+  ScreenEdges meEdges;
+  double caught = 0;
+  const double strongest = std::max({weight[0], weight[1], weight[2]});
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    const Projected& me = front[i];
+    if (me.facingViewer <= 1e-12) continue;
+    const Material& material = job.scene.materials[me.piece->material];
+    const Rgb radiance = radianceOf(me.piece->material, me.piece->normal);
+    const bool bounceAgain = material.hasMirror && beam.bounce + 1 < job.lighting.maxBounces;
+    meEdges.count = edgeHalfPlanes(me.screen, meEdges.edge);
+    AreaBeam child;
+    for (std::size_t w = 0; w < windows.size(); ++w) {
+      if (!me.screenBox.overlaps(boundsOf(windows[w]))) continue;
+      visible.count = 0;
+      visible.minArea = f.minArea;
+      visible.overflows = 0;
+      visiblePart(f, front, i, windows[w], meEdges, visible);
+      if (visible.count == 0) continue;
+      const double scale = beam.share * windowWeights[w] / beamArea;  // footprint share per unit area here
+      const double seen = scale * visible.weightedArea();
+      caught += seen;
+      if (bounceAgain && seen * strongest > kNegligibleBeam) {
+        child.share += seen;
+        liftFragments(f, me, visible, windowWeights[w], child.fragments);
+      }
+      if (isBlack(radiance)) continue;
+      litPart(f, me, casters, &pieces[origin[i]], meEdges, visible);
+      stats.fragmentOverflows += visible.overflows;
+      addWeighted(sum, weight, scale * visible.weightedArea(), radiance);
+    }
+    if (child.share > 0 && stack.size() < std::size_t(kMaxBeams)) {
+      child.normal = me.piece->normal;
+      child.material = me.piece->material;
+      child.toViewer = f.toViewer;
+      child.weight = weight;
+      child.bounce = beam.bounce + 1;
+      stack.push_back(std::move(child));
+    }
+  }
+  // Rays no piece catches: going up, they leave the surface and see the environment.
+  if (R.w > 0) addWeighted(sum, weight, std::max(0.0, beam.share - caught), job.lighting.environment);
+}
+
+// What the reflection of a mirror piece seen by the eye adds: its beam and every beam it leads to.
+Rgb traceReflections(const Job& job, AreaBeam first, AreaSampleStats& stats) {
+  thread_local std::vector<AreaBeam> stack;
+  stack.clear();
+  stack.push_back(std::move(first));
+  Rgb sum{0, 0, 0};
+  for (int step = 0; step < kMaxAreaBeamSteps && !stack.empty(); ++step) {
+    const AreaBeam beam = std::move(stack.back());
+    stack.pop_back();
+    followBeam(job, beam, sum, stack, stats);
+  }
+  return sum;
 }
 
 // Splits a footprint into 2 x 2 halves at most this many times when its pieces overflow the caps
@@ -397,10 +627,9 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     const Projected& me = all[i];
     if (me.facingViewer <= 1e-12 || !me.screenBox.overlaps(fpBox)) continue;
     const Rgb radiance = radianceOf(me.piece->material, me.piece->normal);
-    // A mirror piece's reflection is not traced here: it is taken to leave the surface and see the
-    // environment, over the piece's visible part (lit or not).
-    const Rgb reflected = environmentReflection(job.scene.materials[me.piece->material], job.lighting);
-    if (isBlack(radiance) && isBlack(reflected)) continue;  // no direct light, nothing reflected
+    const Material& material = job.scene.materials[me.piece->material];
+    const bool reflects = material.hasMirror && job.lighting.maxBounces > 0;
+    if (isBlack(radiance) && !reflects) continue;  // no direct light, nothing reflected
     visible.count = 0;
     visible.minArea = f.minArea;
     visible.overflows = 0;
@@ -408,10 +637,22 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
     visiblePart(f, all, i, fp, meEdges, visible);
     if (visible.count == 0) continue;
     ++stats.visiblePieces;
-    const double seen = visible.weightedArea() / footprintArea;
-    for (int c = 0; c < 3; ++c) sum[c] += seen * reflected[c];
+    if (reflects && !job.traceReflections) {  // the runtime's model: the reflection leaves the surface
+      const double seen = visible.weightedArea() / footprintArea;
+      const Rgb reflected = environmentReflection(material, job.lighting);
+      for (int c = 0; c < 3; ++c) sum[c] += seen * reflected[c];
+    } else if (reflects) {  // the visible part (lit or not) mirrors what its reflected rays meet
+      AreaBeam beam;
+      liftFragments(f, me, visible, 1.0, beam.fragments);
+      beam.normal = me.piece->normal;
+      beam.material = me.piece->material;
+      beam.toViewer = f.toViewer;
+      beam.share = visible.weightedArea() / footprintArea;
+      const Rgb reflected = traceReflections(job, std::move(beam), stats);
+      for (int c = 0; c < 3; ++c) sum[c] += reflected[c];
+    }
     if (isBlack(radiance)) continue;
-    litPart(f, all, i, meEdges, visible);
+    litPart(f, me, all, me.piece, meEdges, visible);
     stats.fragmentOverflows += visible.overflows;
     const double share = visible.weightedArea() / footprintArea;
     for (int c = 0; c < 3; ++c) sum[c] += share * radiance[c];
@@ -422,7 +663,8 @@ Rgb sampleParallelogram(const Job& job, Vec2 centre, Vec2 axis1, Vec2 axis2, int
 }  // namespace
 
 Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats) {
+                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats,
+                        bool traceReflections) {
   stats = {};
   if (!(toViewer.w > 0)) return {0, 0, 0};
   thread_local std::vector<StraightGroove> straight;  // per-thread, reused from sample to sample
@@ -443,7 +685,7 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
     shorter = {shorter.u - along.v / n * 1e-6 * span, shorter.v + along.u / n * 1e-6 * span};
   }
 
-  Job job{scene, straight, lighting, {}, extent.height, extent.depth,
+  Job job{scene, straight, lighting, traceReflections, {}, extent.height, extent.depth,
           std::max({span, extent.width, extent.height + extent.depth, 1e-300})};
   Frame& f = job.frame;
   f.toViewer = toViewer;
@@ -465,9 +707,9 @@ Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>
 }
 
 Rgb areaSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-               const Vec3& toViewer, const Lighting& lighting) {
+               const Vec3& toViewer, const Lighting& lighting, bool traceReflections) {
   AreaSampleStats stats;
-  return areaSampleWithStats(scene, grooves, footprint, toViewer, lighting, stats);
+  return areaSampleWithStats(scene, grooves, footprint, toViewer, lighting, stats, traceReflections);
 }
 
 }  // namespace bake::grooves

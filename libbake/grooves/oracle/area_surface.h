@@ -121,6 +121,7 @@ struct AreaSampleStats {
 
 // areaSample (shade_local.h) with its statistics.
 Rgb areaSampleWithStats(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats);
+                        const Vec3& toViewer, const Lighting& lighting, AreaSampleStats& stats,
+                        bool traceReflections = true);
 
 }  // namespace bake::grooves

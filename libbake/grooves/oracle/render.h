@@ -61,7 +61,7 @@ void setRgb(Image& image, int x, int y, const Rgb& value);
 // Blinn-Phong (the one material model; also in shaders/grooves).
 Rgb directRadiance(const Material& material, const Vec3& normal, const Vec3& toViewer, const Lighting& lighting);
 // What a mirror facet adds by reflecting the environment where its reflection leaves the surface
-// untraced (the flat base, area-sampled pieces): mirror x environment, when bounces are followed.
+// untraced (the flat base beyond a section): mirror x environment, when bounces are followed.
 Rgb environmentReflection(const Material& material, const Lighting& lighting);
 // The flat base plane seen from toViewer: its direct light and, if it mirrors, the environment.
 Rgb flatBaseRadiance(const Material& base, const Vec3& toViewer, const Lighting& lighting);

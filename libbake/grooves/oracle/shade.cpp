@@ -244,7 +244,7 @@ Rgb SeedShader::shade(const Footprint& footprint, const Vec3& toViewer, const Li
                           [&](std::uint32_t r) { return meetsRecord(scene_, recordBox, grid_.records[r]); });
   }
   if (stats) stats->special = special;
-  if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting);
+  if (special) return areaSample(scene_, grooves, footprint, toViewer, lighting, settings_.areaReflections);
   if (!settings_.curvedSections || !nearArcCentre(scene_, found, footprint))
     return lineSampleWith(scene_, grooves, footprint, toViewer, lighting, settings_);
   constexpr int n = kCentreSplit;

@@ -33,6 +33,10 @@ struct SeedSettings {
   // footprint wider than the period of a repeating pattern is shaded from the far level (the seed's
   // method straightens each groove at one copy, so it would count the groove once).
   std::size_t foundCap = 0;
+  // Mirror inter-reflections in area-sampled footprints (seed §7 in §6's special cases) are traced;
+  // false: as the runtime shader still does, each visible mirror piece there adds mirror x environment
+  // (what the GL oracle tests compare against).
+  bool areaReflections = true;
 };
 
 struct ShadeStats {

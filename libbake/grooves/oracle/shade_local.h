@@ -55,8 +55,9 @@ Rgb lineSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves
                const Vec3& toViewer, const Lighting& lighting);
 
 // §6: area sampling with polygon clipping where a special-case record is under the box
-// (area_sampling.cpp).
+// (area_sampling.cpp). `traceReflections` (§7 there): mirror pieces' reflections are traced, or (as
+// the runtime shader still does) each visible mirror piece adds mirror x environment.
 Rgb areaSample(const GrooveScene& scene, const std::vector<LocalGroove>& grooves, const Footprint& footprint,
-               const Vec3& toViewer, const Lighting& lighting);
+               const Vec3& toViewer, const Lighting& lighting, bool traceReflections = true);
 
 }  // namespace bake::grooves
