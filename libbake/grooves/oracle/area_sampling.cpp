@@ -325,6 +325,27 @@ Vec2 shiftPerHeight(const Vec3& d) {
   return {k * d.u, k * d.v};
 }
 
+// The box `start`, grown by e, swept by h a for h in aRange, then by k b for k in bRange: the
+// rectangle around it.
+ConvexPolygon sweptBox(const Box2& start, double e, Vec2 a, const double (&aRange)[2], Vec2 b,
+                       const double (&bRange)[2]) {
+  Box2 box;
+  for (const double cu : {start.lower.u - e, start.upper.u + e})
+    for (const double cv : {start.lower.v - e, start.upper.v + e})
+      for (const double h : aRange)
+        for (const double k : bRange) {
+          const Vec2 x{cu + h * a.u + k * b.u, cv + h * a.v + k * b.v};
+          box.lower = {std::min(box.lower.u, x.u), std::min(box.lower.v, x.v)};
+          box.upper = {std::max(box.upper.u, x.u), std::max(box.upper.v, x.v)};
+        }
+  ConvexPolygon region;
+  region.add(box.lower);
+  region.add({box.upper.u, box.lower.v});
+  region.add(box.upper);
+  region.add({box.lower.u, box.upper.v});
+  return region;
+}
+
 // The working region: the points of the surface that can be seen in the footprint, hide them or
 // shadow them, boxed. A point of height h seen at the footprint point x' lies at x' + h E' (E' =
 // E_uv / E_w), h in [-depth, height]; what hides it lies further along the same view line, higher, so
@@ -337,24 +358,10 @@ Vec2 shiftPerHeight(const Vec3& d) {
 // against.
 ConvexPolygon workingRegion(const Job& job, const Box2& footprintBox) {
   const double e = 1e-6 * job.lengthScale;
-  const Vec2 view = shiftPerHeight(job.frame.toViewer), light = shiftPerHeight(job.frame.toLight);
   const double viewSweep[2] = {-job.depth - e, job.height + e};
   const double lightSweep[2] = {0, job.height + job.depth + e};
-  Box2 b;
-  for (const double cu : {footprintBox.lower.u - e, footprintBox.upper.u + e})
-    for (const double cv : {footprintBox.lower.v - e, footprintBox.upper.v + e})
-      for (const double h : viewSweep)
-        for (const double k : lightSweep) {
-          const Vec2 x{cu + h * view.u + k * light.u, cv + h * view.v + k * light.v};
-          b.lower = {std::min(b.lower.u, x.u), std::min(b.lower.v, x.v)};
-          b.upper = {std::max(b.upper.u, x.u), std::max(b.upper.v, x.v)};
-        }
-  ConvexPolygon region;
-  region.add(b.lower);
-  region.add({b.upper.u, b.lower.v});
-  region.add(b.upper);
-  region.add({b.lower.u, b.upper.v});
-  return region;
+  return sweptBox(footprintBox, e, shiftPerHeight(job.frame.toViewer), viewSweep, shiftPerHeight(job.frame.toLight),
+                  lightSweep);
 }
 
 // The pieces of the surface over the working region of the footprint box; false when a cap was
@@ -447,28 +454,14 @@ SurfacePiece inFrontOfPlane(const SurfacePiece& p, const Vec3& normal, double of
 // fragments' box swept along R by the whole height range either way, then along L (as workingRegion).
 ConvexPolygon beamRegion(const Job& job, const AreaBeam& beam, const Vec3& R) {
   const double e = 1e-6 * job.lengthScale, range = job.height + job.depth + e;
-  const Vec2 ray = shiftPerHeight(R), light = shiftPerHeight(job.frame.toLight);
   Box2 start;
   for (const Polygon3& p : beam.fragments)
     for (int v = 0; v < p.count; ++v) {
       start.lower = {std::min(start.lower.u, p.vertex[v].u), std::min(start.lower.v, p.vertex[v].v)};
       start.upper = {std::max(start.upper.u, p.vertex[v].u), std::max(start.upper.v, p.vertex[v].v)};
     }
-  Box2 b;
-  for (const double cu : {start.lower.u - e, start.upper.u + e})
-    for (const double cv : {start.lower.v - e, start.upper.v + e})
-      for (const double h : {-range, range})
-        for (const double k : {0.0, range}) {
-          const Vec2 x{cu + h * ray.u + k * light.u, cv + h * ray.v + k * light.v};
-          b.lower = {std::min(b.lower.u, x.u), std::min(b.lower.v, x.v)};
-          b.upper = {std::max(b.upper.u, x.u), std::max(b.upper.v, x.v)};
-        }
-  ConvexPolygon region;
-  region.add(b.lower);
-  region.add({b.upper.u, b.lower.v});
-  region.add(b.upper);
-  region.add({b.lower.u, b.upper.v});
-  return region;
+  const double raySweep[2] = {-range, range}, lightSweep[2] = {0, range};
+  return sweptBox(start, e, shiftPerHeight(R), raySweep, shiftPerHeight(job.frame.toLight), lightSweep);
 }
 
 void addWeighted(Rgb& sum, const Rgb& weight, double share, const Rgb& radiance) {
