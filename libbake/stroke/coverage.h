@@ -87,6 +87,10 @@ inline double discQuadrant(double x, double y, double r) {
   // S(t) = integral of sqrt(r^2 - t^2) = (t sqrt(r^2 - t^2) + r^2 asin(t / r)) / 2.
   const double t0 = std::sqrt(std::max(0.0, r * r - y * y));
   auto chord = [r](double t) {
+    // t = r (a corner beyond the disc's square) and t = 0 need no inverse sine: asin(1) is the double
+    // nearest pi/2 and asin(0) is 0, so these are the general formula's values bit for bit.
+    if (t == r) return 0.5 * (r * r * 1.5707963267948966);
+    if (t == 0) return 0.0;
     return 0.5 * (t * std::sqrt(std::max(0.0, r * r - t * t)) + r * r * std::asin(std::clamp(t / r, -1.0, 1.0)));
   };
   return sign * (y * t0 + chord(x) - chord(t0));

@@ -99,6 +99,23 @@ class Builder {
     return 100 + (long long)(64.0 * n * n / (width * length));
   }
 
+  // Whether a step's candidates are worth handing to the workers. Waking them and waiting for them
+  // costs about as much as rasterizing a few thousand pixels of ink, so the steps of small strokes
+  // (a stipple dot is some 16 pixels a level) run on the calling thread: with two threads the
+  // stippling example took 1.7 s against 1.4 s on one. Each candidate is scored the same either way,
+  // so the result does not depend on this choice (nor on the thread count).
+  bool stepWorthThreads(int level) const {
+    constexpr double kMinThreadedStepPixels = 4096;
+    const StrokeStyle& s = style_.stroke;
+    const double width = 0.5 * (s.width.min + s.width.max) + 2;  // with the filter's reach
+    double pixels = 0;
+    for (int l = level; l < tam_.strokeLevels; ++l) {
+      const double length = s.kind == StrokeKind::Stippling ? 0.0 : 0.5 * (s.length.min + s.length.max) * side(l);
+      pixels += width * (length + width);
+    }
+    return pixels * double(candidates_.size()) >= kMinThreadedStepPixels;
+  }
+
   void score(Candidate& candidate, int tone, int level, long long step, int index) const {
     detail::StrokeRandom random(style_.seed, tone, level, step, index);
     candidate.stroke = detail::candidateStroke(style_, tone, random);
@@ -125,10 +142,15 @@ class Builder {
     const double target = tam_.targets[std::size_t(tone)];
     LevelImage& image = levels_[std::size_t(level)];
     const long long cap = strokeCap(level);
+    const bool threaded = stepWorthThreads(level);
     for (long long step = 0; step < cap; ++step) {
       const double mean = image.meanDarkness();
       if (mean >= target) return;
-      pool_.run(candidates_.size(), [&](std::size_t i) { score(candidates_[i], tone, level, step, int(i)); });
+      if (threaded) {
+        pool_.run(candidates_.size(), [&](std::size_t i) { score(candidates_[i], tone, level, step, int(i)); });
+      } else {
+        for (std::size_t i = 0; i < candidates_.size(); ++i) score(candidates_[i], tone, level, step, int(i));
+      }
       tam_.candidatesEvaluated += (long long)candidates_.size();
       std::size_t best = 0;
       for (std::size_t i = 1; i < candidates_.size(); ++i) {

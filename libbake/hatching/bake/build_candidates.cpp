@@ -64,7 +64,7 @@ stroke::Paintstroke candidateStroke(const Style& style, int tone, StrokeRandom& 
   const double dx = std::cos(angle), dy = std::sin(angle);
 
   double length = lengthDraw;
-  if (s.kind == StrokeKind::Stippling) length = 1e-3 / double(style.resolution);
+  if (s.kind == StrokeKind::Stippling) length = 0;
   const double bend = (s.kind == StrokeKind::Hatching || s.kind == StrokeKind::CrossHatching)
                           ? s.curvature * length * bendDraw
                           : 0.0;
