@@ -3,8 +3,8 @@
 // is drawn from the style's ranges: centre uniform over the tile, direction = the style's angle plus
 // a uniform jitter (cross-hatching: from tone `crossFrom` on, each candidate takes the crossing
 // direction angle + crossAngle with probability 1/2, so the choice by progress balances the two),
-// length uniform in the length range (fraction of the tile; a stipple dot is a round dot, two points
-// 1/1000 pixel apart at the finest level with no taper, so it stays a dot of its width at every level),
+// length uniform in the length range (fraction of the tile; a stipple dot is a round dot, a stroke of
+// zero length with no taper, which the rasterizer draws as a disc of its width at every level),
 // width uniform in the width range (pixels, the same at every level),
 // a slight bend through a middle control point displaced sideways by up to curvature x length, and
 // the style's taper and breadthwise opacity. Image strokes are straight and carry the stroke image.
