@@ -1,10 +1,18 @@
-// CHOLMOD wrapper for the heat method's two systems. One analysis (METIS nested dissection, which
-// fills less than AMD on surface meshes; AMD if METIS fails) is copied into one factor per matrix. The
-// numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so with an
-// optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the reference one); the
-// factor is then turned into a simplicial LL^T, because a single right-hand side solves faster column
-// by column than through the small dense triangular solves of the supernodes (measured: about 1.5x on
-// a 41k-vertex sphere). The matrices factorise in parallel, each in its own CHOLMOD workspace, with
+// CHOLMOD wrapper for the heat method's two systems. One analysis is copied into one factor per
+// matrix: AMD below kMetisFromRows unknowns, METIS nested dissection above (and AMD if METIS fails).
+// METIS fills less on surface meshes, so its factor and solves are cheaper, but its analysis costs
+// more; measured on spheres with the reference BLAS (set-up = analysis + both numeric factorisations,
+// solve = one field): 83k triangles AMD 0.25 s / 0.013 s, METIS 0.36 s / 0.012 s; 326k triangles AMD
+// 1.42 s / 0.065 s, METIS 1.67 s / 0.053 s; 1.37M triangles AMD 11.7 s / 0.27 s, METIS 9.96 s / 0.23 s.
+// Below the threshold AMD stays ahead up to about 20 fields per set-up. From kSupernodalFromRows
+// unknowns the numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so
+// with an optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the
+// reference one); the factor is then turned into a simplicial LL^T, because a single right-hand side
+// solves faster column by column than through the small dense triangular solves of the supernodes
+// (measured: about 1.5x on a 41k-vertex sphere). Below it, the supernodes are too small to pay for
+// themselves and the factorisation is simplicial LDL^T from the start: set-up 0.045 s against
+// 0.072 s on camelhead (11k vertices), 0.23 s against 0.24 s on an 83k-triangle sphere, but 1.9 s
+// against 1.4 s on a 326k-triangle one. The matrices factorise in parallel, each in its own CHOLMOD workspace, with
 // the BLAS held to one thread: each factor is then computed by one sequential code path, so it does
 // not depend on the thread count (a threaded BLAS splits its sums by its thread count). Solves build
 // a private cholmod_common so that several threads share a factor.
@@ -23,6 +31,11 @@ namespace bake::geodesic {
 namespace {
 
 using Common = std::shared_ptr<cholmod_common>;
+
+// Unknowns (vertices) from which the analysis orders by METIS rather than AMD, and from which the
+// factor is supernodal (see above).
+constexpr std::size_t kMetisFromRows = 250000;
+constexpr std::size_t kSupernodalFromRows = 60000;
 
 Common startCommon() {
   Common common(new cholmod_common, [](cholmod_common* c) {
@@ -83,9 +96,10 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   if (uppers.empty()) return factors;
   Common common = startCommon();
   cholmod_sparse first = viewUpper(*uppers[0]);
-  common->supernodal = CHOLMOD_SUPERNODAL;
+  const int supernodal = first.nrow < kSupernodalFromRows ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
+  common->supernodal = supernodal;
   common->nmethods = 1;
-  common->method[0].ordering = CHOLMOD_METIS;
+  common->method[0].ordering = first.nrow < kMetisFromRows ? CHOLMOD_AMD : CHOLMOD_METIS;
   cholmod_factor* symbolic = cholmod_analyze(&first, common.get());
   if (!symbolic) {
     common->method[0].ordering = CHOLMOD_AMD;
@@ -99,7 +113,7 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   for (std::size_t k = 0; k < uppers.size(); ++k) {
     auto impl = std::make_unique<Impl>();
     impl->common = startCommon();
-    impl->common->supernodal = CHOLMOD_SUPERNODAL;
+    impl->common->supernodal = supernodal;
     impl->factor = cholmod_copy_factor(symbolic, impl->common.get());
     impls.push_back(std::move(impl));
   }
