@@ -1,10 +1,12 @@
 // CHOLMOD wrapper for the heat method's two systems. One analysis is copied into one factor per
 // matrix: AMD below kMetisFromRows unknowns, METIS nested dissection above (and AMD if METIS fails).
 // METIS fills less on surface meshes, so its factor and solves are cheaper, but its analysis costs
-// more; measured on spheres with the reference BLAS (set-up = analysis + both numeric factorisations,
-// solve = one field): 83k triangles AMD 0.25 s / 0.013 s, METIS 0.36 s / 0.012 s; 326k triangles AMD
-// 1.42 s / 0.065 s, METIS 1.67 s / 0.053 s; 1.37M triangles AMD 11.7 s / 0.27 s, METIS 9.96 s / 0.23 s.
-// Below the threshold AMD stays ahead up to about 20 fields per set-up. From kSupernodalFromRows
+// more, which small meshes feel: set-up (analysis + both numeric factorisations) and one field, with
+// the reference BLAS, AMD against METIS: camelhead (11k vertices) 0.037 s / 0.0016 s against
+// 0.070 s / 0.0017 s; a 35k-vertex bunny 0.19 s / 0.0080 s against 0.28 s / 0.0061 s; a 41k-vertex
+// sphere 0.44 s / 0.0119 s against 0.35 s / 0.0092 s; 163k vertices 1.42 s / 0.065 s against 1.67 s /
+// 0.053 s (METIS is kept there for the field: CGAL's heat method takes 0.114 s); 687k vertices
+// 11.7 s / 0.27 s against 9.96 s / 0.23 s. From kSupernodalFromRows
 // unknowns the numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so
 // with an optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the
 // reference one); the factor is then turned into a simplicial LL^T, because a single right-hand side
@@ -34,7 +36,7 @@ using Common = std::shared_ptr<cholmod_common>;
 
 // Unknowns (vertices) from which the analysis orders by METIS rather than AMD, and from which the
 // factor is supernodal (see above).
-constexpr std::size_t kMetisFromRows = 250000;
+constexpr std::size_t kMetisFromRows = 40000;
 constexpr std::size_t kSupernodalFromRows = 60000;
 
 Common startCommon() {
