@@ -148,11 +148,12 @@ namespace {
 // A dot's (or join's) area in the pixels of `box`, as discInPixel gives it, bit for bit: each pixel's
 // area is the signed quadrant areas at its four corners added and subtracted, and neighbouring pixels
 // share corners, so the quadrant areas are computed once per corner of the box (a dot a few pixels
-// wide then costs about a quarter of the inverse sines).
+// wide then costs about a quarter of the inverse sines). The corners live in per-thread storage: one
+// DiscCoverage at a time per thread. A cap's pixels take capInk instead: it computes no corners.
 class DiscCoverage {
  public:
   DiscCoverage(const Disc& disc, const Box& box) : disc_(disc), box_(box) {
-    cornered_ = disc.r > 0 && disc.r <= kMaxQuadrantRadius;
+    cornered_ = !disc.cap && disc.r > 0 && disc.r <= kMaxQuadrantRadius;
     if (!cornered_) return;
     columns_ = box.x1 - box.x0 + 2;
     const std::int64_t rows = box.y1 - box.y0 + 2;
@@ -192,7 +193,7 @@ void drawDisc(const Geometry& st, std::int32_t index, const Box& clip, Buffer& b
   const Disc& disc = st.discs[std::size_t(index) - st.pieces.size()];
   const Box box = discBox(disc, double(clip.x0), double(clip.y0), double(clip.x1), double(clip.y1));
   if (box.x0 > box.x1 || box.y0 > box.y1) return;
-  const DiscCoverage coverage = disc.cap ? DiscCoverage(disc, Box{1, 1, 0, 0}) : DiscCoverage(disc, box);
+  const DiscCoverage coverage(disc, box);
   for (std::int64_t y = box.y0; y <= box.y1; ++y) {
     const double py = double(y) + 0.5;
     buffer.touch(y, box.x0, box.x1);
