@@ -1,23 +1,21 @@
-// CHOLMOD wrapper for the heat method's two systems. One analysis is copied into one factor per
-// matrix: AMD below kMetisFromRows unknowns, METIS nested dissection above (and AMD if METIS fails).
-// METIS fills less on surface meshes, so its factor and solves are cheaper, but its analysis costs
-// more, which small meshes feel: set-up (analysis + both numeric factorisations) and one field, with
-// the reference BLAS, AMD against METIS: camelhead (11k vertices) 0.037 s / 0.0016 s against
-// 0.070 s / 0.0017 s; a 35k-vertex bunny 0.19 s / 0.0080 s against 0.28 s / 0.0061 s; a 41k-vertex
-// sphere 0.44 s / 0.0119 s against 0.35 s / 0.0092 s; 163k vertices 1.42 s / 0.065 s against 1.67 s /
-// 0.053 s (METIS is kept there for the field: CGAL's heat method takes 0.114 s); 687k vertices
-// 11.7 s / 0.27 s against 9.96 s / 0.23 s. From kSupernodalFromRows
-// unknowns the numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so
-// with an optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the
-// reference one); the factor is then turned into a simplicial LL^T, because a single right-hand side
-// solves faster column by column than through the small dense triangular solves of the supernodes
-// (measured: about 1.5x on a 41k-vertex sphere). Below it, the supernodes are too small to pay for
-// themselves and the factorisation is simplicial LDL^T from the start: set-up 0.045 s against
-// 0.072 s on camelhead (11k vertices), 0.23 s against 0.24 s on an 83k-triangle sphere, but 1.9 s
-// against 1.4 s on a 326k-triangle one. The matrices factorise in parallel, each in its own CHOLMOD workspace, with
-// the BLAS held to one thread: each factor is then computed by one sequential code path, so it does
-// not depend on the thread count (a threaded BLAS splits its sums by its thread count). Solves build
-// a private cholmod_common so that several threads share a factor.
+// CHOLMOD wrapper for the heat method's two systems. One analysis is copied into one factor per matrix: AMD
+// below kMetisFromRows unknowns, METIS nested dissection above (and AMD if METIS fails). METIS fills less on
+// surface meshes, so its factor and solves are cheaper, but its analysis costs more, which small meshes feel:
+// set-up (analysis + both numeric factorisations) and one field, with the reference BLAS, AMD against METIS:
+// camelhead (11k vertices) 0.037 s / 0.0016 s against 0.070 s / 0.0017 s; a 35k-vertex bunny 0.19 s /
+// 0.0080 s against 0.28 s / 0.0061 s; a 41k-vertex sphere 0.44 s / 0.0119 s against 0.35 s / 0.0092 s; 163k
+// vertices 1.42 s / 0.065 s against 1.67 s / 0.053 s (METIS is kept there for the field: CGAL's heat method
+// takes 0.114 s); 687k vertices 11.7 s / 0.27 s against 9.96 s / 0.23 s. From kSupernodalFromRows unknowns
+// the numeric factorisation is supernodal LL^T, whose dense blocks make it fast (the more so with an
+// optimised BLAS: with OpenBLAS installed, Debian's alternatives use it in place of the reference one); the
+// factor is then turned into a simplicial LL^T, because a single right-hand side solves faster column by
+// column than through the small dense triangular solves of the supernodes (measured: about 1.5x on a
+// 41k-vertex sphere). Below it, the supernodes are too small to pay for themselves and the factorisation is
+// simplicial LDL^T from the start: set-up 0.045 s against 0.072 s on camelhead (11k vertices), 0.23 s against
+// 0.24 s on an 83k-triangle sphere, but 1.9 s against 1.4 s on a 326k-triangle one. The matrices factorise in
+// parallel, each in its own CHOLMOD workspace, with the BLAS held to one thread: each factor is then computed
+// by one sequential code path, so it does not depend on the thread count (a threaded BLAS splits its sums by
+// its thread count). Solves build a private cholmod_common so that several threads share a factor.
 #include "geodesic/bake/heat_cholmod.h"
 
 #include <cholmod.h>
