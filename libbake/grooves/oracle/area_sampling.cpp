@@ -13,7 +13,7 @@
 // - reflection (§6.4, Eq. 1): r_i = (area of the visible, lit part on the base plane) / footprint area,
 //   and the pixel is sum r_i directRadiance(material_i, N_i, E, L).
 // - inter-reflections (§7): while bounces are followed, the visible part of a mirror piece (lit or
-//   not) is a beam, sampled like a footprint of its own along the mirrored view (followBeam below):
+//   not) is a beam, sampled like a footprint of its own along the mirrored view (area_reflections.cpp):
 //   what it shows is added x the mirror's reflectance, its own mirrors' parts become beams in turn,
 //   and its rays that leave the surface see the environment (§7's light from outside, 1 - Σ r_i).
 // Both tests first compare the other piece with the piece's plane: wholly behind it, it can neither
@@ -37,36 +37,10 @@
 
 #include "bake_formats/grooves.h"
 #include "grooves/oracle/area_surface.h"
-#include "grooves/oracle/line_sampling_section.h"  // kMaxBeams
+#include "grooves/oracle/area_sampling_stages.h"
 
 namespace bake::grooves {
-namespace {
-
-double dot(const Vec3& a, const Vec3& b) { return a.u * b.u + a.v * b.v + a.w * b.w; }
-
-// A piece as the sampler sees it: its projection along the view onto the base plane ("screen") and
-// along the light onto a plane perpendicular to L.
-struct Projected {
-  const SurfacePiece* piece = nullptr;
-  double facingViewer = 0;  // N . E
-  double facingLight = 0;   // N . L
-  ConvexPolygon screen;
-  Box2 screenBox;
-  ConvexPolygon lightView;  // point samples only
-  Box2 lightBox;
-};
-
-struct Frame {
-  Vec3 toViewer, toLight;
-  Vec3 lightAxis1, lightAxis2;  // orthonormal, perpendicular to L
-  // The screen the view lines are projected onto: the base plane for the eye's view (the footprint
-  // lives there), the plane through the origin perpendicular to the view for a reflected beam (whose
-  // direction may be horizontal or point down).
-  bool baseScreen = true;
-  Vec3 screenAxis1{1, 0, 0}, screenAxis2{0, 1, 0};  // orthonormal, perpendicular to toViewer
-  double minArea = 0, depthTolerance = 0;
-  bool lightAllOccluders = false;  // light near or below the horizon: back faces occlude too
-};
+namespace area_stages {
 
 Vec2 toScreen(const Frame& f, const Vec3& p) {
   if (!f.baseScreen) return {dot(p, f.screenAxis1), dot(p, f.screenAxis2)};
@@ -179,12 +153,6 @@ Against sideOfPlaneOf(const Projected& me, const Projected& other, double margin
   }
   return front ? Against::front : (behind ? Against::behind : Against::across);
 }
-
-// The half-planes of a piece's screen image: they clip the footprint and every overlap with it.
-struct ScreenEdges {
-  std::array<HalfPlane, kPolygonMaxVertices> edge;
-  int count = 0;
-};
 
 // The visible part of piece i inside the footprint: its projection minus the pieces in front. The
 // footprint is clipped by the piece (rather than the other way round): it is the smaller of the two,
@@ -307,16 +275,6 @@ double reach(const Vec3& d, double heightRange) {
   return heightRange * slope;
 }
 
-// What every (sub-)footprint of one sample shares.
-struct Job {
-  const GrooveScene& scene;
-  const std::vector<StraightGroove>& grooves;
-  const Lighting& lighting;
-  bool traceReflections = true;
-  Frame frame;
-  double height = 0, depth = 0, lengthScale = 0;  // the grooves' extent above and below the base plane
-};
-
 // The horizontal shift per unit of height along d (d / d_w, bounded like reach()).
 Vec2 shiftPerHeight(const Vec3& d) {
   const double horizontal = std::sqrt(d.u * d.u + d.v * d.v);  // d is a unit direction: no overflow
@@ -384,201 +342,11 @@ bool buildPieces(const Job& job, const Box2& footprintBox, double minArea, bool 
   return buildPiecesOver(job, workingRegion(job, footprintBox), minArea, stopAtCap, pieces, stats);
 }
 
-// --- Inter-reflections (seed 000 §7) in area-sampled footprints ------------------------------------
-// A beam is the visible part of a mirror piece (convex fragments on its plane, with their weights)
-// and the share of the footprint it covers. Its rays leave along R, the view mirrored about the piece's
-// normal, so the beam is sampled as a footprint of its own: the view becomes -R, the screen the plane
-// perpendicular to R, the footprint the beam's fragments projected onto it. The pieces it can reach lie
-// in front of the mirror's plane (those are cut to that half-space) within the region its rays cross
-// over the grooves' height range; what each piece facing -R shows of the beam is found as for the eye
-// (visiblePart), lit as for the eye (litPart, against every piece, cut or not). A piece caught adds
-// weight x (lit share) x its direct radiance seen from -R, and, while bounces remain, a mirror piece's
-// caught part becomes a beam in turn. Rays no piece catches leave the surface when R points up and see
-// the environment (1 - Σ r_i of the beam). Affine maps between planes keep area ratios, so a share of
-// the beam's projected area is the same share of its part of the footprint. Beams live on a stack of
-// kMaxBeams entries and at most kMaxBeamSteps are followed per mirror piece seen by the eye, as in the
-// line-sampled sections (interreflection.cpp); a beam carrying less than 1e-12 of the pixel is dropped.
+}  // namespace area_stages
 
-struct Polygon3 {
-  std::array<Vec3, kPolygonMaxVertices> vertex;
-  int count = 0;
-  double weight = 1;
-};
+namespace {
 
-struct AreaBeam {
-  std::vector<Polygon3> fragments;  // on the mirror's plane
-  Vec3 normal;                      // the mirror's
-  std::size_t material = 0;
-  Vec3 toViewer;                    // what looks at the mirror: E, then back along the previous ray
-  Rgb weight{1, 1, 1};              // product of the mirror reflectances already applied
-  double share = 0;                 // of the footprint
-  int bounce = 0;                   // reflections made before this one
-};
-
-constexpr int kMaxAreaBeamSteps = 4 * kMaxBeams;
-constexpr double kNegligibleBeam = 1e-12;
-
-// The fragments of `set` (on the screen of frame f) lifted onto piece p's plane, each weight scaled.
-void liftFragments(const Frame& f, const Projected& p, const FragmentSet& set, double scale,
-                   std::vector<Polygon3>& out) {
-  for (int k = 0; k < set.count; ++k) {
-    const Fragment& fragment = set.fragment[k];
-    Polygon3 lifted;
-    for (int v = 0; v < fragment.polygon.count; ++v) lifted.vertex[lifted.count++] = seenPoint(f, p, fragment.polygon.vertex[v]);
-    lifted.weight = scale * fragment.weight;
-    out.push_back(lifted);
-  }
-}
-
-// The part of piece p on the side of the plane (normal, offset) that the normal points to, by more than
-// `tolerance` (Sutherland-Hodgman in 3D); count 0 when nothing is left.
-SurfacePiece inFrontOfPlane(const SurfacePiece& p, const Vec3& normal, double offset, double tolerance) {
-  SurfacePiece out = p;
-  out.count = 0;
-  for (int k = 0; k < p.count; ++k) {
-    const Vec3& a = p.vertex[k];
-    const Vec3& b = p.vertex[(k + 1) % p.count];
-    const double da = dot(normal, a) - offset - tolerance, db = dot(normal, b) - offset - tolerance;
-    if (da > 0) out.vertex[out.count++] = a;
-    if ((da > 0) != (db > 0) && out.count < kPolygonMaxVertices) {
-      const double t = da / (da - db);
-      out.vertex[out.count++] = {a.u + t * (b.u - a.u), a.v + t * (b.v - a.v), a.w + t * (b.w - a.w)};
-    }
-    if (out.count == kPolygonMaxVertices) break;
-  }
-  if (out.count < 3) out.count = 0;
-  return out;
-}
-
-// The region the beam's rays cross over the grooves' height range (and what shadows it), boxed: the
-// fragments' box swept along R by the whole height range either way, then along L (as workingRegion).
-ConvexPolygon beamRegion(const Job& job, const AreaBeam& beam, const Vec3& R) {
-  const double e = 1e-6 * job.lengthScale, range = job.height + job.depth + e;
-  Box2 start;
-  for (const Polygon3& p : beam.fragments)
-    for (int v = 0; v < p.count; ++v) {
-      start.lower = {std::min(start.lower.u, p.vertex[v].u), std::min(start.lower.v, p.vertex[v].v)};
-      start.upper = {std::max(start.upper.u, p.vertex[v].u), std::max(start.upper.v, p.vertex[v].v)};
-    }
-  const double raySweep[2] = {-range, range}, lightSweep[2] = {0, range};
-  return sweptBox(start, e, shiftPerHeight(R), raySweep, shiftPerHeight(job.frame.toLight), lightSweep);
-}
-
-void addWeighted(Rgb& sum, const Rgb& weight, double share, const Rgb& radiance) {
-  for (int c = 0; c < 3; ++c) sum[c] += weight[c] * share * radiance[c];
-}
-
-// Follows one beam: adds what its rays see to `sum` and pushes the beams of the mirrors they reach.
-void followBeam(const Job& job, const AreaBeam& beam, Rgb& sum, std::vector<AreaBeam>& stack, AreaSampleStats& stats) {
-  const Vec3 N = beam.normal;
-  if (!(dot(N, beam.toViewer) > 0)) return;
-  const Vec3 R = reflect(beam.toViewer, N);
-  const Material& mirror = job.scene.materials[beam.material];
-  Rgb weight;
-  for (int c = 0; c < 3; ++c) weight[c] = beam.weight[c] * mirror.mirror[c];
-  Frame f = job.frame;
-  f.toViewer = {-R.u, -R.v, -R.w};
-  f.baseScreen = false;
-  perpendicularAxes(f.toViewer, f.screenAxis1, f.screenAxis2);
-
-  // The beam on the new screen.
-  thread_local std::vector<ConvexPolygon> windows;
-  thread_local std::vector<double> windowWeights;
-  windows.clear();
-  windowWeights.clear();
-  double beamArea = 0;
-  for (const Polygon3& p : beam.fragments) {
-    ConvexPolygon w;
-    for (int v = 0; v < p.count; ++v) w.add(toScreen(f, p.vertex[v]));
-    makeCounterClockwise(w);
-    const double a = area(w);
-    if (!(a > 0)) continue;
-    windows.push_back(w);
-    windowWeights.push_back(p.weight);
-    beamArea += p.weight * a;
-  }
-  if (!(beamArea > 0)) return;  // seen edge-on: the beam carries no rays
-  f.minArea = 1e-13 * beamArea;
-
-  // What the rays can reach: the pieces in front of the mirror (`front`, cut to that side) and every
-  // piece for the shadows (`casters`).
-  thread_local std::vector<SurfacePiece> pieces, cut;
-  thread_local std::vector<std::size_t> origin;  // the piece each cut piece comes from
-  thread_local std::vector<Projected> casters, front;
-  pieces.clear();
-  cut.clear();
-  origin.clear();
-  if (!buildPiecesOver(job, beamRegion(job, beam, R), f.minArea, false, pieces, stats)) ++stats.incomplete;
-  const double mirrorOffset = dot(N, beam.fragments.front().vertex[0]);
-  for (std::size_t k = 0; k < pieces.size(); ++k) {
-    const SurfacePiece c = inFrontOfPlane(pieces[k], N, mirrorOffset, f.depthTolerance);
-    if (c.count == 0) continue;
-    cut.push_back(c);
-    origin.push_back(k);
-  }
-  casters.clear();
-  for (const SurfacePiece& p : pieces) casters.push_back(project(f, p, false));
-  front.clear();
-  for (const SurfacePiece& c : cut) front.push_back(project(f, c, false));
-
-  RadianceMemo radianceOf(job.scene.materials, f.toViewer, job.lighting);
-  thread_local FragmentSet visible;
-  ScreenEdges meEdges;
-  double caught = 0;
-  const double strongest = std::max({weight[0], weight[1], weight[2]});
-  for (std::size_t i = 0; i < front.size(); ++i) {
-    const Projected& me = front[i];
-    if (me.facingViewer <= 1e-12) continue;
-    const Material& material = job.scene.materials[me.piece->material];
-    const Rgb radiance = radianceOf(me.piece->material, me.piece->normal);
-    const bool bounceAgain = material.hasMirror && beam.bounce + 1 < job.lighting.maxBounces;
-    meEdges.count = edgeHalfPlanes(me.screen, meEdges.edge);
-    AreaBeam child;
-    for (std::size_t w = 0; w < windows.size(); ++w) {
-      if (!me.screenBox.overlaps(boundsOf(windows[w]))) continue;
-      visible.count = 0;
-      visible.minArea = f.minArea;
-      visible.overflows = 0;
-      visiblePart(f, front, i, windows[w], meEdges, visible);
-      if (visible.count == 0) continue;
-      const double scale = beam.share * windowWeights[w] / beamArea;  // footprint share per unit area here
-      const double seen = scale * visible.weightedArea();
-      caught += seen;
-      if (bounceAgain && seen * strongest > kNegligibleBeam) {
-        child.share += seen;
-        liftFragments(f, me, visible, windowWeights[w], child.fragments);
-      }
-      if (isBlack(radiance)) continue;
-      litPart(f, me, casters, &pieces[origin[i]], meEdges, visible);
-      stats.fragmentOverflows += visible.overflows;
-      addWeighted(sum, weight, scale * visible.weightedArea(), radiance);
-    }
-    if (child.share > 0 && stack.size() < std::size_t(kMaxBeams)) {
-      child.normal = me.piece->normal;
-      child.material = me.piece->material;
-      child.toViewer = f.toViewer;
-      child.weight = weight;
-      child.bounce = beam.bounce + 1;
-      stack.push_back(std::move(child));
-    }
-  }
-  // Rays no piece catches: going up, they leave the surface and see the environment.
-  if (R.w > 0) addWeighted(sum, weight, std::max(0.0, beam.share - caught), job.lighting.environment);
-}
-
-// What the reflection of a mirror piece seen by the eye adds: its beam and every beam it leads to.
-Rgb traceReflections(const Job& job, AreaBeam first, AreaSampleStats& stats) {
-  thread_local std::vector<AreaBeam> stack;
-  stack.clear();
-  stack.push_back(std::move(first));
-  Rgb sum{0, 0, 0};
-  for (int step = 0; step < kMaxAreaBeamSteps && !stack.empty(); ++step) {
-    const AreaBeam beam = std::move(stack.back());
-    stack.pop_back();
-    followBeam(job, beam, sum, stack, stats);
-  }
-  return sum;
-}
+using namespace area_stages;
 
 // Splits a footprint into 2 x 2 halves at most this many times when its pieces overflow the caps
 // (at most 4^3 sub-footprints, each with fewer pieces); past that, pieces are dropped (counted).
