@@ -73,6 +73,7 @@ RunOutcome runIsolated(const std::function<Measurement()>& job, double timeoutSe
 
 // Times `field` up to `repeats` times (fewer once `budgetSeconds` is spent, at least once); the median.
 double medianSeconds(const std::function<void()>& field, int repeats, double budgetSeconds, int* runs);
+double medianOf(std::vector<double> times);  // of a non-empty list; 0 for none
 
 // ---- methods.cpp ----
 struct MethodSettings {

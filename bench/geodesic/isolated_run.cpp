@@ -138,8 +138,13 @@ double medianSeconds(const std::function<void()>& field, int repeats, double bud
     times.push_back(std::chrono::duration<double>(Clock::now() - before).count());
     if (std::chrono::duration<double>(Clock::now() - start).count() > budgetSeconds) break;
   }
-  std::sort(times.begin(), times.end());
   if (runs) *runs = static_cast<int>(times.size());
+  return medianOf(std::move(times));
+}
+
+double medianOf(std::vector<double> times) {
+  if (times.empty()) return 0;
+  std::sort(times.begin(), times.end());
   const std::size_t n = times.size();
   return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
 }

@@ -54,9 +54,7 @@ auto timedSetup(const MethodSettings& settings, Build build, double& seconds) {
     times.push_back(secondsSince(before));
     if (secondsSince(start) > settings.repeatBudgetSeconds) break;
   }
-  std::sort(times.begin(), times.end());
-  const std::size_t n = times.size();
-  seconds = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+  seconds = medianOf(std::move(times));
   return std::move(*solver);
 }
 

@@ -18,6 +18,9 @@
 
 namespace bake::stroke::detail {
 
+// Half the diagonal of a unit pixel: no point of a pixel lies farther than this from its centre.
+constexpr double kPixelHalfDiagonal = 0.70710678118654757;
+
 class PixelFilter {
  public:
   // n need not be normalised; a zero vector gives the axis-aligned filter.
@@ -100,9 +103,8 @@ inline double discQuadrant(double x, double y, double r) {
 inline double discInPixel(double px, double py, double cx, double cy, double r) {
   if (!(r > 0)) return 0;
   const double dist = std::sqrt((px - cx) * (px - cx) + (py - cy) * (py - cy));
-  constexpr double kHalfDiagonal = 0.70710678118654757;
-  if (dist >= r + kHalfDiagonal) return 0;
-  if (dist + kHalfDiagonal <= r) return 1;
+  if (dist >= r + kPixelHalfDiagonal) return 0;
+  if (dist + kPixelHalfDiagonal <= r) return 1;
   if (r > 64) return std::clamp(0.5 + r - dist, 0.0, 1.0);  // the area differences would lose precision
   const double x0 = px - 0.5 - cx, x1 = px + 0.5 - cx, y0 = py - 0.5 - cy, y1 = py + 0.5 - cy;
   const double area = discQuadrant(x1, y1, r) - discQuadrant(x0, y1, r) - discQuadrant(x1, y0, r) + discQuadrant(x0, y0, r);

@@ -117,13 +117,12 @@ double capInk(const Geometry& st, const Disc& cap, double px, double py) {
   const double nx = cap.iy, ny = -cap.ix;
   const double d = rx * nx + ry * ny;
   const double rho = std::sqrt(rx * rx + ry * ry);
-  constexpr double kHalfDiagonal = 0.70710678118654757;
-  if (s >= kHalfDiagonal) return 0;  // wholly in the band: the pieces draw it
+  if (s >= detail::kPixelHalfDiagonal) return 0;  // wholly in the band: the pieces draw it
   const double profile = discProfile(rho, cap.r, st.centreOpacity, st.edgeOpacity);
-  if (s <= -kHalfDiagonal) return detail::discInPixel(px, py, cap.x, cap.y, cap.r) * profile;
-  if (rho >= cap.r + kHalfDiagonal && std::abs(d) >= cap.r + kHalfDiagonal) return 0;
+  if (s <= -detail::kPixelHalfDiagonal) return detail::discInPixel(px, py, cap.x, cap.y, cap.r) * profile;
+  if (rho >= cap.r + detail::kPixelHalfDiagonal && std::abs(d) >= cap.r + detail::kPixelHalfDiagonal) return 0;
   const bool uniform = st.centreOpacity == st.edgeOpacity;
-  if (uniform && rho + kHalfDiagonal <= cap.r) return st.centreOpacity;
+  if (uniform && rho + detail::kPixelHalfDiagonal <= cap.r) return st.centreOpacity;
   const detail::Polygon square = detail::pixelSquare(px, py);
   const double c = cap.x * cap.ix + cap.y * cap.iy, cn = cap.x * nx + cap.y * ny;
   double beyond = detail::discArea(detail::clip(square, cap.ix, cap.iy, c), cap.x, cap.y, cap.r);
@@ -170,15 +169,14 @@ class DiscCoverage {
     const double px = double(x) + 0.5, py = double(y) + 0.5;
     if (!cornered_) return detail::discInPixel(px, py, disc_.x, disc_.y, disc_.r);
     const double dist = std::sqrt((px - disc_.x) * (px - disc_.x) + (py - disc_.y) * (py - disc_.y));
-    if (dist >= disc_.r + kHalfDiagonal) return 0;
-    if (dist + kHalfDiagonal <= disc_.r) return 1;
+    if (dist >= disc_.r + detail::kPixelHalfDiagonal) return 0;
+    if (dist + detail::kPixelHalfDiagonal <= disc_.r) return 1;
     const std::size_t k = std::size_t((y - box_.y0) * columns_ + (x - box_.x0));
     const double area = corner_[k + std::size_t(columns_) + 1] - corner_[k + std::size_t(columns_)] - corner_[k + 1] + corner_[k];
     return std::clamp(area, 0.0, 1.0);
   }
 
  private:
-  static constexpr double kHalfDiagonal = 0.70710678118654757;
   static constexpr double kMaxQuadrantRadius = 64;  // discInPixel's limit for exact areas
   const Disc& disc_;
   Box box_;
