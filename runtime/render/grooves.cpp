@@ -43,12 +43,15 @@ constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kA
 // The retry buffer of shaders/grooves/area_retry.glsl (std430): kRetryList vec4 sums, two list
 // lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short by
 // a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
-// again by quarters of their footprint, four draws each.
+// again by parts of their footprint, one draw each: quarters, then sixteenths and sixty-fourths where
+// a part was cut short again (kAreaMaxSplitLevel, the CPU's deepest split too), and last sixty-fourths
+// once per beam of the eye's mirror pieces (kAreaEyeBeams of them at most).
 constexpr GLuint kAreaRetryBinding = fmt::kAreaRetryBinding;
 constexpr std::size_t kRetryList = 4096;
 constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
 constexpr std::size_t kRetryListOffset = kRetryCountsOffset + 2 * sizeof(std::uint32_t);
 constexpr std::size_t kRetryMaskOffset = kRetryListOffset + 2 * kRetryList * sizeof(std::uint32_t);
+constexpr int kAreaMaxSplitLevel = 3, kAreaEyeBeams = 6;
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -110,6 +113,8 @@ std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool ar
     defines.push_back("HAS_AREA_SAMPLING");
     defines.push_back("AREA_SLOTS " + std::to_string(kAreaSlots));
     defines.push_back("AREA_RETRY_LIST " + std::to_string(kRetryList));
+    defines.push_back("AREA_MAX_SPLIT_LEVEL " + std::to_string(kAreaMaxSplitLevel));
+    defines.push_back("AREA_EYE_BEAMS " + std::to_string(kAreaEyeBeams));
   }
   std::uint32_t longest = 3;
   for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
@@ -240,7 +245,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
 }
 
 // One draw of an item: its uniforms and buffers, then the mesh. `retry`: the pass
-// (area_retry.glsl: 0 the first, 1 a retry of whole footprints, 2 by quarters); `number` is the
+// (area_retry.glsl: 0 the first, 1 a retry of whole footprints, 2 by parts); `number` is the
 // item's draw number in the frame.
 void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int number, const RetryPass& retry) const {
   const unsigned program = item.program;
@@ -256,7 +261,9 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform3fv(program, glGetUniformLocation(program, "uEnvironment"), 1, frame.light.environment.data());
   if (item.areaSampling) {
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retry.kind);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaQuarter"), retry.quarter);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPartLevel"), retry.level);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPart"), retry.part);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaBeam"), retry.beam);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetrySlot"), retry.slot);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryDraw"), number);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryStride"), std::max(frame.width, 1));
@@ -298,8 +305,17 @@ void GroovesRenderer::drawRetryPass(const FrameContext& frame, std::array<int, 2
     if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retry);
 }
 
-// The pixels the first pass listed, shaded again one at a time, then those listed again by quarters.
-// Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
+// Whether a part of the pixel in retry slot `slot` was cut short again (its sum's w, area_retry.glsl).
+bool GroovesRenderer::partFailed(std::size_t slot) const {
+  float sum[4] = {};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(areaRetry_, GLintptr(slot * sizeof sum), sizeof sum, sum);
+  return sum[3] > 0;
+}
+
+// The pixels the first pass listed, shaded again one at a time, then those listed again by parts:
+// quarters, then smaller parts for the pixels where one was cut short again, and last the smallest
+// parts beam by beam. Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
 void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   const std::vector<std::array<int, 2>> whole = retryList(0);
   if (whole.empty()) return;
@@ -312,10 +328,22 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   glEnable(GL_SCISSOR_TEST);
-  for (const auto& pixel : whole) drawRetryPass(frame, pixel, {1, 0, 0});
-  const std::vector<std::array<int, 2>> byQuarters = retryList(1);
-  for (std::size_t slot = 0; slot < byQuarters.size(); ++slot)
-    for (int quarter = 0; quarter < 4; ++quarter) drawRetryPass(frame, byQuarters[slot], {2, quarter, int(slot)});
+  for (const auto& pixel : whole) drawRetryPass(frame, pixel, {1, 1, 0, 0});
+  const std::vector<std::array<int, 2>> byParts = retryList(1);
+  std::vector<std::size_t> pending(byParts.size());
+  for (std::size_t slot = 0; slot < pending.size(); ++slot) pending[slot] = slot;
+  for (int level = 1; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
+    for (const std::size_t slot : pending)
+      for (int part = 0; part < 1 << (2 * level); ++part) drawRetryPass(frame, byParts[slot], {2, level, part, int(slot)});
+    std::vector<std::size_t> failed;
+    for (const std::size_t slot : pending)
+      if (partFailed(slot)) failed.push_back(slot);
+    pending = std::move(failed);
+  }
+  for (const std::size_t slot : pending)
+    for (int part = 0; part < 1 << (2 * kAreaMaxSplitLevel); ++part)
+      for (int beam = 0; beam < kAreaEyeBeams; ++beam)
+        drawRetryPass(frame, byParts[slot], {2, kAreaMaxSplitLevel, part, int(slot), beam});
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);
   glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);

@@ -76,14 +76,15 @@ class GroovesRenderer : public TechniqueRenderer {
     std::size_t upload = 0;
     bool areaSampling = false;  // its variant samples special cases by area (and retries)
   };
-  // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaQuarter, uRetrySlot).
+  // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaPartLevel, uAreaPart, uRetrySlot).
   struct RetryPass {
-    int kind = 0, quarter = 0, slot = 0;
+    int kind = 0, level = 1, part = 0, slot = 0, beam = -1;
   };
   void drawItem(const Item& item, const FrameContext& frame, int number, const RetryPass& retry) const;
   std::vector<std::array<int, 2>> retryList(int list) const;
   void drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry);
   void drawRetryPasses(const FrameContext& frame);
+  bool partFailed(std::size_t slot) const;
   GroovesOptions options_;
   std::vector<Upload> uploads_;
   std::vector<Item> items_;

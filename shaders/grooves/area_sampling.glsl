@@ -5,8 +5,10 @@
 // pieces nearer the light (§6.3), and Eq. 1 over the visible, lit shares (§6.4). Occlusion between two
 // pieces is decided at one point of their overlap (pieces of a height field keep one order along
 // every view line and light ray), or without clipping when one lies wholly on one side of the other's
-// plane. Only direct light, as on the CPU. Pieces cover the working region: the footprint swept along
-// the view over the grooves' depth and height, then along the light over their whole range.
+// plane. The visible part of a mirror piece is a beam whose reflection is traced after the eye's
+// pieces (§7, area_reflections.glsl), as on the CPU. Pieces cover the working region: the footprint
+// swept along the view over the grooves' depth and height, then along the light over their whole
+// range.
 // Caps are below the CPU's (160 pieces and 160 cells here, 512 there; 16 fragments per piece, 48
 // there; 16 vertices per polygon, 24 there): when they are reached the part that overflows is split
 // in 2 x 2 halves, at most three times, as on the CPU (whose caps are reached less often; both are
@@ -18,12 +20,27 @@
 #include "area_surface.glsl"
 #include "material.glsl"
 
-const int kAreaMaxSplitLevel = 3;  // up to 8 x 8 parts, as the CPU's three halvings
+#ifndef AREA_MAX_SPLIT_LEVEL
+#error "AREA_MAX_SPLIT_LEVEL comes from the renderer (runtime/render/grooves.cpp kAreaMaxSplitLevel)"
+#endif
+const int kAreaMaxSplitLevel = AREA_MAX_SPLIT_LEVEL;  // up to 8 x 8 parts, as the CPU's three halvings
 
 vec3 gAreaView, gAreaLight;
+vec3 gAreaEyeView;  // E; gAreaView is -R while a reflected beam is sampled
+// The screen the view lines are projected onto: the base plane for the eye, the plane through the
+// origin perpendicular to the view (axes below) for a reflected beam, whose direction may be
+// horizontal or point down.
+bool gAreaBaseScreen = true;
+vec3 gAreaScreenAxis1, gAreaScreenAxis2;
+// While a beam is sampled, the pieces are seen only in front of its mirror's plane (xyz . x > w).
+bool gAreaCutByPlane = false;
+vec4 gAreaCutPlane;
 float gAreaMinArea, gAreaDepthTolerance;
 bool gAreaLightAllOccluders;  // light near or below the horizon: back faces occlude too
 float gAreaHeight, gAreaDepth, gAreaLengthScale;
+// A retry pass may trace the eye's beams one per pass (area_retry.glsl): >= 0, only beam number
+// gAreaBeamAlone, with the pieces' direct light in the pass of beam 0 only; -1, everything.
+int gAreaBeamAlone = -1;
 
 // --- The fragments of one visible piece (polygon.h FragmentSet) ----------------------------------
 // When a subtraction needs more room than there is, the fragment is kept whole with its weight lowered
@@ -96,7 +113,35 @@ float fragmentsWeightedArea() {
 
 // --- Pieces as the sampler sees them --------------------------------------------------------------
 
-vec2 toScreen(vec3 p) { return p.xy - (p.z / gAreaView.z) * gAreaView.xy; }
+vec2 toScreen(vec3 p) {
+  return gAreaBaseScreen ? p.xy - (p.z / gAreaView.z) * gAreaView.xy
+                         : vec2(dot(p, gAreaScreenAxis1), dot(p, gAreaScreenAxis2));
+}
+
+// The screen point x in 3D.
+vec3 fromScreen(vec2 x) { return gAreaBaseScreen ? vec3(x, 0.0) : x.x * gAreaScreenAxis1 + x.y * gAreaScreenAxis2; }
+
+// How far x lies in front of the cutting plane, less the depth tolerance.
+float aheadOfCut(vec3 x) { return dot(gAreaCutPlane.xyz, x) - gAreaCutPlane.w - gAreaDepthTolerance; }
+
+// The screen image of piece i into `screen`; while a beam is sampled, of its part in front of the
+// mirror's plane (Sutherland-Hodgman in 3D; the piece's own vertices stay whole for the shadows).
+void projectPieceScreen(int i, int screen) {
+  setVertexCount(screen, 0);
+  int n = pieceVertexCount(i);
+  for (int k = 0; k < n; ++k) {
+    vec3 x = pieceVertex(i, k);
+    if (!gAreaCutByPlane) {
+      addVertex(screen, toScreen(x));
+      continue;
+    }
+    vec3 next = pieceVertex(i, k + 1 == n ? 0 : k + 1);
+    float a = aheadOfCut(x), b = aheadOfCut(next);
+    if (a > 0.0) addVertex(screen, toScreen(x));
+    if ((a > 0.0) != (b > 0.0)) addVertex(screen, toScreen(mix(x, next, a / (a - b))));
+  }
+  if (isEmpty(screen)) setVertexCount(screen, 0);
+}
 
 void projectPieces() {
   vec3 helper = abs(gAreaLight.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
@@ -104,15 +149,15 @@ void projectPieces() {
   for (int i = 0; i < gSurfaceCount; ++i) {
     int piece = pieceAt(i);
     vec3 normal = pieceNormal(i);
-    setArena(piece + kPieceFacingViewer, dot(normal, gAreaView));
     setArena(piece + kPieceFacingLight, dot(normal, gAreaLight));
     int screen = pieceScreen(i);
-    setVertexCount(screen, 0);
+    projectPieceScreen(i, screen);
+    // Wholly behind a beam's mirror: neither seen nor hiding anything (it may still shadow).
+    setArena(piece + kPieceFacingViewer, isEmpty(screen) ? 0.0 : dot(normal, gAreaView));
     vec4 lightBox = vec4(vec2(kInfinity), vec2(-kInfinity));
     int n = pieceVertexCount(i);
     for (int k = 0; k < n; ++k) {
       vec3 x = pieceVertex(i, k);
-      addVertex(screen, toScreen(x));
       vec2 l = vec2(dot(x, axis1), dot(x, axis2));
       lightBox = vec4(min(lightBox.xy, l), max(lightBox.zw, l));
     }
@@ -123,12 +168,9 @@ void projectPieces() {
 }
 
 // Distance along the view line through screen point x to piece p's plane.
-float viewDepth(int p, vec2 x) { return (piecePlaneOffset(p) - dot(pieceNormal(p).xy, x)) / pieceFacingViewer(p); }
+float viewDepth(int p, vec2 x) { return (piecePlaneOffset(p) - dot(pieceNormal(p), fromScreen(x))) / pieceFacingViewer(p); }
 
-vec3 seenPoint(int p, vec2 x) {
-  float t = viewDepth(p, x);
-  return vec3(x + t * gAreaView.xy, t * gAreaView.z);
-}
+vec3 seenPoint(int p, vec2 x) { return fromScreen(x) + viewDepth(p, x) * gAreaView; }
 
 // Signed distance from q along L to piece p's plane (positive: the plane is towards the light).
 float lightDistance(int p, vec3 q) { return (piecePlaneOffset(p) - dot(pieceNormal(p), q)) / pieceFacingLight(p); }
@@ -204,7 +246,23 @@ bool occludes(int i, int j, bool shadows, vec4 bounds, int meEdgeCount, out int 
 // holding the clipping code would cost dozens of iterations for every piece it skips.
 float gSeenArea;  // the visible part's weighted area before the shadows were subtracted
 
-void visibleLitPart(int i) {
+// Whether a piece of this material sends a beam (§7): it mirrors and bounces are followed.
+bool reflectionTraced(int material) { return hasMirror(material) && gMaxBounces > 0; }
+
+#ifdef HAS_MIRRORS
+void collectBeamFragments(int i);  // area_reflections.glsl
+#endif
+
+// The visible part is complete (no shadow subtracted yet): its area, and a beam's fragments from it.
+void visiblePartDone(int i) {
+  gSeenArea = fragmentsWeightedArea();
+#ifdef HAS_MIRRORS
+  collectBeamFragments(i);
+#endif
+}
+
+// `withShadows`: false where the piece has no direct light (only the visible part matters).
+void visibleLitPart(int i, bool withShadows) {
   intersectEdgesInto(fragmentAt(0), pieceScreen(i), kEdgesFootprint, edgeHalfPlanes(kFootprint, kEdgesFootprint),
                      kSpare);
   gFragmentCount = negligible(fragmentAt(0), gAreaMinArea) ? 0 : 1;
@@ -214,7 +272,7 @@ void visibleLitPart(int i) {
   int meEdgeCount = edgeHalfPlanes(pieceScreen(i), kEdgesMe);
   vec4 lightBox = pieceLightBox(i);
   gSeenArea = -1.0;
-  int steps = 2 * gSurfaceCount;
+  int steps = (withShadows ? 2 : 1) * gSurfaceCount;
   int step = 0;
   while (gFragmentCount > 0 && step < steps) {
     int hole = -1;
@@ -228,11 +286,11 @@ void visibleLitPart(int i) {
     }
     if (hole < 0) break;
     // Steps from gSurfaceCount on are shadows: the visible part is complete before the first.
-    if (gSeenArea < 0.0 && step > gSurfaceCount) gSeenArea = fragmentsWeightedArea();
+    if (gSeenArea < 0.0 && step > gSurfaceCount) visiblePartDone(i);
     subtractFromFragments(hole);
     bounds = fragmentsBox();
   }
-  if (gSeenArea < 0.0) gSeenArea = fragmentsWeightedArea();  // no shadow was subtracted
+  if (gSeenArea < 0.0) visiblePartDone(i);  // no shadow was subtracted
 }
 
 // How far a line along d travels across the base plane per unit of height (bounded like the query
@@ -244,27 +302,49 @@ vec2 shiftPerHeight(vec3 d) {
   return (slope / horizontal) * d.xy;
 }
 
+// The box `start` grown by e, swept by h a for h in aSweep, then by k b for k in bSweep: the rectangle
+// around it, cut to the slabs along a and along b that hold the swept set (a long sweep askew to the
+// axes covers a small part of its rectangle), into kRegion.
+void sweptRegion(vec4 start, float e, vec2 a, vec2 aSweep, vec2 b, vec2 bSweep) {
+  vec4 box = vec4(vec2(kInfinity), vec2(-kInfinity));
+  vec2 acrossA = vec2(-a.y, a.x), acrossB = vec2(-b.y, b.x);
+  vec4 slabs = vec4(kInfinity, -kInfinity, kInfinity, -kInfinity);  // least and greatest across a, b
+  for (int corner = 0; corner < 16; ++corner) {
+    vec2 c = vec2((corner & 1) != 0 ? start.z + e : start.x - e, (corner & 2) != 0 ? start.w + e : start.y - e);
+    vec2 x = c + ((corner & 4) != 0 ? aSweep.y : aSweep.x) * a + ((corner & 8) != 0 ? bSweep.y : bSweep.x) * b;
+    box = vec4(min(box.xy, x), max(box.zw, x));
+    vec2 across = vec2(dot(acrossA, x), dot(acrossB, x));
+    slabs = vec4(min(slabs.x, across.x), max(slabs.y, across.x), min(slabs.z, across.y), max(slabs.w, across.y));
+  }
+  vec4 b4 = box;
+  setVertexCount(kRegion, 0);
+  addVertex(kRegion, b4.xy);
+  addVertex(kRegion, b4.zy);
+  addVertex(kRegion, b4.zw);
+  addVertex(kRegion, b4.xw);
+  if (a != vec2(0.0)) {
+    clipInPlace(kRegion, vec3(acrossA, slabs.x), kSpare);
+    clipInPlace(kRegion, vec3(-acrossA, -slabs.y), kSpare);
+  }
+  if (b != vec2(0.0)) {
+    clipInPlace(kRegion, vec3(acrossB, slabs.z), kSpare);
+    clipInPlace(kRegion, vec3(-acrossB, -slabs.w), kSpare);
+  }
+}
+
 // The footprint box swept along the view over [-depth, height], then along the light over
 // [0, height + depth] (what is seen in the footprint, hides it or shadows it), into kRegion.
 void workingRegion(vec4 footprintBox) {
   float e = 1e-5 * gAreaLengthScale;
-  vec2 view = shiftPerHeight(gAreaView), light = shiftPerHeight(gAreaLight);
-  vec2 viewSweep = vec2(-gAreaDepth - e, gAreaHeight + e);
-  vec2 lightSweep = vec2(0.0, gAreaHeight + gAreaDepth + e);
-  vec4 b = vec4(vec2(kInfinity), vec2(-kInfinity));
-  for (int corner = 0; corner < 16; ++corner) {
-    vec2 c = vec2((corner & 1) != 0 ? footprintBox.z + e : footprintBox.x - e,
-                  (corner & 2) != 0 ? footprintBox.w + e : footprintBox.y - e);
-    vec2 x = c + ((corner & 4) != 0 ? viewSweep.y : viewSweep.x) * view +
-             ((corner & 8) != 0 ? lightSweep.y : lightSweep.x) * light;
-    b = vec4(min(b.xy, x), max(b.zw, x));
-  }
-  setVertexCount(kRegion, 0);
-  addVertex(kRegion, b.xy);
-  addVertex(kRegion, b.zy);
-  addVertex(kRegion, b.zw);
-  addVertex(kRegion, b.xw);
+  sweptRegion(footprintBox, e, shiftPerHeight(gAreaView), vec2(-gAreaDepth - e, gAreaHeight + e),
+              shiftPerHeight(gAreaLight), vec2(0.0, gAreaHeight + gAreaDepth + e));
 }
+
+#ifdef HAS_MIRRORS
+#include "area_reflections.glsl"
+#else
+const int kAreaBeamsSize = 0;
+#endif
 
 void footprintParallelogram(int p, vec2 centre, vec2 axis1, vec2 axis2) {
   vec2 h1 = 0.5 * axis1, h2 = 0.5 * axis2;
@@ -280,6 +360,9 @@ void footprintParallelogram(int p, vec2 centre, vec2 axis1, vec2 axis2) {
 // last level, the caller splits; on the last level the value leaves out what did not fit).
 bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, out vec3 radiance) {
   radiance = vec3(0.0);
+  gAreaView = gAreaEyeView;
+  gAreaBaseScreen = true;
+  gAreaCutByPlane = false;
   footprintParallelogram(kFootprint, centre, axis1, axis2);
   float footprintArea = polygonArea(kFootprint);
   gAreaMinArea = 1e-8 * footprintArea;
@@ -296,19 +379,36 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
   // The pieces seen in the footprint and lit, found by a loop without loops inside (see
   // visibleLitPart).
   int count = split ? 0 : gSurfaceCount;
+  bool withDirect = gAreaBeamAlone <= 0;
+  int eyeBeams = 0;  // mirror pieces met
+#ifdef HAS_MIRRORS
+  gAreaBeamCount = 0;
+  gCollectBeam = -1;
+#endif
   for (int i = 0; i < count; ++i) {
     while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), footprintBox) &&
-                          (directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0) ||
-                           environmentReflection(pieceMaterial(i)) != vec3(0.0))))
+                          ((withDirect && directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)) ||
+                           reflectionTraced(pieceMaterial(i)))))
       ++i;
     if (i == count) break;
-    visibleLitPart(i);
-    vec3 direct = directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView);
-    // A mirror piece's reflection is not traced here: it sees the environment over the visible part.
-    radiance += (fragmentsWeightedArea() / footprintArea) * direct +
-                (gSeenArea / footprintArea) * environmentReflection(pieceMaterial(i));
+    vec3 direct = withDirect ? directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) : vec3(0.0);
+#ifdef HAS_MIRRORS
+    // The visible part of a mirror piece, lit or not, becomes a beam, traced below.
+    bool beam = reflectionTraced(pieceMaterial(i)) && startEyeBeam(eyeBeams++, footprintArea);
+    if (!beam && direct == vec3(0.0)) continue;  // another pass's beam
+#endif
+    visibleLitPart(i, direct != vec3(0.0));
+    radiance += (fragmentsWeightedArea() / footprintArea) * direct;
+#ifdef HAS_MIRRORS
+    if (beam) finishAreaBeam(i, vec3(1.0), 0);
+#endif
   }
-  return gAreaOverflows == 0;
+  bool complete = gAreaOverflows == 0;
+#ifdef HAS_MIRRORS
+  // After the eye's pieces, which each beam's pieces replace.
+  if (count > 0 && (complete || lastLevel)) radiance += traceAreaBeams();
+#endif
+  return complete;
 }
 
 // The extent of the local geometry: half-width, height above and depth below the base plane.
@@ -332,13 +432,13 @@ float areaExtent() {
 // the quadtree of parts (cell (x, y) of 2^level x 2^level), children in the order (0,0) (1,0) (0,1)
 // (1,1), with no stack: after a part is done, climb out of every level where it was the last child,
 // then step to the next sibling. One loop, so llvmpipe's cap counts only the parts sampled, and a
-// part that fits is never sampled again. `quarter` 0 to 3 walks only that quarter's subtree (a retry
-// pass, area_retry.glsl; its share of the footprint's value), -1 the whole tree.
-void sampleSplitParts(vec2 axis1, vec2 axis2, int quarter, out vec3 radiance) {
+// part that fits is never sampled again. `part` 0 to 4^partLevel - 1 walks only that part's subtree (a
+// retry pass, area_retry.glsl; its share of the footprint's value), -1 the whole tree.
+void sampleSplitParts(vec2 axis1, vec2 axis2, int part, int partLevel, out vec3 radiance) {
   radiance = vec3(0.0);
-  int root = quarter < 0 ? 0 : 1;
+  int root = part < 0 ? 0 : clamp(partLevel, 1, kAreaMaxSplitLevel);
   int level = root;
-  ivec2 cell = quarter < 0 ? ivec2(0) : ivec2(quarter & 1, quarter >> 1);
+  ivec2 cell = part < 0 ? ivec2(0) : ivec2(part & ((1 << root) - 1), part >> root);
   bool more = true;
   while (more) {
     float parts = float(1 << level);
@@ -362,14 +462,14 @@ void sampleSplitParts(vec2 axis1, vec2 axis2, int quarter, out vec3 radiance) {
 }
 
 // The footprint F + s1 A1 + s2 A2 (s1, s2 in [-1/2, 1/2]) relative to F, by area (§6), or the share
-// of one of its quarters (0 to 3; -1: all of it); false when no arena slot was free (the caller line
+// of one of its parts (area_retry.glsl; -1: all of it); false when no arena slot was free (the caller line
 // samples).
-bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, int quarter, out vec3 radiance) {
+bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, int part, int partLevel, out vec3 radiance) {
   radiance = vec3(0.0);
   // A helper invocation has no side effects (its arena writes and atomics are dropped) and its value
   // is never seen: nothing to do. One exit, no break (see shadeFootprint).
   bool helper = gl_HelperInvocation;
-  bool slot = !helper && acquireSlot(kAreaSlotSize);
+  bool slot = !helper && acquireSlot(kAreaSlotSize + kAreaBeamsSize);
   if (slot) {
     straightenFound();
     float width = areaExtent();
@@ -384,11 +484,11 @@ bool areaSample(vec2 axis1, vec2 axis2, vec3 toViewer, int quarter, out vec3 rad
       else axis1 += nudge;
     }
     gAreaLengthScale = max(max(span, width), max(gAreaHeight + gAreaDepth, 1e-30));
-    gAreaView = toViewer;
+    gAreaEyeView = toViewer;
     gAreaLight = gLightDir;
     gAreaDepthTolerance = 1e-5 * gAreaLengthScale;
     gAreaLightAllOccluders = gLightDir.z < 0.05;
-    sampleSplitParts(axis1, axis2, quarter, radiance);
+    sampleSplitParts(axis1, axis2, part, partLevel, radiance);
     releaseSlot();
   }
   return helper || slot;

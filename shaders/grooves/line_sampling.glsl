@@ -258,23 +258,25 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   gAreaCut = false;
   // A footprint without area (no screen-space derivatives) is line sampled: a rasterised pixel has one.
   if (gSpecialCase && length(axis1) + length(axis2) > 0.0) {
-    int quarter = isQuarterPass() ? uAreaQuarter : -1;
-    sampled = areaSample(axis1, axis2, toViewer, quarter, radiance);
+    int part = isQuarterPass() ? uAreaPart : -1;
+    gAreaBeamAlone = isBeamByBeam() ? uAreaBeam : -1;
+    sampled = areaSample(axis1, axis2, toViewer, part, uAreaPartLevel, radiance);
     gAreaNoSlot = !sampled;  // every arena slot tried was taken: line sampled instead
     // Cut short by such a cap, the area sample misses the pieces it had not reached: the line
     // sample stands in, and gAreaCut says so.
     gAreaCut = sampled && (loopsCutShort() || retryForced());
     bool counted = true;
-    if (quarter >= 0) {  // a share of the footprint: the value once the four are summed
+    if (part >= 0) {  // a share of the footprint: the value once the parts are summed
       vec4 sum;
-      counted = addQuarter(radiance, !sampled || gAreaCut, sum);
+      counted = addPart(radiance, !sampled || gAreaCut, sum);
       radiance = sum.rgb;
-      gAreaCut = sum.w > 0.0;  // a quarter without a slot is counted as cut short too
+      gAreaCut = sum.w > 0.0;  // a part without a slot is counted as cut short too
       gAreaNoSlot = false;
       sampled = true;
     }
     sampled = sampled && !gAreaCut;
-    gAreaDeferred = gAreaCut && listForRetry();  // shaded again: alone, then by quarters
+    // Shaded again: alone, then by parts, smaller ones while a part is cut short.
+    gAreaDeferred = gAreaCut && (part >= 0 ? retriedAfterParts() : listForRetry());
     // No effect in helper invocations. A deferred fragment is counted again by its retry.
     if (counted) atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
   }

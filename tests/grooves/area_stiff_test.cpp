@@ -162,9 +162,10 @@ TEST(GrooveAreaStiff, FootprintHundredGrooveWidthsOverAGrid) {
 }
 
 TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
-  // A light 1° above the horizon, along the grid's diagonal: whatever may shadow the footprint lies up
-  // to 57 groove depths away towards the light, across both families of grooves, so even an eighth of
-  // the footprint sees dozens of crossings of a dense grid (grooves 0.02 wide, 0.025 apart).
+  // A light 0.6° above the horizon, along the grid's diagonal: whatever may shadow the footprint lies
+  // up to 100 groove depths away towards the light (the bound on the reach), across both families of
+  // grooves, and the footprint spans 12 grooves each way, so even an eighth of it sees dozens of
+  // crossings of a dense grid (grooves 0.02 wide, 0.025 apart).
   std::string grooves;
   for (int i = 0; i < 25; ++i) {
     const double x = 1.7 + 0.025 * i;
@@ -172,8 +173,8 @@ TEST(GrooveAreaStiff, PastTheSplitsPiecesAreDroppedAndCounted) {
   }
   const GrooveScene s = sceneWith(grooves, 4);
   AreaSampleStats stats;
-  const Lighting l = lightTowards({1, 1, 0.025});
-  const Rgb value = sample(s, squareFootprint({2, 2}, 0.04), {0, 0, 1}, l, &stats);
+  const Lighting l = lightTowards({1, 1, 0.01});
+  const Rgb value = sample(s, squareFootprint({2, 2}, 0.3), {0, 0, 1}, l, &stats);
   EXPECT_GT(stats.incomplete, 0u) << stats.surface.cells << " " << stats.splits;
   // Dropped pieces only take light away: the value stays between 0 and the brightest piece's radiance.
   const Rgb ground = directRadiance(materialNamed(s, "ground"), {0, 0, 1}, {0, 0, 1}, l);

@@ -171,6 +171,9 @@ struct OracleFigures {
   double specialRmse = 0;
   int specialMaxLevels = 0;
   int cutMaxLevels = 0;  // how far the cut pixels' stand-in line samples are from the CPU's area samples
+  // The special-case pixels against the CPU method with area-sampled reflections untraced (a mirror
+  // piece there adds mirror x environment): how much the traced beams change them.
+  int untracedSpecialMaxLevels = 0;
   // Line-sampled pixels whose CPU value moves by more than 2/255 when arcs are left straight (the
   // pixels that test the shader's curved sections).
   std::size_t curvedShows = 0;
@@ -234,8 +237,10 @@ class GroovesOracle : public test::GlTest {
     // The CPU holds what the shader holds: a footprint over more primitives goes to the far level.
     grooves::SeedSettings asRuntime;
     asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
-    asRuntime.areaReflections = false;  // the shader does not trace them yet (formats/groove-scene.md)
     const grooves::SeedShader oracle(baked.scene, baked.grid, asRuntime);
+    grooves::SeedSettings untracedSettings = asRuntime;
+    untracedSettings.areaReflections = false;
+    const grooves::SeedShader untraced(baked.scene, baked.grid, untracedSettings);
     grooves::SeedSettings straightArcs = asRuntime;
     straightArcs.curvedSections = false;
     const grooves::SeedShader straight(baked.scene, baked.grid, straightArcs);
@@ -279,10 +284,13 @@ class GroovesOracle : public test::GlTest {
                                                                            quantised(expected[std::size_t(k)])));
           continue;
         }
+        const grooves::Rgb withoutBeams = untraced.shade(footprint, toViewer, light3);
         for (int k = 0; k < 3; ++k) {
           const double got = radiance[p * 4 + std::size_t(k)], want = expected[std::size_t(k)];
           specialSquared += (got - want) * (got - want);
           figures.specialMaxLevels = std::max(figures.specialMaxLevels, std::abs(quantised(got) - quantised(want)));
+          figures.untracedSpecialMaxLevels =
+              std::max(figures.untracedSpecialMaxLevels, std::abs(quantised(got) - quantised(withoutBeams[std::size_t(k)])));
         }
         continue;
       }
@@ -339,10 +347,11 @@ class GroovesOracle : public test::GlTest {
       RecordProperty(name + "_special_max_levels", f.specialMaxLevels);
       RecordProperty(name + "_special_cut", int(f.cut));
       RecordProperty(name + "_special_cut_max_levels", f.cutMaxLevels);
-      std::printf("[ grooves ] %s: special-case pixels (area sampled): RMSE %.3g, max %d/255; %zu cut short by the "
-                  "driver's loop cap (line sampled instead, up to %d/255 off) and %zu without an arena slot (line "
-                  "sampled, not counted)\n",
-                  name.c_str(), f.specialRmse, f.specialMaxLevels, f.cut, f.cutMaxLevels, f.noSlot);
+      std::printf("[ grooves ] %s: special-case pixels (area sampled): RMSE %.3g, max %d/255 (%d/255 from the CPU "
+                  "method without area-sampled reflections); %zu cut short by the driver's loop cap (line sampled "
+                  "instead, up to %d/255 off) and %zu without an arena slot (line sampled, not counted)\n",
+                  name.c_str(), f.specialRmse, f.specialMaxLevels, f.untracedSpecialMaxLevels, f.cut, f.cutMaxLevels,
+                  f.noSlot);
       EXPECT_GT(f.special, 0u) << "the view should show the special case";
       // Sampled by area to the end, on llvmpipe too: what its loop cap cuts short in a group of pixels
       // is shaded again alone, or by quarters (the retry passes).
@@ -739,6 +748,25 @@ TEST_F(GroovesOracle, MirrorBaseReflectsTheEnvironmentAsOnTheCpu) {
   expectWithinTwoLevels(f, "mirror_base_environment", true);
 }
 
+// Mirror grooves crossing (seed 000 §7 in §6's special cases), three bounces under an environment:
+// the shader traces the beams of the mirror pieces it samples by area as the CPU method does, and
+// they show (the CPU method without them is far off).
+TEST_F(GroovesOracle, MirrorCrossingTracesBouncesAsOnTheCpu) {
+  areaSampling_ = true;
+  environment_ = {0.4f, 0.5f, 0.6f};
+  const std::string materials =
+      R"("polished": {"albedo": [0.1, 0.1, 0.1], "specular": [0.2, 0.2, 0.2], "shininess": 20, "mirror": [0.9, 0.8, 0.7]}, )" + kGrey;
+  const std::string deep = R"("deep": {"points": [[-0.05, 0], [0, -0.07], [0.05, 0]]})";
+  const Baked baked = bake(sceneJson(1, deep, materials, "grey",
+                                     R"({"profile": "deep", "material": "polished", "path": {"line": [[-0.5, 0.5], [1.5, 0.5]]}}, )"
+                                     R"({"profile": "deep", "material": "polished", "path": {"line": [[0.5, -0.5], [0.5, 1.5]]}})"),
+                           "mirror_crossing_bounces");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.62f, 0.25f, 0.45f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 3);
+  expectWithinTwoLevels(f, "mirror_crossing_bounces", true);
+  EXPECT_GE(f.untracedSpecialMaxLevels, 8) << "the view should show inter-reflections in the special cases";
+}
+
 // The example scenes of pipelines/grooves, as the examples bake them: the record (no special case
 // but its two ends) and the tiles (the joints between the T-junctions and ends). The tiles'
 // T-junctions are the costliest area samples of the examples: every one must stay inside llvmpipe's
@@ -768,14 +796,14 @@ TEST_F(GroovesOracle, ExampleTiles) {
 }
 
 // The engraved plate: a corner of the border with the start of a diagonal V-cut (corner, crossing
-// and end records), brass and its cut mirroring (one bounce away from the special cases; none in them,
-// as on the CPU).
+// and end records), brass and its cut mirroring one bounce, traced in the special cases too.
 TEST_F(GroovesOracle, ExamplePlate) {
   areaSampling_ = true;
   const Baked baked = bake(exampleScene("plate.json"), "example_plate");
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
   expectWithinTwoLevels(f, "example_plate", true);
+  EXPECT_GE(f.untracedSpecialMaxLevels, 6) << "the brass's reflections in the special cases should show";
 }
 
 // The plate where the straight scratch (a V with pile-up ridges) crosses the ring: special cases with
@@ -942,7 +970,6 @@ TEST_F(GroovesOracle, FlutedColumnMatchesTheCpuThroughTheSameMesh) {
   };
   grooves::SeedSettings asRuntime;
   asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
-  asRuntime.areaReflections = false;  // the shader does not trace them yet (formats/groove-scene.md)
   const grooves::SeedShader oracle(baked.scene, baked.grid, asRuntime);
   std::size_t compared = 0, over = 0;
   double maxCentre = 0, maxAxis = 0, maxDirection = 0;

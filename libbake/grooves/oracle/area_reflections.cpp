@@ -34,17 +34,25 @@ SurfacePiece inFrontOfPlane(const SurfacePiece& p, const Vec3& normal, double of
 }
 
 // The region the beam's rays cross over the grooves' height range (and what shadows it), boxed: the
-// fragments' box swept along R by the whole height range either way, then along L (as workingRegion).
+// fragments' box swept forward along R (up or down) until the rays leave the height range, then along
+// L (as workingRegion). A ray from x0 at height w0 reaches x0 + s R_uv / |R_w| after a change of height
+// s, at most height - w0 going up and w0 + depth going down (the horizontal reach bounded by kMaxReach,
+// for rays near the horizon, as for the light).
 ConvexPolygon beamRegion(const Job& job, const AreaBeam& beam, const Vec3& R) {
   const double e = 1e-6 * job.lengthScale, range = job.height + job.depth + e;
+  const Vec3 level{R.u, R.v, std::abs(R.w)};  // the same shift per height, up or down
   Box2 start;
+  double lowest = job.height, highest = -job.depth;
   for (const Polygon3& p : beam.fragments)
     for (int v = 0; v < p.count; ++v) {
       start.lower = {std::min(start.lower.u, p.vertex[v].u), std::min(start.lower.v, p.vertex[v].v)};
       start.upper = {std::max(start.upper.u, p.vertex[v].u), std::max(start.upper.v, p.vertex[v].v)};
+      lowest = std::min(lowest, p.vertex[v].w);
+      highest = std::max(highest, p.vertex[v].w);
     }
-  const double raySweep[2] = {-range, range}, lightSweep[2] = {0, range};
-  return sweptBox(start, e, shiftPerHeight(R), raySweep, shiftPerHeight(job.frame.toLight), lightSweep);
+  const double climb = R.w > 0 ? job.height - lowest : (R.w < 0 ? highest + job.depth : range);
+  const double raySweep[2] = {0, std::clamp(climb + e, 0.0, range)}, lightSweep[2] = {0, range};
+  return sweptBox(start, e, shiftPerHeight(level), raySweep, shiftPerHeight(job.frame.toLight), lightSweep);
 }
 
 void addWeighted(Rgb& sum, const Rgb& weight, double share, const Rgb& radiance) {

@@ -284,15 +284,19 @@ Vec2 shiftPerHeight(const Vec3& d) {
 }
 
 // The box `start`, grown by e, swept by h a for h in aRange, then by k b for k in bRange: the
-// rectangle around it.
+// rectangle around it, cut to the slabs along a and along b that hold the swept set (a long sweep
+// askew to the axes covers a small part of its rectangle).
 ConvexPolygon sweptBox(const Box2& start, double e, Vec2 a, const double (&aRange)[2], Vec2 b,
                        const double (&bRange)[2]) {
+  std::array<Vec2, 16> corners;
+  int n = 0;
   Box2 box;
   for (const double cu : {start.lower.u - e, start.upper.u + e})
     for (const double cv : {start.lower.v - e, start.upper.v + e})
       for (const double h : aRange)
         for (const double k : bRange) {
           const Vec2 x{cu + h * a.u + k * b.u, cv + h * a.v + k * b.v};
+          corners[std::size_t(n++)] = x;
           box.lower = {std::min(box.lower.u, x.u), std::min(box.lower.v, x.v)};
           box.upper = {std::max(box.upper.u, x.u), std::max(box.upper.v, x.v)};
         }
@@ -301,6 +305,18 @@ ConvexPolygon sweptBox(const Box2& start, double e, Vec2 a, const double (&aRang
   region.add({box.upper.u, box.lower.v});
   region.add(box.upper);
   region.add({box.lower.u, box.upper.v});
+  for (const Vec2 along : {a, b}) {
+    if (along.u == 0 && along.v == 0) continue;
+    const Vec2 across{-along.v, along.u};
+    double lowest = 1e300, highest = -1e300;
+    for (const Vec2& x : corners) {
+      const double d = across.u * x.u + across.v * x.v;
+      lowest = std::min(lowest, d);
+      highest = std::max(highest, d);
+    }
+    clipInPlace(region, HalfPlane{across, lowest});
+    clipInPlace(region, HalfPlane{{-across.u, -across.v}, -highest});
+  }
   return region;
 }
 
