@@ -139,15 +139,19 @@ void copyAreaBeam(int to, int from) {
   }
 }
 
-// What the rays of `beam` see; pushes the beams of the mirrors they reach.
-vec3 followAreaBeam(int beam) {
+// The pass of `beam`: the frame along -R, its windows' area and boxes, the region its rays cross
+// and the mirror's plane the pieces are cut to; no windows when it carries no rays.
+AreaPass beamPass(int beam) {
+  AreaPass pass = AreaPass(beam, 0, vec4(vec2(kInfinity), vec2(-kInfinity)), vec3(0.0), 0.0, 0.0, 0, false, 0.0);
   vec3 N = arena3(beam + kBeamNormal), toViewer = arena3(beam + kBeamToViewer);
   float facing = dot(N, toViewer);
-  if (!(facing > 0.0)) return vec3(0.0);
+  if (!(facing > 0.0)) return pass;
   vec3 R = 2.0 * facing * N - toViewer;
-  vec3 weight = arena3(beam + kBeamWeight) * materials[int(arenaAt(beam + kBeamMaterial))].mirror.rgb;
-  float share = arenaAt(beam + kBeamShare);
-  int bounce = int(arenaAt(beam + kBeamBounce));
+  pass.weight = arena3(beam + kBeamWeight) * materials[int(arenaAt(beam + kBeamMaterial))].mirror.rgb;
+  pass.strongest = max(pass.weight.r, max(pass.weight.g, pass.weight.b));
+  pass.share = arenaAt(beam + kBeamShare);
+  pass.bounce = int(arenaAt(beam + kBeamBounce));
+  pass.leaves = R.z > 0.0;
   gAreaView = -R;
   gAreaBaseScreen = false;
   vec3 helper = abs(gAreaView.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
@@ -157,14 +161,13 @@ vec3 followAreaBeam(int beam) {
   // The windows' weighted area and box on the screen, and the fragments' box on the base plane and
   // range of heights.
   int windows = beamFragmentCount(beam);
-  float beamArea = 0.0;
-  vec4 windowsBox = vec4(vec2(kInfinity), vec2(-kInfinity)), baseBox = windowsBox;
+  vec4 baseBox = pass.windowsBox;
   vec2 heights = vec2(gAreaHeight, -gAreaDepth);
   for (int k = 0; k < windows; ++k) {
     projectWindow(beam, k);
-    beamArea += beamFragmentWeight(beamFragmentAt(beam, k)) * polygonArea(kFootprint);
-    windowsBox = boxUnion(windowsBox, polygonBox(kFootprint));
     int fragment = beamFragmentAt(beam, k);
+    pass.beamArea += beamFragmentWeight(fragment) * polygonArea(kFootprint);
+    pass.windowsBox = boxUnion(pass.windowsBox, polygonBox(kFootprint));
     int n = beamFragmentVertexCount(fragment);
     for (int v = 0; v < n; ++v) {
       vec3 x = beamFragmentVertex(fragment, v);
@@ -172,8 +175,8 @@ vec3 followAreaBeam(int beam) {
       heights = vec2(min(heights.x, x.z), max(heights.y, x.z));
     }
   }
-  if (!(beamArea > 0.0)) return vec3(0.0);  // seen edge-on: the beam carries no rays
-  gAreaMinArea = 1e-8 * beamArea;
+  if (!(pass.beamArea > 0.0)) return pass;  // seen edge-on: the beam carries no rays
+  gAreaMinArea = 1e-8 * pass.beamArea;
 
   // The pieces the rays can reach and what shadows them: over the fragments' box swept forward along
   // R (up or down) until the rays leave the height range, then along L. A ray from height w0 reaches
@@ -183,59 +186,47 @@ vec3 followAreaBeam(int beam) {
   vec3 level = vec3(R.xy, abs(R.z));  // the same shift per height, up or down
   sweptRegion(baseBox, e, shiftPerHeight(level), vec2(0.0, clamp(climb + e, 0.0, range)), shiftPerHeight(gAreaLight),
               vec2(0.0, range));
-  int eyeOverflows = gAreaOverflows;
-  gAreaOverflows = 0;
-  gAreaStopAtCap = false;
-  gSurfaceCount = 0;
-  gWallCount = 0;
-  buildHeightPieces(gAreaMinArea);
-  buildWalls(gAreaLengthScale);
+  // Seen, and hiding one another, only in front of the mirror (projectPieces); they shadow whole.
   gAreaCutPlane = vec4(N, dot(N, beamFragmentVertex(beamFragmentAt(beam, 0), 0)));
   gAreaCutByPlane = true;
-  projectPieces();
-  gAreaCutByPlane = false;
-
-  vec3 sum = vec3(0.0);
-  float caught = 0.0;
-  float strongest = max(weight.r, max(weight.g, weight.b));
-  for (int i = 0; i < gSurfaceCount; ++i) {
-    while (i < gSurfaceCount && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), windowsBox))) ++i;
-    if (i == gSurfaceCount) break;
-    int material = pieceMaterial(i);
-    vec3 radiance = directRadiance(material, pieceNormal(i), gAreaView);
-    bool again = hasMirror(material) && bounce + 1 < gMaxBounces;
-    if (gAreaBeamCount == AREA_MAX_BEAMS) again = false;  // no room: dropped
-    // The piece's beam gathers what it catches of every window.
-    if (again) startAreaBeam(share / beamArea, 1.0, strongest);
-    for (int k = 0; k < windows; ++k) {
-      projectWindow(beam, k);
-      float area = polygonArea(kFootprint);
-      if (!(area > 0.0) || !boxesOverlap(pieceScreenBox(i), polygonBox(kFootprint))) continue;
-      float scale = share / beamArea;  // footprint share per unit of (weighted) area here
-      float windowWeight = beamFragmentWeight(beamFragmentAt(beam, k));
-      gCollectWeight = windowWeight;
-      visibleLitPart(i, radiance != vec3(0.0));
-      caught += scale * windowWeight * gSeenArea;
-      sum += weight * (scale * windowWeight * fragmentsWeightedArea()) * radiance;
-    }
-    if (again) finishAreaBeam(i, weight, bounce + 1);
-  }
-  // Rays no piece catches: going up, they leave the surface and see the environment.
-  if (R.z > 0.0) sum += weight * max(0.0, share - caught) * gEnvironment;
-  gAreaOverflows = eyeOverflows;  // what the beam's pieces left out does not split the footprint
-  return sum;
+  pass.windows = windows;
+  return pass;
 }
 
-// What the beams on the stack (the eye's) and every beam they lead to add.
-vec3 traceAreaBeams() {
-  vec3 sum = vec3(0.0);
-  int current = areaBeamAt(AREA_MAX_BEAMS);
-  int steps = gAreaBeamCount * kAreaBeamStepsPerEyeBeam;
-  for (int step = 0; step < steps && gAreaBeamCount > 0; ++step) {
-    copyAreaBeam(current, areaBeamAt(--gAreaBeamCount));
-    sum += followAreaBeam(current);
+int gAreaBeamSteps, gAreaBeamStepLimit;
+
+// The pass of the next beam on the stack that carries rays (popped into the slot of the beam
+// followed), or none. `fromEye`: the eye's pass has just ended, and its beams are on the stack.
+AreaPass nextBeamPass(bool fromEye) {
+  if (fromEye) {
+    gAreaBeamSteps = 0;
+    gAreaBeamStepLimit = gAreaBeamCount * kAreaBeamStepsPerEyeBeam;
   }
-  return sum;
+  AreaPass pass = AreaPass(-1, 0, vec4(0.0), vec3(0.0), 0.0, 0.0, 0, false, 0.0);
+  int current = areaBeamAt(AREA_MAX_BEAMS);
+  while (pass.windows == 0 && gAreaBeamCount > 0 && gAreaBeamSteps < gAreaBeamStepLimit) {
+    copyAreaBeam(current, areaBeamAt(--gAreaBeamCount));
+    ++gAreaBeamSteps;
+    pass = beamPass(current);
+  }
+  return pass;
+}
+
+// In a beam's pass: whether the piece of `material` sends a beam of its own (it mirrors, bounces
+// remain, and the stack has room; else it is dropped), started if so.
+bool startChildBeam(AreaPass pass, int material) {
+  if (!hasMirror(material) || pass.bounce + 1 >= gMaxBounces || gAreaBeamCount == AREA_MAX_BEAMS) return false;
+  startAreaBeam(pass.share / pass.beamArea, 1.0, pass.strongest);
+  return true;
+}
+
+// In a beam's pass: window k into kFootprint, and the footprint share per unit of its area (0 when
+// it has none).
+float windowShare(AreaPass pass, int k) {
+  projectWindow(pass.beam, k);
+  if (!(polygonArea(kFootprint) > 0.0)) return 0.0;
+  gCollectWeight = beamFragmentWeight(beamFragmentAt(pass.beam, k));
+  return pass.share * gCollectWeight / pass.beamArea;
 }
 
 #endif

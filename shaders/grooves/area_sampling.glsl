@@ -274,9 +274,10 @@ void visibleLitPart(int i, bool withShadows) {
   gSeenArea = -1.0;
   int steps = (withShadows ? 2 : 1) * gSurfaceCount;
   int step = 0;
-  while (gFragmentCount > 0 && step < steps) {
+  bool more = true;
+  while (more) {
     int hole = -1;
-    while (hole < 0 && step < steps) {
+    while (gFragmentCount > 0 && hole < 0 && step < steps) {
       while (step < steps && !mayOcclude(i, stepPiece(step), step >= gSurfaceCount, bounds, lightBox)) ++step;
       if (step < steps) {
         int found;
@@ -284,13 +285,15 @@ void visibleLitPart(int i, bool withShadows) {
         ++step;
       }
     }
-    if (hole < 0) break;
-    // Steps from gSurfaceCount on are shadows: the visible part is complete before the first.
-    if (gSeenArea < 0.0 && step > gSurfaceCount) visiblePartDone(i);
-    subtractFromFragments(hole);
-    bounds = fragmentsBox();
+    // Steps from gSurfaceCount on are shadows: the visible part is complete before the first, or at
+    // the end (one call, so that it is compiled once).
+    if (gSeenArea < 0.0 && (hole < 0 || step > gSurfaceCount)) visiblePartDone(i);
+    more = hole >= 0;
+    if (more) {
+      subtractFromFragments(hole);
+      bounds = fragmentsBox();
+    }
   }
-  if (gSeenArea < 0.0) visiblePartDone(i);  // no shadow was subtracted
 }
 
 // How far a line along d travels across the base plane per unit of height (bounded like the query
@@ -340,6 +343,30 @@ void workingRegion(vec4 footprintBox) {
               shiftPerHeight(gAreaLight), vec2(0.0, gAreaHeight + gAreaDepth + e));
 }
 
+// One pass of a footprint's sampling: the eye's (beam -1) over the footprint, or a reflected beam's
+// over its windows (area_reflections.glsl).
+struct AreaPass {
+  int beam;         // -1: the eye; else the slot of the beam followed
+  int windows;      // 0: no pass
+  vec4 windowsBox;  // on the screen
+  vec3 weight;      // the reflectances applied before what this pass sees
+  float share;      // of the footprint (the eye's: 1)
+  float beamArea;   // the windows' weighted area on the screen
+  int bounce;       // reflections made before this pass's (the eye's: 0)
+  bool leaves;      // the rays that reach nothing leave the surface (they go up)
+  float strongest;  // the strongest channel of weight
+};
+
+// The eye's pass: the view E, the base plane as screen, the footprint's working region.
+AreaPass eyePass(float footprintArea, vec4 footprintBox) {
+  gAreaView = gAreaEyeView;
+  gAreaBaseScreen = true;
+  gAreaCutByPlane = false;
+  gAreaMinArea = 1e-8 * footprintArea;
+  workingRegion(footprintBox);
+  return AreaPass(-1, 1, footprintBox, vec3(1.0), 1.0, footprintArea, 0, false, 1.0);
+}
+
 #ifdef HAS_MIRRORS
 #include "area_reflections.glsl"
 #else
@@ -360,54 +387,79 @@ void footprintParallelogram(int p, vec2 centre, vec2 axis1, vec2 axis2) {
 // last level, the caller splits; on the last level the value leaves out what did not fit).
 bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, out vec3 radiance) {
   radiance = vec3(0.0);
-  gAreaView = gAreaEyeView;
-  gAreaBaseScreen = true;
-  gAreaCutByPlane = false;
   footprintParallelogram(kFootprint, centre, axis1, axis2);
   float footprintArea = polygonArea(kFootprint);
-  gAreaMinArea = 1e-8 * footprintArea;
   vec4 footprintBox = polygonBox(kFootprint);
-  gAreaOverflows = 0;
-  gAreaStopAtCap = !lastLevel;
-  gSurfaceCount = 0;
-  gWallCount = 0;
-  workingRegion(footprintBox);
-  buildHeightPieces(gAreaMinArea);
-  buildWalls(gAreaLengthScale);
-  bool split = gAreaOverflows > 0 && !lastLevel;  // the caller splits: no need to sample
-  if (!split) projectPieces();
-  // The pieces seen in the footprint and lit, found by a loop without loops inside (see
-  // visibleLitPart).
-  int count = split ? 0 : gSurfaceCount;
   bool withDirect = gAreaBeamAlone <= 0;
-  int eyeBeams = 0;  // mirror pieces met
+  bool complete = true;
 #ifdef HAS_MIRRORS
   gAreaBeamCount = 0;
   gCollectBeam = -1;
+  int eyeBeams = 0;  // mirror pieces the eye met
 #endif
-  for (int i = 0; i < count; ++i) {
-    while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), footprintBox) &&
-                          ((withDirect && directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)) ||
-                           reflectionTraced(pieceMaterial(i)))))
-      ++i;
-    if (i == count) break;
-    vec3 direct = withDirect ? directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) : vec3(0.0);
+  // One pass for the eye, then (§7) one per beam, through the same stages: a driver compiles each
+  // stage once (GLSL inlines every call).
+  AreaPass pass = eyePass(footprintArea, footprintBox);
+  for (int step = 0; pass.windows > 0; ++step) {
+    gAreaOverflows = 0;
+    gAreaStopAtCap = pass.beam < 0 && !lastLevel;
+    gSurfaceCount = 0;
+    gWallCount = 0;
+    buildHeightPieces(gAreaMinArea);
+    buildWalls(gAreaLengthScale);
+    bool split = pass.beam < 0 && gAreaOverflows > 0 && !lastLevel;  // the caller splits: no need to sample
+    if (!split) projectPieces();
+    gAreaCutByPlane = false;
+    // The pieces seen in the windows (the footprint; a beam's fragments) and lit, found by a loop
+    // without loops inside (see visibleLitPart).
+    int count = split ? 0 : gSurfaceCount;
+    float caught = 0.0;
+    for (int i = 0; i < count; ++i) {
+      while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), pass.windowsBox) &&
+                            (pass.beam >= 0 ||
+                             (withDirect && directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)) ||
+                             reflectionTraced(pieceMaterial(i)))))
+        ++i;
+      if (i == count) break;
+      vec3 direct = withDirect || pass.beam >= 0 ? directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) : vec3(0.0);
 #ifdef HAS_MIRRORS
-    // The visible part of a mirror piece, lit or not, becomes a beam, traced below.
-    bool beam = reflectionTraced(pieceMaterial(i)) && startEyeBeam(eyeBeams++, footprintArea);
-    if (!beam && direct == vec3(0.0)) continue;  // another pass's beam
+      // The visible part of a mirror piece, lit or not, becomes a beam, traced in a pass of its own.
+      bool beam = pass.beam < 0 ? reflectionTraced(pieceMaterial(i)) && startEyeBeam(eyeBeams++, footprintArea)
+                                : startChildBeam(pass, pieceMaterial(i));
+      if (!beam && direct == vec3(0.0) && pass.beam < 0) continue;  // another retry pass's beam
 #endif
-    visibleLitPart(i, direct != vec3(0.0));
-    radiance += (fragmentsWeightedArea() / footprintArea) * direct;
+      for (int k = 0; k < pass.windows; ++k) {
+        float share = 1.0 / footprintArea;  // of the footprint per unit of (weighted) area
+        if (pass.beam < 0) {
+          footprintParallelogram(kFootprint, centre, axis1, axis2);
+        } else {
 #ifdef HAS_MIRRORS
-    if (beam) finishAreaBeam(i, vec3(1.0), 0);
+          share = windowShare(pass, k);
+          if (!(share > 0.0) || !boxesOverlap(pieceScreenBox(i), polygonBox(kFootprint))) continue;
+#endif
+        }
+        visibleLitPart(i, direct != vec3(0.0));
+        caught += share * gSeenArea;
+        radiance += pass.weight * (share * fragmentsWeightedArea()) * direct;
+      }
+#ifdef HAS_MIRRORS
+      if (beam) finishAreaBeam(i, pass.weight, pass.bounce + (pass.beam < 0 ? 0 : 1));
+#endif
+    }
+    if (pass.beam < 0) {
+      complete = gAreaOverflows == 0;
+      if (!complete && !lastLevel) break;
+    }
+#ifdef HAS_MIRRORS
+    else {
+      // Rays no piece catches: going up, they leave the surface and see the environment.
+      if (pass.leaves) radiance += pass.weight * max(0.0, pass.share - caught) * gEnvironment;
+    }
+    pass = nextBeamPass(pass.beam < 0);
+#else
+    pass.windows = 0;
 #endif
   }
-  bool complete = gAreaOverflows == 0;
-#ifdef HAS_MIRRORS
-  // After the eye's pieces, which each beam's pieces replace.
-  if (count > 0 && (complete || lastLevel)) radiance += traceAreaBeams();
-#endif
   return complete;
 }
 
