@@ -3,6 +3,7 @@
 #include <GL/glcorearb.h>
 #include <bake_formats/tam.h>
 #include <bake_formats/geodesic.h>
+#include <bake_formats/grooves.h>
 #include <bake_formats/paintstrokes.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "core/path.h"
 #include "gl/context.h"
 #include "render/geodesic.h"
+#include "render/grooves.h"
 #include "render/hatching.h"
 #include "render/paintstrokes.h"
 #include "render/renderer.h"
@@ -185,6 +187,11 @@ Result<RendererRegistry> renderersFor(const ViewSettings& view) {
     return usageError("--hatching-tone must be blend or threshold, not '" + view.hatchingTone + "'");
   const HatchingTone tone = view.hatchingTone == "threshold" ? HatchingTone::Threshold : HatchingTone::Blend;
   registry.add(format::tam::kExtension, [tone] { return std::make_unique<HatchingRenderer>(tone); });
+  if (view.grooveReflections != "traced" && view.grooveReflections != "environment")
+    return usageError("--groove-reflections must be traced or environment, not '" + view.grooveReflections + "'");
+  GroovesOptions grooves;
+  grooves.areaReflections = view.grooveReflections == "traced";
+  registry.add(format::grooves::kExtension, [grooves] { return std::make_unique<GroovesRenderer>(grooves); });
   if (!view.environmentMap.empty()) {
     BAKE_ASSIGN_OR_RETURN(Image image, readImage(view.environmentMap));
     if (image.width < 2 || image.height < 1 || image.width > 16384 || image.height > 16384)
@@ -236,6 +243,7 @@ Status runRender(const RenderSettings& settings, Diagnostics& diagnostics) {
                                {"strokeTolerance", settings.view.strokeTolerance},
                                {"strokeTubes", settings.view.strokeTubes},
                                {"hatchingTone", settings.view.hatchingTone},
+                               {"grooveReflections", settings.view.grooveReflections},
                                {"environmentMap", settings.view.environmentMap}});
   return session.finish(renderScene(settings, session));
 }

@@ -43,9 +43,9 @@ constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kA
 // The retry buffer of shaders/grooves/area_retry.glsl (std430): kRetryList vec4 sums, two list
 // lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short by
 // a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
-// again by parts of their footprint, one draw each: quarters, then sixteenths and sixty-fourths where
-// a part was cut short again (kAreaMaxSplitLevel, the CPU's deepest split too), and last sixty-fourths
-// once per beam of the eye's mirror pieces (kAreaEyeBeams of them at most).
+// again beam by beam (one draw per beam of the eye's mirror pieces, kAreaEyeBeams of them at most),
+// over the whole footprint, then by quarters, sixteenths and sixty-fourths of it where a part was cut
+// short again (kAreaMaxSplitLevel, the CPU's deepest split too).
 constexpr GLuint kAreaRetryBinding = fmt::kAreaRetryBinding;
 constexpr std::size_t kRetryList = 4096;
 constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
@@ -260,6 +260,7 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
   glProgramUniform3fv(program, glGetUniformLocation(program, "uEnvironment"), 1, frame.light.environment.data());
   if (item.areaSampling) {
+    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaReflections"), options_.areaReflections ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retry.kind);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPartLevel"), retry.level);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPart"), retry.part);
@@ -313,9 +314,10 @@ bool GroovesRenderer::partFailed(std::size_t slot) const {
   return sum[3] > 0;
 }
 
-// The pixels the first pass listed, shaded again one at a time, then those listed again by parts:
-// quarters, then smaller parts for the pixels where one was cut short again, and last the smallest
-// parts beam by beam. Depth is tested (LEQUAL: the same fragments as the first pass) but not written.
+// The pixels the first pass listed, shaded again one at a time, then those listed again beam by
+// beam: the whole footprint, then quarters, sixteenths and sixty-fourths for the pixels where a part
+// was cut short again. Depth is tested (LEQUAL: the same fragments as the first pass) but not
+// written.
 void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   const std::vector<std::array<int, 2>> whole = retryList(0);
   if (whole.empty()) return;
@@ -332,18 +334,16 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   const std::vector<std::array<int, 2>> byParts = retryList(1);
   std::vector<std::size_t> pending(byParts.size());
   for (std::size_t slot = 0; slot < pending.size(); ++slot) pending[slot] = slot;
-  for (int level = 1; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
+  for (int level = 0; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
     for (const std::size_t slot : pending)
-      for (int part = 0; part < 1 << (2 * level); ++part) drawRetryPass(frame, byParts[slot], {2, level, part, int(slot)});
+      for (int part = 0; part < 1 << (2 * level); ++part)
+        for (int beam = 0; beam < kAreaEyeBeams; ++beam)
+          drawRetryPass(frame, byParts[slot], {2, level, part, int(slot), beam});
     std::vector<std::size_t> failed;
     for (const std::size_t slot : pending)
       if (partFailed(slot)) failed.push_back(slot);
     pending = std::move(failed);
   }
-  for (const std::size_t slot : pending)
-    for (int part = 0; part < 1 << (2 * kAreaMaxSplitLevel); ++part)
-      for (int beam = 0; beam < kAreaEyeBeams; ++beam)
-        drawRetryPass(frame, byParts[slot], {2, kAreaMaxSplitLevel, part, int(slot), beam});
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);
   glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);

@@ -10,14 +10,18 @@
 // from -R; while bounces remain, a mirror piece's visible part becomes a beam in turn; rays no piece
 // catches leave the surface when R points up and see the environment (the seed's 1 - Σ r_i).
 // Affine maps between planes keep area ratios, so shares carry over exactly.
-// The eye's beams are stored while its pieces are sampled and traced afterwards, since each beam
-// rebuilds the pieces. Beams live in the slot (area_surface.glsl's layout, then AREA_MAX_BEAMS + 1
-// beams: a stack and the one being followed). The eye's beams may take half of the stack (past that
-// the footprint is split, as when pieces overflow; on the last level they are left out), so that
-// their own beams find room; a beam that does not fit is dropped, as is one carrying less than
+// The eye's beams are stored while its pieces are sampled, one per mirror plane and material (the
+// coplanar pieces of a mirror send the same rays: the CPU follows them one by one, to the same sum),
+// and followed afterwards in passes of their own through the same stages as the eye's
+// (area_sampling.glsl sampleParallelogram), since each beam rebuilds the pieces. Beams live in the
+// slot (area_surface.glsl's layout, then AREA_MAX_BEAMS + 1 beams: a stack and the one being
+// followed, then the eye's planes). The eye's beams may take half of the stack (past that the
+// footprint is split, as when pieces overflow; on the last level they are left out), so that their
+// own beams find room; a beam that does not fit is dropped, as is one carrying less than
 // kNegligibleAreaBeam of the pixel, and at most 4 x AREA_MAX_BEAMS beams are followed per eye beam.
 // A beam holds up to AREA_BEAM_FRAGMENTS fragments; what does not fit is left out (its share with
-// it). The CPU's bounds are 64 beams per eye beam and no fragment cap.
+// it). The CPU's bounds are 64 beams per eye beam and no fragment cap. A retry pass may follow one
+// eye beam alone (area_retry.glsl).
 #ifndef BAKE_GROOVES_AREA_REFLECTIONS_GLSL
 #define BAKE_GROOVES_AREA_REFLECTIONS_GLSL
 
@@ -26,7 +30,7 @@
 #endif
 #define AREA_MAX_BEAMS (2 * AREA_EYE_BEAMS)
 #ifndef AREA_BEAM_FRAGMENTS
-#define AREA_BEAM_FRAGMENTS 24
+#define AREA_BEAM_FRAGMENTS 32
 #endif
 
 const float kNegligibleAreaBeam = 1e-12;
@@ -41,7 +45,7 @@ const int kBeamNormal = 0, kBeamMaterial = 3, kBeamToViewer = 4, kBeamWeight = 7
 const int kBeamFragmentSize = 2 + 3 * AREA_MAX_VERTICES;
 const int kBeamSize = kBeamFragments + AREA_BEAM_FRAGMENTS * kBeamFragmentSize;
 const int kBeams = kAreaSlotSize;
-const int kAreaBeamsSize = (AREA_MAX_BEAMS + 1) * kBeamSize;
+const int kAreaBeamsSize = (AREA_MAX_BEAMS + 1) * kBeamSize + 5 * AREA_EYE_BEAMS;  // and the eye's planes
 
 int gAreaBeamCount;  // on the stack
 
@@ -79,41 +83,74 @@ void collectBeamFragments(int i) {
   setArena(gCollectBeam + kBeamFragmentCount, float(count));
 }
 
-// Starts filling the beam on top of the stack.
-void startAreaBeam(float share, float weight, float strongest) {
-  gCollectBeam = areaBeamAt(gAreaBeamCount);
-  setArena(gCollectBeam + kBeamFragmentCount, 0.0);
+// Starts filling the beam in stack slot `slot` (emptied first when `fresh`).
+void startAreaBeam(int slot, bool fresh, float share, float weight, float strongest) {
+  gCollectBeam = areaBeamAt(slot);
+  if (fresh) {
+    setArena(gCollectBeam + kBeamFragmentCount, 0.0);
+    setArena(gCollectBeam + kBeamShare, 0.0);
+  }
   gCollectShare = share;
   gCollectWeight = weight;
   gCollectStrongest = strongest;
   gCollectedShare = 0.0;
 }
 
-// A beam for the eye's mirror piece number `index` (in the order they are met); false when the eye's
-// part of the stack is full (counted: the footprint is split), or when one beam is traced alone
-// (gAreaBeamAlone >= 0) and this is not the one.
-bool startEyeBeam(int index, float footprintArea) {
-  if (gAreaBeamAlone >= 0 && index != gAreaBeamAlone) return false;
-  if (gAreaBeamCount >= kAreaEyeBeams) {
-    ++gAreaOverflows;
-    return false;
-  }
-  startAreaBeam(1.0 / footprintArea, 1.0, -1.0);
+// The eye's beams, one per mirror plane and material: coplanar pieces of one mirror (the base
+// between grooves, a facet split by a crossing) reflect alike, so one beam holds the fragments of
+// all of them (the same rays as a beam each, one pass to follow them). gEyeBeamKeys planes met, each
+// (normal, offset, material) in the slot after the beams; beam k of the eye is the k-th plane met.
+int gEyeBeamKeys;
+int eyeBeamKey(int k) { return kBeams + (AREA_MAX_BEAMS + 1) * kBeamSize + 5 * k; }
+
+// The index of piece i's plane among the eye's beams, added if new; -1 when there is no room.
+int eyeBeamIndex(int i) {
+  vec4 plane = vec4(pieceNormal(i), piecePlaneOffset(i));
+  float material = float(pieceMaterial(i));
+  int found = -1;
+  for (int k = 0; k < gEyeBeamKeys && found < 0; ++k)
+    if (arena4(eyeBeamKey(k)) == plane && arenaAt(eyeBeamKey(k) + 4) == material) found = k;
+  if (found >= 0 || gEyeBeamKeys == kAreaEyeBeams) return found;
+  setArena4(eyeBeamKey(gEyeBeamKeys), plane);
+  setArena(eyeBeamKey(gEyeBeamKeys) + 4, material);
+  return gEyeBeamKeys++;
+}
+
+// The beam of the eye's mirror piece i; false when the eye has more mirror planes than beams
+// (counted: the footprint is split), or when one beam is traced alone (gAreaBeamAlone >= 0, kept in
+// slot 0) and this is not the one.
+bool startEyeBeam(int i, float footprintArea) {
+  int index = eyeBeamIndex(i);
+  if (index < 0) ++gAreaOverflows;
+  if (index < 0 || (gAreaBeamAlone >= 0 && index != gAreaBeamAlone)) return false;
+  int slot = gAreaBeamAlone >= 0 ? 0 : index;
+  bool fresh = slot >= gAreaBeamCount;
+  gAreaBeamCount = max(gAreaBeamCount, slot + 1);
+  startAreaBeam(slot, fresh, 1.0 / footprintArea, 1.0, -1.0);
   return true;
 }
 
-// The beam being filled, from piece i seen along gAreaView, pushed if it holds anything.
-void finishAreaBeam(int i, vec3 weight, int bounce) {
+// In a beam's pass: whether the piece of `material` sends a beam of its own (it mirrors, bounces
+// remain, and the stack has room; else it is dropped), started on top of the stack if so.
+bool startChildBeam(AreaPass pass, int material) {
+  if (!hasMirror(material) || pass.bounce + 1 >= gMaxBounces || gAreaBeamCount == AREA_MAX_BEAMS) return false;
+  startAreaBeam(gAreaBeamCount, true, pass.share / pass.beamArea, 1.0, pass.strongest);
+  return true;
+}
+
+// The beam being filled, from piece i seen along gAreaView: its fragments' share added, and a child
+// pushed if it holds anything (the eye's beams are on the stack from their first piece on; one that
+// catches nothing carries no rays and is skipped).
+void finishAreaBeam(int i, vec3 weight, int bounce, bool child) {
   int beam = gCollectBeam;
   gCollectBeam = -1;
-  if (beam < 0 || beamFragmentCount(beam) == 0 || !(gCollectedShare > 0.0)) return;
   setArena3(beam + kBeamNormal, pieceNormal(i));
   setArena(beam + kBeamMaterial, float(pieceMaterial(i)));
   setArena3(beam + kBeamToViewer, gAreaView);
   setArena3(beam + kBeamWeight, weight);
-  setArena(beam + kBeamShare, gCollectedShare);
+  setArena(beam + kBeamShare, arenaAt(beam + kBeamShare) + gCollectedShare);
   setArena(beam + kBeamBounce, float(bounce));
-  ++gAreaBeamCount;
+  if (child && beamFragmentCount(beam) > 0 && gCollectedShare > 0.0) ++gAreaBeamCount;
 }
 
 // --- Following a beam -------------------------------------------------------------------------------
@@ -210,14 +247,6 @@ AreaPass nextBeamPass(bool fromEye) {
     pass = beamPass(current);
   }
   return pass;
-}
-
-// In a beam's pass: whether the piece of `material` sends a beam of its own (it mirrors, bounces
-// remain, and the stack has room; else it is dropped), started if so.
-bool startChildBeam(AreaPass pass, int material) {
-  if (!hasMirror(material) || pass.bounce + 1 >= gMaxBounces || gAreaBeamCount == AREA_MAX_BEAMS) return false;
-  startAreaBeam(pass.share / pass.beamArea, 1.0, pass.strongest);
-  return true;
 }
 
 // In a beam's pass: window k into kFootprint, and the footprint share per unit of its area (0 when

@@ -5,11 +5,11 @@
 // iteration of every loop in a branch that no lane takes), and the heaviest special cases overrun
 // it. So the first pass lists a pixel cut short, and the renderer draws again once per listed pixel,
 // scissored to it: its group then has one lane, which pays for its own loops only. A pixel cut short
-// even alone is listed again and shaded by parts of its footprint, one draw each: quarters, then,
-// where a part was still cut short, sixteenths, then sixty-fourths (the CPU's deepest split), and
-// last sixty-fourths once per beam of the eye's mirror pieces (§7 inter-reflections cost most: a pass
-// traces one beam, the pass of beam 0 adds the pieces' direct light), the shares summed in retrySums
-// (area and beams are additive: the CPU adds the same shares). retryMask says which draw of the frame
+// even alone is listed again and shaded beam by beam, one draw per beam of the eye's mirror pieces
+// (§7 inter-reflections cost most: a pass traces one beam, the pass of beam 0 adds the pieces' direct
+// light), over the whole footprint, then, where a draw was still cut short, by quarters of it,
+// sixteenths, sixty-fourths (the CPU's deepest split), the shares summed in retrySums (area and
+// beams are additive: the CPU adds the same shares). retryMask says which draw of the frame
 // owns each pixel (the last to shade it), so that only that one shades it again.
 // Drivers without such a cap list nothing and draw no retry pass.
 #ifndef BAKE_GROOVES_AREA_RETRY_GLSL
@@ -27,14 +27,15 @@ layout(std430, binding = 13) coherent buffer AreaRetry {
 };
 
 uniform int uAreaRetry = 0;     // 0: the first pass; 1: a retry of whole footprints; 2: by parts
-uniform int uAreaPartLevel = 1;  // in a retry by parts: 2^level x 2^level parts (1 to 3)
+uniform int uAreaPartLevel = 0;  // in a retry by parts: 2^level x 2^level parts (0 to 3)
 uniform int uAreaPart = 0;      // in a retry by parts: which part, 0 to 4^level - 1, row-major
 uniform int uAreaBeam = -1;     // in a retry by parts: the one eye beam to trace (0 to AREA_EYE_BEAMS - 1), or -1
 uniform int uRetrySlot = 0;     // in a retry by parts: the pixel's place in the second list
 uniform int uRetryDraw = 1;    // this draw's number in the frame (from 1)
 uniform int uRetryStride = 0;  // the target's width in pixels; 0: no retry buffer bound
 // Tests: 1 takes every area sample of the first pass as cut short, 2 also those of the retries of
-// whole footprints, so that either kind of retry runs on any driver.
+// whole footprints, 3 also those of the beam-by-beam retries of whole footprints, so that every kind
+// of retry runs on any driver.
 uniform int uForceRetries = 0;
 
 const uint kByQuarters = 0x40000000u;  // added to a mark: shade again by parts
@@ -51,9 +52,9 @@ int areaPartCount() { return 1 << (2 * uAreaPartLevel); }
 bool isBeamByBeam() { return isQuarterPass() && uAreaBeam >= 0; }
 // The last share of the pixel: its last part and, beam by beam, its last beam.
 bool isLastPart() { return uAreaPart == areaPartCount() - 1 && (!isBeamByBeam() || uAreaBeam == AREA_EYE_BEAMS - 1); }
-// Whether a pixel cut short in this pass is shaded again (by smaller parts, or beam by beam).
-bool retriedAfterParts() { return uAreaPartLevel < AREA_MAX_SPLIT_LEVEL || !isBeamByBeam(); }
-bool retryForced() { return uForceRetries > uAreaRetry && !isQuarterPass(); }
+// Whether a pixel cut short in this pass is shaded again (by smaller parts).
+bool retriedAfterParts() { return uAreaPartLevel < AREA_MAX_SPLIT_LEVEL; }
+bool retryForced() { return uForceRetries > uAreaRetry + (isQuarterPass() ? uAreaPartLevel : 0); }
 uint retryMark() { return uint(uRetryDraw) | (isQuarterPass() ? kByQuarters : 0u); }
 
 // In a retry pass: whether this fragment is the one to shade again.

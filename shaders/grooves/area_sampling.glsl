@@ -246,8 +246,12 @@ bool occludes(int i, int j, bool shadows, vec4 bounds, int meEdgeCount, out int 
 // holding the clipping code would cost dozens of iterations for every piece it skips.
 float gSeenArea;  // the visible part's weighted area before the shadows were subtracted
 
-// Whether a piece of this material sends a beam (§7): it mirrors and bounces are followed.
-bool reflectionTraced(int material) { return hasMirror(material) && gMaxBounces > 0; }
+// Whether a piece of this material sends a beam (§7): it mirrors and bounces are followed. With
+// gAreaReflections off (the renderer's cheaper model), a mirror piece adds mirror x environment over
+// its visible part instead.
+bool gAreaReflections = true;
+bool reflectionTraced(int material) { return hasMirror(material) && gMaxBounces > 0 && gAreaReflections; }
+vec3 untracedReflection(int material) { return gAreaReflections ? vec3(0.0) : environmentReflection(material); }
 
 #ifdef HAS_MIRRORS
 void collectBeamFragments(int i);  // area_reflections.glsl
@@ -395,7 +399,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
 #ifdef HAS_MIRRORS
   gAreaBeamCount = 0;
   gCollectBeam = -1;
-  int eyeBeams = 0;  // mirror pieces the eye met
+  gEyeBeamKeys = 0;
 #endif
   // One pass for the eye, then (§7) one per beam, through the same stages: a driver compiles each
   // stage once (GLSL inlines every call).
@@ -417,16 +421,18 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
     for (int i = 0; i < count; ++i) {
       while (i < count && !(pieceFacingViewer(i) > 1e-7 && boxesOverlap(pieceScreenBox(i), pass.windowsBox) &&
                             (pass.beam >= 0 ||
-                             (withDirect && directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0)) ||
+                             (withDirect && (directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) != vec3(0.0) ||
+                                             untracedReflection(pieceMaterial(i)) != vec3(0.0))) ||
                              reflectionTraced(pieceMaterial(i)))))
         ++i;
       if (i == count) break;
       vec3 direct = withDirect || pass.beam >= 0 ? directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) : vec3(0.0);
+      vec3 untraced = withDirect && pass.beam < 0 ? untracedReflection(pieceMaterial(i)) : vec3(0.0);
 #ifdef HAS_MIRRORS
       // The visible part of a mirror piece, lit or not, becomes a beam, traced in a pass of its own.
-      bool beam = pass.beam < 0 ? reflectionTraced(pieceMaterial(i)) && startEyeBeam(eyeBeams++, footprintArea)
+      bool beam = pass.beam < 0 ? reflectionTraced(pieceMaterial(i)) && startEyeBeam(i, footprintArea)
                                 : startChildBeam(pass, pieceMaterial(i));
-      if (!beam && direct == vec3(0.0) && pass.beam < 0) continue;  // another retry pass's beam
+      if (!beam && direct == vec3(0.0) && untraced == vec3(0.0) && pass.beam < 0) continue;  // another pass's beam
 #endif
       for (int k = 0; k < pass.windows; ++k) {
         float share = 1.0 / footprintArea;  // of the footprint per unit of (weighted) area
@@ -440,10 +446,10 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
         }
         visibleLitPart(i, direct != vec3(0.0));
         caught += share * gSeenArea;
-        radiance += pass.weight * (share * fragmentsWeightedArea()) * direct;
+        radiance += pass.weight * (share * fragmentsWeightedArea()) * direct + (share * gSeenArea) * untraced;
       }
 #ifdef HAS_MIRRORS
-      if (beam) finishAreaBeam(i, pass.weight, pass.bounce + (pass.beam < 0 ? 0 : 1));
+      if (beam) finishAreaBeam(i, pass.weight, pass.bounce + (pass.beam < 0 ? 0 : 1), pass.beam >= 0);
 #endif
     }
     if (pass.beam < 0) {
@@ -488,7 +494,7 @@ float areaExtent() {
 // retry pass, area_retry.glsl; its share of the footprint's value), -1 the whole tree.
 void sampleSplitParts(vec2 axis1, vec2 axis2, int part, int partLevel, out vec3 radiance) {
   radiance = vec3(0.0);
-  int root = part < 0 ? 0 : clamp(partLevel, 1, kAreaMaxSplitLevel);
+  int root = part < 0 ? 0 : clamp(partLevel, 0, kAreaMaxSplitLevel);
   int level = root;
   ivec2 cell = part < 0 ? ivec2(0) : ivec2(part & ((1 << root) - 1), part >> root);
   bool more = true;

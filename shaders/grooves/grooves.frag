@@ -27,6 +27,7 @@ uniform vec3 uLightColour = vec3(1.0);
 uniform vec3 uCameraPos;     // world space
 uniform int uMaxBounces = 2;
 uniform vec3 uEnvironment = vec3(0.0);  // seen by reflected rays that leave the surface (seed §7)
+uniform int uAreaReflections = 1;  // 0: mirror pieces sampled by area reflect the environment only
 
 #ifdef HAS_AREA_SAMPLING
 // Hidden fragments are not shaded, so the retry marks are those of the fragments kept.
@@ -83,6 +84,9 @@ void main() {
   gLightRadiance = uLightColour;
   gMaxBounces = uMaxBounces;
   gEnvironment = uEnvironment;
+#ifdef HAS_AREA_SAMPLING
+  gAreaReflections = uAreaReflections != 0;
+#endif
 
 #ifdef HAS_AREA_SAMPLING
   // After the derivatives, which need the whole quad: a retry pass shades only its own pixels.

@@ -193,6 +193,7 @@ class GroovesOracle : public test::GlTest {
   // special cases turn it on; the others check that none is in view.
   bool areaSampling_ = false;
   int forceRetries_ = 0;  // GroovesOptions::forceRetries
+  bool areaReflections_ = true;  // GroovesOptions::areaReflections, and the CPU method's
   Vec3 environment_{0, 0, 0};  // what mirror bounces that leave the surface see (seed §7)
   // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
   // one are counted (libbake/grooves/oracle/shade.cpp nearArcCentre splits those footprints in 3 x 3).
@@ -208,7 +209,13 @@ class GroovesOracle : public test::GlTest {
     EXPECT_TRUE(scene.isOk()) << scene.status().describe();
     if (!scene.isOk()) return figures;
     gl::ShaderLibrary shaders;
-    GroovesRenderer renderer({maxBounces, true, areaSampling_, forceRetries_});
+    GroovesOptions options;
+    options.maxBounces = maxBounces;
+    options.shadingInputs = true;
+    options.areaSampling = areaSampling_;
+    options.areaReflections = areaReflections_;
+    options.forceRetries = forceRetries_;
+    GroovesRenderer renderer(options);
     const Status prepared = renderer.prepare(*scene, {0}, shaders);
     EXPECT_TRUE(prepared.isOk()) << prepared.describe();
     if (!prepared.isOk()) return figures;
@@ -237,6 +244,7 @@ class GroovesOracle : public test::GlTest {
     // The CPU holds what the shader holds: a footprint over more primitives goes to the far level.
     grooves::SeedSettings asRuntime;
     asRuntime.foundCap = format::grooves::kMaxFoundPerFootprint;
+    asRuntime.areaReflections = areaReflections_;
     const grooves::SeedShader oracle(baked.scene, baked.grid, asRuntime);
     grooves::SeedSettings untracedSettings = asRuntime;
     untracedSettings.areaReflections = false;
@@ -497,7 +505,10 @@ TEST_F(GroovesOracle, DenseParallelViewsWithinTheReferenceNoise) {
   auto loaded = loadScene({file}, diagnostics, [](const std::string&) { return true; });
   ASSERT_TRUE(loaded.isOk()) << loaded.status().describe();
   gl::ShaderLibrary shaders;
-  GroovesRenderer renderer({0, false, false, 0});
+  GroovesOptions options;
+  options.maxBounces = 0;
+  options.areaSampling = false;
+  GroovesRenderer renderer(options);
   ASSERT_TRUE(renderer.prepare(*loaded, {0}, shaders).isOk());
 
   std::ifstream casesFile(source / "cases.json");
@@ -765,6 +776,11 @@ TEST_F(GroovesOracle, MirrorCrossingTracesBouncesAsOnTheCpu) {
   const OracleFigures f = compare(baked, {0.62f, 0.25f, 0.45f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 3);
   expectWithinTwoLevels(f, "mirror_crossing_bounces", true);
   EXPECT_GE(f.untracedSpecialMaxLevels, 8) << "the view should show inter-reflections in the special cases";
+  // The renderer's cheaper model (bakeplay --groove-reflections environment) is the CPU method's
+  // without area-sampled reflections.
+  areaReflections_ = false;
+  const OracleFigures untraced = compare(baked, {0.62f, 0.25f, 0.45f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 3);
+  expectWithinTwoLevels(untraced, "mirror_crossing_environment_only", true);
 }
 
 // The example scenes of pipelines/grooves, as the examples bake them: the record (no special case
@@ -823,11 +839,12 @@ TEST_F(GroovesOracle, ExamplePlateScratchOverRing) {
 }
 
 // The retry passes on any driver: every area sample of the plate's view is taken as cut short in the
-// first pass and again when shaded alone, so each special-case pixel ends up sampled by quarters of
-// its footprint, the four shares summed across passes. The image must still match the CPU.
-TEST_F(GroovesOracle, RetryPassesByQuartersMatchTheCpu) {
+// first pass, again when shaded alone and again when shaded beam by beam, so each special-case pixel
+// ends up sampled beam by beam by quarters of its footprint, the shares summed across passes. The
+// image must still match the CPU.
+TEST_F(GroovesOracle, RetryPassesBeamByBeamByQuartersMatchTheCpu) {
   areaSampling_ = true;
-  forceRetries_ = 2;
+  forceRetries_ = 3;
   const Baked baked = bake(exampleScene("plate.json"), "example_plate_retries");
   ASSERT_FALSE(baked.file.empty());
   const OracleFigures f = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
@@ -835,10 +852,12 @@ TEST_F(GroovesOracle, RetryPassesByQuartersMatchTheCpu) {
   ASSERT_TRUE(f.statistics.is_object());
   const auto fragments = f.statistics["grooveAreaFragments"].get<std::uint32_t>();
   EXPECT_GT(fragments, 16u);
-  // Deferred twice each: from the first pass, then from its whole-footprint retry.
-  EXPECT_EQ(f.statistics["grooveAreaRetried"].get<std::uint32_t>(), 2 * fragments);
-  // One retry pass per pixel for the whole footprint, then four for its quarters.
-  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 5 * fragments);
+  // Deferred three times each: from the first pass, from its whole-footprint retry, and from its
+  // beam-by-beam retry.
+  EXPECT_EQ(f.statistics["grooveAreaRetried"].get<std::uint32_t>(), 3 * fragments);
+  // One retry pass per pixel for the whole footprint, then one per beam (6), then one per beam for
+  // each quarter (24).
+  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 31 * fragments);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -42,6 +42,12 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
                      "threshold texture, Webb et al. 2002; packages without one draw the blend)")
       ->capture_default_str()
       ->check(CLI::IsMember({"blend", "threshold"}));
+  command.add_option("--groove-reflections", view.grooveReflections,
+                     "Grooves: traced (mirror bounces in crossings, ends and corners followed as beams, as the CPU "
+                     "method) or environment (a mirror piece there reflects the environment only: much faster on "
+                     "software GL such as llvmpipe)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"traced", "environment"}));
   command.add_option("--environment-map", view.environmentMap,
                      "GeoTextures' wave-displacement preset: an equirectangular image (linear RGB, e.g. EXR) the "
                      "displaced surface reflects (seed 003 C.6.4)")
