@@ -34,9 +34,9 @@ struct ViewSettings {
   // Hatching: "blend" (the two nearest TAM layers, seed 004) or "threshold" (Webb et al. 2002 fine
   // tone control by the package's threshold texture).
   std::string hatchingTone = "blend";
-  // Grooves: "traced" (mirror bounces in area-sampled footprints followed as beams, seed 000 §7) or
-  // "environment" (a mirror piece there reflects the environment only: the cheaper model).
-  std::string grooveReflections = "traced";
+  // Grooves: "environment" (a mirror piece in area-sampled footprints reflects the environment only:
+  // the cheaper model) or "traced" (its bounces followed as beams, seed 000 §7, as the CPU method).
+  std::string grooveReflections = "environment";
   // GeoTextures' wave preset: an equirectangular environment image reflected by the displaced
   // surface (seed 003 C.6.4); empty: none.
   std::string environmentMap;

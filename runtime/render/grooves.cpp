@@ -45,7 +45,8 @@ constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kA
 // a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
 // again beam by beam (one draw per beam of the eye's mirror pieces, kAreaEyeBeams of them at most),
 // over the whole footprint, then by quarters, sixteenths and sixty-fourths of it where a part was cut
-// short again (kAreaMaxSplitLevel, the CPU's deepest split too).
+// short again (kAreaMaxSplitLevel, the CPU's deepest split too); without traced beams, whole parts from
+// quarters on.
 constexpr GLuint kAreaRetryBinding = fmt::kAreaRetryBinding;
 constexpr std::size_t kRetryList = 4096;
 constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
@@ -104,7 +105,7 @@ std::array<long long, fmt::kArrayCount> viewIndices(const nlohmann::json& extens
 std::size_t alignUp(std::size_t x, std::size_t alignment) { return (x + alignment - 1) / alignment * alignment; }
 
 // The defines of the variant a package needs.
-std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool areaSampling) {
+std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool areaSampling, bool areaReflections) {
   std::vector<std::string> defines;
   const bool mirrors = std::any_of(p.materials.begin(), p.materials.end(), [](const fmt::Material& m) { return m.specular[3] > 0.5f; });
   if (mirrors) defines.push_back("HAS_MIRRORS");
@@ -115,6 +116,7 @@ std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool ar
     defines.push_back("AREA_RETRY_LIST " + std::to_string(kRetryList));
     defines.push_back("AREA_MAX_SPLIT_LEVEL " + std::to_string(kAreaMaxSplitLevel));
     defines.push_back("AREA_EYE_BEAMS " + std::to_string(kAreaEyeBeams));
+    if (mirrors && areaReflections) defines.push_back("AREA_REFLECTIONS");
   }
   std::uint32_t longest = 3;
   for (const fmt::Profile& profile : p.profiles) longest = std::max(longest, profile.points[1]);
@@ -212,7 +214,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       glNamedBufferStorage(upload.header, sizeof header, &header, 0);
       bytes_ += bytes.size() + sizeof header;
       uploadOfPackage[key] = uploads_.size();
-      definesOfPackage[key] = packageDefines(decoded, options_.areaSampling);
+      definesOfPackage[key] = packageDefines(decoded, options_.areaSampling, options_.areaReflections);
       if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
       if (frameCounts_ == 0) {
         glCreateBuffers(1, &frameCounts_);
@@ -260,7 +262,6 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   glProgramUniform1i(program, glGetUniformLocation(program, "uMaxBounces"), options_.maxBounces);
   glProgramUniform3fv(program, glGetUniformLocation(program, "uEnvironment"), 1, frame.light.environment.data());
   if (item.areaSampling) {
-    glProgramUniform1i(program, glGetUniformLocation(program, "uAreaReflections"), options_.areaReflections ? 1 : 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaRetry"), retry.kind);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPartLevel"), retry.level);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPart"), retry.part);
@@ -334,11 +335,13 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   const std::vector<std::array<int, 2>> byParts = retryList(1);
   std::vector<std::size_t> pending(byParts.size());
   for (std::size_t slot = 0; slot < pending.size(); ++slot) pending[slot] = slot;
-  for (int level = 0; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
+  // Without traced beams there is nothing to take one by one: whole parts, from quarters on.
+  const bool byBeams = options_.areaReflections;
+  for (int level = byBeams ? 0 : 1; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
     for (const std::size_t slot : pending)
       for (int part = 0; part < 1 << (2 * level); ++part)
-        for (int beam = 0; beam < kAreaEyeBeams; ++beam)
-          drawRetryPass(frame, byParts[slot], {2, level, part, int(slot), beam});
+        for (int beam = 0; beam < (byBeams ? kAreaEyeBeams : 1); ++beam)
+          drawRetryPass(frame, byParts[slot], {2, level, part, int(slot), byBeams ? beam : -1});
     std::vector<std::size_t> failed;
     for (const std::size_t slot : pending)
       if (partFailed(slot)) failed.push_back(slot);

@@ -28,10 +28,11 @@ struct GroovesOptions {
   // Special cases sampled by area (seed §6), as the CPU method does; off: line sampled like the rest
   // (a shader variant that compiles in seconds instead of minutes on llvmpipe).
   bool areaSampling = true;
-  // Mirror bounces (seed §7) in footprints sampled by area traced as beams, as the CPU method does;
-  // off: a mirror piece there reflects only the environment (the cheaper model, for software GL:
-  // llvmpipe renders a view full of special cases tens of times faster).
-  bool areaReflections = true;
+  // Mirror bounces (seed §7) in footprints sampled by area traced as beams, as the CPU method does.
+  // Off by default: a mirror piece there reflects only the environment, the cheaper model (llvmpipe
+  // renders the engraved plate's view 70 times slower traced, and traced views with thousands of
+  // retried pixels do not yet render the same bytes twice).
+  bool areaReflections = false;
   // Tests: area samples taken as cut short by a loop cap whatever the driver, so that the retry
   // passes run: 1 in the first pass (shaded again whole), 2 also in the whole-footprint retry passes
   // (shaded again beam by beam), 3 also in the beam-by-beam passes of whole footprints (shaded again

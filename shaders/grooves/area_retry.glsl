@@ -9,7 +9,8 @@
 // (§7 inter-reflections cost most: a pass traces one beam, the pass of beam 0 adds the pieces' direct
 // light), over the whole footprint, then, where a draw was still cut short, by quarters of it,
 // sixteenths, sixty-fourths (the CPU's deepest split), the shares summed in retrySums (area and
-// beams are additive: the CPU adds the same shares). retryMask says which draw of the frame
+// beams are additive: the CPU adds the same shares). In the variant without traced beams
+// (AREA_REFLECTIONS off) a retry by parts takes whole parts (uAreaBeam -1), from quarters on. retryMask says which draw of the frame
 // owns each pixel (the last to shade it), so that only that one shades it again.
 // Drivers without such a cap list nothing and draw no retry pass.
 #ifndef BAKE_GROOVES_AREA_RETRY_GLSL

@@ -246,21 +246,26 @@ bool occludes(int i, int j, bool shadows, vec4 bounds, int meEdgeCount, out int 
 // holding the clipping code would cost dozens of iterations for every piece it skips.
 float gSeenArea;  // the visible part's weighted area before the shadows were subtracted
 
-// Whether a piece of this material sends a beam (§7): it mirrors and bounces are followed. With
-// gAreaReflections off (the renderer's cheaper model), a mirror piece adds mirror x environment over
-// its visible part instead.
-bool gAreaReflections = true;
-bool reflectionTraced(int material) { return hasMirror(material) && gMaxBounces > 0 && gAreaReflections; }
-vec3 untracedReflection(int material) { return gAreaReflections ? vec3(0.0) : environmentReflection(material); }
+// Whether a piece of this material sends a beam (§7): it mirrors and bounces are followed, in the
+// variant that traces them (AREA_REFLECTIONS, the renderer's option). Without, the cheaper model: a
+// mirror piece adds mirror x environment over its visible part instead.
+#if defined(HAS_MIRRORS) && defined(AREA_REFLECTIONS)
+#define AREA_BEAMS
+bool reflectionTraced(int material) { return hasMirror(material) && gMaxBounces > 0; }
+vec3 untracedReflection(int material) { return vec3(0.0); }
+#else
+bool reflectionTraced(int material) { return false; }
+vec3 untracedReflection(int material) { return environmentReflection(material); }
+#endif
 
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
 void collectBeamFragments(int i);  // area_reflections.glsl
 #endif
 
 // The visible part is complete (no shadow subtracted yet): its area, and a beam's fragments from it.
 void visiblePartDone(int i) {
   gSeenArea = fragmentsWeightedArea();
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
   collectBeamFragments(i);
 #endif
 }
@@ -371,7 +376,7 @@ AreaPass eyePass(float footprintArea, vec4 footprintBox) {
   return AreaPass(-1, 1, footprintBox, vec3(1.0), 1.0, footprintArea, 0, false, 1.0);
 }
 
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
 #include "area_reflections.glsl"
 #else
 const int kAreaBeamsSize = 0;
@@ -396,7 +401,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
   vec4 footprintBox = polygonBox(kFootprint);
   bool withDirect = gAreaBeamAlone <= 0;
   bool complete = true;
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
   gAreaBeamCount = 0;
   gCollectBeam = -1;
   gEyeBeamKeys = 0;
@@ -404,7 +409,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
   // One pass for the eye, then (§7) one per beam, through the same stages: a driver compiles each
   // stage once (GLSL inlines every call).
   AreaPass pass = eyePass(footprintArea, footprintBox);
-  for (int step = 0; pass.windows > 0; ++step) {
+  while (pass.windows > 0) {
     gAreaOverflows = 0;
     gAreaStopAtCap = pass.beam < 0 && !lastLevel;
     gSurfaceCount = 0;
@@ -428,7 +433,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
       if (i == count) break;
       vec3 direct = withDirect || pass.beam >= 0 ? directRadiance(pieceMaterial(i), pieceNormal(i), gAreaView) : vec3(0.0);
       vec3 untraced = withDirect && pass.beam < 0 ? untracedReflection(pieceMaterial(i)) : vec3(0.0);
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
       // The visible part of a mirror piece, lit or not, becomes a beam, traced in a pass of its own.
       bool beam = pass.beam < 0 ? reflectionTraced(pieceMaterial(i)) && startEyeBeam(i, footprintArea)
                                 : startChildBeam(pass, pieceMaterial(i));
@@ -439,7 +444,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
         if (pass.beam < 0) {
           footprintParallelogram(kFootprint, centre, axis1, axis2);
         } else {
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
           share = windowShare(pass, k);
           if (!(share > 0.0) || !boxesOverlap(pieceScreenBox(i), polygonBox(kFootprint))) continue;
 #endif
@@ -448,7 +453,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
         caught += share * gSeenArea;
         radiance += pass.weight * (share * fragmentsWeightedArea()) * direct + (share * gSeenArea) * untraced;
       }
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
       if (beam) finishAreaBeam(i, pass.weight, pass.bounce + (pass.beam < 0 ? 0 : 1), pass.beam >= 0);
 #endif
     }
@@ -456,7 +461,7 @@ bool sampleParallelogram(vec2 centre, vec2 axis1, vec2 axis2, bool lastLevel, ou
       complete = gAreaOverflows == 0;
       if (!complete && !lastLevel) break;
     }
-#ifdef HAS_MIRRORS
+#ifdef AREA_BEAMS
     else {
       // Rays no piece catches: going up, they leave the surface and see the environment.
       if (pass.leaves) radiance += pass.weight * max(0.0, pass.share - caught) * gEnvironment;

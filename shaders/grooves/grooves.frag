@@ -8,7 +8,7 @@
 // model"), no ambient term and no tone mapping.
 // Variants: HAS_NORMALS, HAS_TANGENTS (the mesh's TANGENT, glTF's convention, gives u and the
 // handedness of v = w · normal × u, as a baked mesh such as `groovebake --apply-to` has), HAS_MIRRORS (a material mirrors: §7 bounces compiled in), HAS_SPECIAL_CASES
-// (the package has records), HAS_AREA_SAMPLING (special cases sampled by area), AREA_SLOTS n,
+// (the package has records), HAS_AREA_SAMPLING (special cases sampled by area), AREA_REFLECTIONS (§7 traced there too), AREA_SLOTS n,
 // MAX_PROFILE_POINTS n, MAX_FOUND n, SHADING_INPUTS (also writes F, A1, A2, E, L to colour attachments
 // 1-3 and to alpha the special-case flag, 2, or 3 and 4 where area sampling fell back to line
 // sampling, for testing against the CPU method). Area sampling cut short by a driver's loop cap is
@@ -27,7 +27,6 @@ uniform vec3 uLightColour = vec3(1.0);
 uniform vec3 uCameraPos;     // world space
 uniform int uMaxBounces = 2;
 uniform vec3 uEnvironment = vec3(0.0);  // seen by reflected rays that leave the surface (seed §7)
-uniform int uAreaReflections = 1;  // 0: mirror pieces sampled by area reflect the environment only
 
 #ifdef HAS_AREA_SAMPLING
 // Hidden fragments are not shaded, so the retry marks are those of the fragments kept.
@@ -84,9 +83,6 @@ void main() {
   gLightRadiance = uLightColour;
   gMaxBounces = uMaxBounces;
   gEnvironment = uEnvironment;
-#ifdef HAS_AREA_SAMPLING
-  gAreaReflections = uAreaReflections != 0;
-#endif
 
 #ifdef HAS_AREA_SAMPLING
   // After the derivatives, which need the whole quad: a retry pass shades only its own pixels.

@@ -841,7 +841,7 @@ TEST_F(GroovesOracle, ExamplePlateScratchOverRing) {
 // The retry passes on any driver: every area sample of the plate's view is taken as cut short in the
 // first pass, again when shaded alone and again when shaded beam by beam, so each special-case pixel
 // ends up sampled beam by beam by quarters of its footprint, the shares summed across passes. The
-// image must still match the CPU.
+// image must still match the CPU. Then the same without traced beams.
 TEST_F(GroovesOracle, RetryPassesBeamByBeamByQuartersMatchTheCpu) {
   areaSampling_ = true;
   forceRetries_ = 3;
@@ -858,6 +858,15 @@ TEST_F(GroovesOracle, RetryPassesBeamByBeamByQuartersMatchTheCpu) {
   // One retry pass per pixel for the whole footprint, then one per beam (6), then one per beam for
   // each quarter (24).
   EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 31 * fragments);
+  // Without traced beams (the renderer's default), the second retry takes the footprint's quarters
+  // whole: cut short in the first pass and when shaded alone, each pixel is shaded by quarters.
+  areaReflections_ = false;
+  forceRetries_ = 2;
+  const OracleFigures quarters = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
+  expectWithinTwoLevels(quarters, "example_plate_retries_environment", true);
+  ASSERT_TRUE(quarters.statistics.is_object());
+  EXPECT_EQ(quarters.statistics["grooveAreaRetried"].get<std::uint32_t>(), 2 * fragments);
+  EXPECT_EQ(quarters.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 5 * fragments);
 }
 
 // ---------------------------------------------------------------------------------------------

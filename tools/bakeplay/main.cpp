@@ -43,8 +43,8 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
       ->capture_default_str()
       ->check(CLI::IsMember({"blend", "threshold"}));
   command.add_option("--groove-reflections", view.grooveReflections,
-                     "Grooves: traced (mirror bounces in crossings, ends and corners followed as beams, as the CPU "
-                     "method) or environment (a mirror piece there reflects the environment only: much faster on "
+                     "Grooves: environment (a mirror piece in crossings, ends and corners reflects the environment "
+                     "only) or traced (its bounces followed as beams, as the CPU method; tens of times slower on "
                      "software GL such as llvmpipe)")
       ->capture_default_str()
       ->check(CLI::IsMember({"traced", "environment"}));
