@@ -307,12 +307,16 @@ void GroovesRenderer::drawRetryPass(const FrameContext& frame, std::array<int, 2
     if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retry);
 }
 
-// Whether a part of the pixel in retry slot `slot` was cut short again (its sum's w, area_retry.glsl).
-bool GroovesRenderer::partFailed(std::size_t slot) const {
-  float sum[4] = {};
+// The retry slots among `slots` where a part of the pixel was cut short again (its sum's w,
+// area_retry.glsl), from one read of the first `count` sums.
+std::vector<std::size_t> GroovesRenderer::failedParts(const std::vector<std::size_t>& slots, std::size_t count) const {
+  std::vector<float> sums(4 * count);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(areaRetry_, GLintptr(slot * sizeof sum), sizeof sum, sum);
-  return sum[3] > 0;
+  glGetNamedBufferSubData(areaRetry_, 0, GLsizeiptr(sums.size() * sizeof(float)), sums.data());
+  std::vector<std::size_t> failed;
+  for (const std::size_t slot : slots)
+    if (sums[4 * slot + 3] > 0) failed.push_back(slot);
+  return failed;
 }
 
 // The pixels the first pass listed, shaded again one at a time, then those listed again beam by
@@ -342,10 +346,7 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
       for (int part = 0; part < 1 << (2 * level); ++part)
         for (int beam = 0; beam < (byBeams ? kAreaEyeBeams : 1); ++beam)
           drawRetryPass(frame, byParts[slot], {2, level, part, int(slot), byBeams ? beam : -1});
-    std::vector<std::size_t> failed;
-    for (const std::size_t slot : pending)
-      if (partFailed(slot)) failed.push_back(slot);
-    pending = std::move(failed);
+    pending = failedParts(pending, byParts.size());
   }
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);

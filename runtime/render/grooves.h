@@ -90,7 +90,7 @@ class GroovesRenderer : public TechniqueRenderer {
   std::vector<std::array<int, 2>> retryList(int list) const;
   void drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry);
   void drawRetryPasses(const FrameContext& frame);
-  bool partFailed(std::size_t slot) const;
+  std::vector<std::size_t> failedParts(const std::vector<std::size_t>& slots, std::size_t count) const;
   GroovesOptions options_;
   std::vector<Upload> uploads_;
   std::vector<Item> items_;
