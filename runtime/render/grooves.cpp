@@ -33,7 +33,7 @@ constexpr std::size_t kFrameCounts = 3;
 // kAreaSlots flags, then kAreaSlots x kAreaSlotFloats floats (40 MiB) that the shader cuts into as
 // many slots as fit (one invocation's cells, pieces and polygons: about 32,800 floats with 24
 // primitives found and 8-point profiles, so about 320 slots). A pixel sampled by area while every
-// slot is taken is line sampled instead.
+// slot is taken is line sampled instead. Each slot layout (package defines) has an arena of its own.
 constexpr GLuint kAreaScratchBinding = fmt::kAreaScratchBinding;
 constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // After the slot flags, the shader's areaCounts: special-case fragments sampled by area, line sampled
@@ -140,21 +140,23 @@ GroovesRenderer::~GroovesRenderer() {
     const GLuint buffers[] = {upload.storage, upload.header};
     glDeleteBuffers(2, buffers);
   }
-  if (areaScratch_ != 0) glDeleteBuffers(1, &areaScratch_);
+  for (const auto& [defines, buffer] : areaScratch_) glDeleteBuffers(1, &buffer);
   if (areaRetry_ != 0) glDeleteBuffers(1, &areaRetry_);
   if (frameCounts_ != 0) glDeleteBuffers(1, &frameCounts_);
 }
 
-// The arena, zeroed (every slot free), made once for all packages with special cases.
-void GroovesRenderer::makeAreaScratch() {
-  if (areaScratch_ != 0) return;
+// The arena of a slot layout, zeroed (every slot free), made once for all packages with that layout.
+unsigned GroovesRenderer::areaScratchFor(const std::vector<std::string>& packageDefines) {
+  unsigned& buffer = areaScratch_[packageDefines];
+  if (buffer != 0) return buffer;
   const std::size_t bytes =
       kAreaCountsOffset + kAreaCounts * sizeof(std::uint32_t) + kAreaSlots * kAreaSlotFloats * sizeof(float);
-  glCreateBuffers(1, &areaScratch_);
-  glNamedBufferStorage(areaScratch_, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateBuffers(1, &buffer);
+  glNamedBufferStorage(buffer, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const std::uint32_t zero = 0;
-  glClearNamedBufferData(areaScratch_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferData(buffer, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   bytes_ += bytes;
+  return buffer;
 }
 
 // The retry buffer sized for a width x height target, its lists emptied and its marks zeroed.
@@ -215,7 +217,6 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
       bytes_ += bytes.size() + sizeof header;
       uploadOfPackage[key] = uploads_.size();
       definesOfPackage[key] = packageDefines(decoded, options_.areaSampling, options_.areaReflections);
-      if (!decoded.records.empty() && options_.areaSampling) makeAreaScratch();
       if (frameCounts_ == 0) {
         glCreateBuffers(1, &frameCounts_);
         glNamedBufferStorage(frameCounts_, kFrameCounts * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -241,6 +242,7 @@ Status GroovesRenderer::prepare(const Scene& scene, const std::vector<std::size_
     item.world = instance.world;
     item.upload = uploadOfPackage[key];
     item.areaSampling = std::count(variant.defines.begin(), variant.defines.end(), "HAS_AREA_SAMPLING") > 0;
+    if (item.areaSampling) item.areaScratch = areaScratchFor(definesOfPackage[key]);
     items_.push_back(std::move(item));
   }
   return {};
@@ -276,7 +278,7 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(k), upload.storage, GLintptr(upload.offset[k]),
                       GLsizeiptr(upload.size[k]));
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, upload.header);
-  if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, areaScratch_);
+  if (item.areaScratch != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, item.areaScratch);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, areaRetry_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, fmt::kFrameCountsBinding, frameCounts_);
   item.mesh.draw();
@@ -360,16 +362,17 @@ void GroovesRenderer::draw(const FrameContext& frame) {
     const std::uint32_t zero = 0;
     glClearNamedBufferData(frameCounts_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   }
-  if (areaScratch_ != 0) {  // the counts and marks are the frame's own
+  if (!areaScratch_.empty()) {  // the counts and marks are the frame's own
     const std::uint32_t zero = 0;
-    glClearNamedBufferSubData(areaScratch_, GL_R32UI, GLintptr(kAreaCountsOffset), kAreaCounts * sizeof(std::uint32_t),
-                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    for (const auto& [defines, buffer] : areaScratch_)
+      glClearNamedBufferSubData(buffer, GL_R32UI, GLintptr(kAreaCountsOffset), kAreaCounts * sizeof(std::uint32_t),
+                                GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     clearAreaRetry(frame.width, frame.height);
   }
   for (std::size_t i = 0; i < items_.size(); ++i) drawItem(items_[i], frame, int(i) + 1, {});
   if (areaRetry_ != 0) drawRetryPasses(frame);
   for (std::size_t k = 0; k < fmt::kArrayCount; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(k), 0);
-  if (areaScratch_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
+  if (!areaScratch_.empty()) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaScratchBinding, 0);
   if (areaRetry_ != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAreaRetryBinding, 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, fmt::kFrameCountsBinding, 0);
   glBindBufferBase(GL_UNIFORM_BUFFER, kHeaderBinding, 0);
@@ -383,9 +386,13 @@ nlohmann::json GroovesRenderer::statistics() const {
   nlohmann::json s = {{"grooveFarFragments", frame[0]},
                       {"grooveTruncatedFragments", frame[1]},
                       {"grooveClassesDroppedFragments", frame[2]}};
-  if (areaScratch_ == 0) return s;  // no package with special cases, or area sampling off
+  if (areaScratch_.empty()) return s;  // no package with special cases, or area sampling off
   std::uint32_t counts[kAreaCounts] = {};
-  glGetNamedBufferSubData(areaScratch_, GLintptr(kAreaCountsOffset), sizeof counts, counts);
+  for (const auto& [defines, buffer] : areaScratch_) {
+    std::uint32_t own[kAreaCounts] = {};
+    glGetNamedBufferSubData(buffer, GLintptr(kAreaCountsOffset), sizeof own, own);
+    for (std::size_t k = 0; k < kAreaCounts; ++k) counts[k] += own[k];
+  }
   s["grooveAreaFragments"] = counts[0] + counts[1] + counts[2];
   s["grooveAreaLineSampledNoSlot"] = counts[1];
   s["grooveAreaLineSampledLoopCap"] = counts[2];

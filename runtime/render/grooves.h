@@ -60,8 +60,12 @@ class GroovesRenderer : public TechniqueRenderer {
   std::vector<std::string> warnings() const override;
 
  private:
-  void makeAreaScratch();
-  unsigned areaScratch_ = 0;  // the area sampling arena (special cases), shared by every package
+  // The area sampling arenas (special cases), one per slot layout: a variant cuts its arena into
+  // slots of its own size (shaders/grooves/area_polygon.glsl), so draws of variants with different
+  // sizes running at once must not share one (their slots would overlap). Keyed by the package
+  // defines that set the size.
+  unsigned areaScratchFor(const std::vector<std::string>& packageDefines);
+  std::map<std::vector<std::string>, unsigned> areaScratch_;
   void clearAreaRetry(int width, int height);
   unsigned areaRetry_ = 0;  // retry lists, sums and per-pixel marks (shaders/grooves/area_retry.glsl)
   std::size_t retryBytes_ = 0;
@@ -81,6 +85,7 @@ class GroovesRenderer : public TechniqueRenderer {
     Mat4 world;
     std::size_t upload = 0;
     bool areaSampling = false;  // its variant samples special cases by area (and retries)
+    unsigned areaScratch = 0;   // then its arena
   };
   // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaPartLevel, uAreaPart, uRetrySlot).
   struct RetryPass {

@@ -9,7 +9,8 @@
 // to the array's size, and unroll the loops over small ones: minutes per shader. A slot is taken by a
 // compare-and-swap on its flag, trying the next ones when taken (no invocation ever waits for
 // another), and freed after the sample; when every slot tried is taken, the footprint is line
-// sampled instead and gAreaNoSlot says so.
+// sampled instead and gAreaNoSlot says so. The slots' size is this variant's own, so the renderer
+// binds an arena per slot layout: slots of two sizes cut from one arena would overlap.
 // Tolerances are the CPU's scaled to fp32 rounding: edges shorter than 1e-4 of a polygon's size have
 // no reliable direction here (1e-12 there), vertices within 1e-6 of their magnitude are one, and
 // slivers count as empty (negligible() below).
