@@ -65,6 +65,13 @@ done
 # The plate's mirror cuts reflecting a grey-blue room (light from outside the grooves, seed 000 §7).
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 1024x768 --environment 0.25,0.27,0.32 \
   -o "$out/grooves-plate-environment.png"
+# Close to where a diagonal cut crosses the ring, with the mirror bounces in the crossing traced
+# (seed 000 §7 in §6's area-sampled special cases), beside the cheaper default that reflects the room.
+crossing=0.1418,0.08,0.035:0.1418,0.1112,0
+for model in environment traced; do
+  "$bin/bakeplay/bakeplay" render -q "$out/grooves-plate.glb" --size 320x240 --camera "$crossing" \
+    --environment 0.25,0.27,0.32 --groove-reflections "$model" -o "$out/grooves-plate-crossing-$model.png"
+done
 # The fluted column: grooves drawn on a UV-mapped mesh (groovebake --apply-to).
 # Seen and lit from -z: the UV seam (where the rings' two ends meet) faces +z.
 "$bin/bakeplay/bakeplay" render -q "$out/grooves-column.glb" --size 384x512 --camera -1.1,0.6,-2.6:0,0,0 --light -0.5,0.6,-0.6 \

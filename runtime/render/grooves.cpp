@@ -398,6 +398,7 @@ nlohmann::json GroovesRenderer::statistics() const {
   s["grooveAreaLineSampledLoopCap"] = counts[2];
   s["grooveAreaRetried"] = counts[3];
   s["grooveAreaRetryPasses"] = retryPasses_;
+  s["grooveAreaArenas"] = areaScratch_.size();
   return s;
 }
 

@@ -30,8 +30,7 @@ struct GroovesOptions {
   bool areaSampling = true;
   // Mirror bounces (seed §7) in footprints sampled by area traced as beams, as the CPU method does.
   // Off by default: a mirror piece there reflects only the environment, the cheaper model (llvmpipe
-  // renders the engraved plate's view 70 times slower traced, and traced views with thousands of
-  // retried pixels do not yet render the same bytes twice).
+  // renders the engraved plate's view 70 times slower traced).
   bool areaReflections = false;
   // Tests: area samples taken as cut short by a loop cap whatever the driver, so that the retry
   // passes run: 1 in the first pass (shaded again whole), 2 also in the whole-footprint retry passes

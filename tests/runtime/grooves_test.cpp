@@ -903,6 +903,51 @@ TEST_F(GroovesOracle, BakeplayFrameMatchesTheGoldenImage) {
   EXPECT_TRUE(test::matchesGoldenImage(image, "runtime/grooves-vee-ridge-mirror.v1.png"));
 }
 
+// Two packages whose special cases need scratch slots of different sizes (a 3-point and a 4-point
+// profile) in one frame: each slot layout gets an arena of its own. Cut from one arena, slots of two
+// sizes overlap, and two rasteriser threads shading the two packages at once wrote into each other's
+// slots (the grooves scene's traced render differed from run to run). Two packages of one layout
+// share an arena.
+TEST_F(GroovesOracle, EverySlotLayoutHasAnArenaOfItsOwn) {
+  const auto crossing = [](const std::string& profile, const std::string& name) {
+    return bake(sceneJson(1, profile, kGrey, "grey",
+                          R"({"profile": "p", "path": {"line": [[-0.5, 0.5], [1.5, 0.5]]}}, )"
+                          R"({"profile": "p", "path": {"line": [[0.5, -0.5], [0.5, 1.5]]}})"),
+                name);
+  };
+  const Baked vee = crossing(R"("p": {"points": [[-0.05, 0], [0, -0.04], [0.05, 0]]})", "layout_vee");
+  const Baked vee2 = crossing(R"("p": {"points": [[-0.04, 0], [0, -0.03], [0.04, 0]]})", "layout_vee2");
+  const Baked box = crossing(R"("p": {"points": [[-0.05, 0], [-0.05, -0.03], [0.05, -0.03], [0.05, 0]]})", "layout_box");
+  ASSERT_FALSE(vee.file.empty() || vee2.file.empty() || box.file.empty());
+  const auto arenas = [](const Baked& a, const Baked& b) -> nlohmann::json {
+    Diagnostics diagnostics("bakeplay", true);
+    auto scene = loadScene({a.file, b.file}, diagnostics, [](const std::string&) { return true; });
+    EXPECT_TRUE(scene.isOk()) << scene.status().describe();
+    if (!scene.isOk() || scene->instances.size() != 2) return {};
+    gl::ShaderLibrary shaders;
+    GroovesRenderer renderer;  // area sampling on, as by default
+    const Status prepared = renderer.prepare(*scene, {0, 1}, shaders);
+    EXPECT_TRUE(prepared.isOk()) << prepared.describe();
+    const Camera camera{{0.6f, -0.3f, 0.8f}, {0.5f, 0.5f, 0.0f}, {0, 0, 1}, 0.7f, 0.01f, 100.0f};
+    Light light;
+    light.direction = normalize(Vec3{0.3f, 0.5f, 0.8f});
+    const FrameContext frame{*scene, camera, light, lookAt(camera.eye, camera.target, camera.up),
+                             perspective(camera.yfov, 1.0f, camera.znear, camera.zfar), kSize, kSize};
+    FloatTarget target;
+    target.bindAndClear();
+    renderer.draw(frame);
+    glFinish();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return renderer.statistics();
+  };
+  const nlohmann::json two = arenas(vee, box), one = arenas(vee, vee2);
+  ASSERT_TRUE(two.is_object() && one.is_object());
+  EXPECT_EQ(two["grooveAreaArenas"], 2) << two.dump();
+  EXPECT_EQ(one["grooveAreaArenas"], 1) << one.dump();
+  EXPECT_GT(two["grooveAreaFragments"].get<std::uint32_t>(), 0u) << two.dump();
+  EXPECT_EQ(two["grooveAreaLineSampledNoSlot"], 0) << two.dump();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Registration and package checks
 
