@@ -203,6 +203,17 @@ vec3 lineSampleParts(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer, vec3 fl
 
 bool gAreaCut = false;
 bool gAreaDeferred = false;  // cut short: shaded again in a retry pass (area_retry.glsl)
+#endif
+
+// The per-frame counts are the first pass's: a retry pass shades again fragments counted there.
+void countFirstPassFragment(int which) {
+#ifdef HAS_AREA_SAMPLING
+  if (isRetryPass()) return;
+#endif
+  countFragment(which);
+}
+
+#ifdef HAS_AREA_SAMPLING
 
 // True when loops no longer run (a driver's cap on the loop iterations of an invocation was reached):
 // a loop of two iterations, its bound unknown to the compiler, runs fewer.
@@ -228,7 +239,7 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   // level, when the package has one, as libbake's SeedShader does; else the rest is dropped, counted.
   bool beyondPeriod = wrapRepeat() && any(greaterThan(abs(axis1) + abs(axis2), domainSize()));
   gFarMode = (gFoundOverflow || beyondPeriod) && hasFarLevel();
-  if (gFoundOverflow || beyondPeriod) countFragment(gFarMode ? kCountFar : kCountTruncated);
+  if (gFoundOverflow || beyondPeriod) countFirstPassFragment(gFarMode ? kCountFar : kCountTruncated);
   if (gFarMode) {
     setFarBox(centre, axis1, axis2);  // no special case is looked for: the far level averages them away
   } else {
@@ -252,7 +263,7 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   bool split = !gFarMode && !gSpecialCase && nearArcCentre(axis1, axis2);
   gClassesDropped = false;
   vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, split);
-  if (gClassesDropped) countFragment(kCountClassesDropped);
+  if (gClassesDropped) countFirstPassFragment(kCountClassesDropped);
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;

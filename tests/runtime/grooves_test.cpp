@@ -869,6 +869,32 @@ TEST_F(GroovesOracle, RetryPassesBeamByBeamByQuartersMatchTheCpu) {
   EXPECT_EQ(quarters.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 5 * fragments);
 }
 
+// The per-frame counts (far level, truncated, classes dropped) are the first pass's: a star of six
+// V-cuts crossing at one point, whose special-case footprints meet grooves in more directions than
+// the shader keeps, counts the same whether every special-case pixel is shaded again or not.
+TEST_F(GroovesOracle, RetryPassesDoNotCountFragmentsAgain) {
+  areaSampling_ = true;
+  std::string grooves;
+  for (int k = 0; k < 6; ++k) {
+    const double angle = k * std::acos(-1.0) / 6, c = 0.4 * std::cos(angle), s = 0.4 * std::sin(angle);
+    grooves += std::string(k > 0 ? ", " : "") + R"({"profile": "vee", "path": {"line": [[)" + std::to_string(0.5 - c) +
+               ", " + std::to_string(0.5 - s) + "], [" + std::to_string(0.5 + c) + ", " + std::to_string(0.5 + s) + "]]}}";
+  }
+  const std::string vee = R"("vee": {"points": [[-0.02, 0], [0, -0.015], [0.02, 0]]})";
+  const Baked baked = bake(sceneJson(1, vee, kGrey, "grey", grooves), "star_counts");
+  ASSERT_FALSE(baked.file.empty());
+  const auto counts = [&](int force) {
+    forceRetries_ = force;
+    return compare(baked, {0.5f, 0.2f, 0.5f}, {0.5f, 0.5f, 0.0f}, {0.3f, 0.5f, 0.8f}, 0).statistics;
+  };
+  const nlohmann::json plain = counts(0), retried = counts(1);
+  ASSERT_TRUE(plain.is_object() && retried.is_object());
+  EXPECT_GT(retried["grooveAreaRetried"].get<std::uint32_t>(), 0u) << retried.dump();
+  for (const char* count : {"grooveFarFragments", "grooveTruncatedFragments", "grooveClassesDroppedFragments"})
+    EXPECT_EQ(retried[count], plain[count]) << count;
+  EXPECT_GT(plain["grooveClassesDroppedFragments"].get<std::uint32_t>(), 0u) << plain.dump();
+}
+
 // ---------------------------------------------------------------------------------------------
 // The whole bakeplay path: the registry picks the grooves renderer, the frame goes through the
 // runtime's offscreen target and PNG encoding (sRGB, as `bakeplay render` writes it), and must match
