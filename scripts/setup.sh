@@ -14,7 +14,7 @@ debian_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libopencv-dev gnuplot-nox xvfb xauth help2man
-  clang libclang-rt-14-dev time python3
+  clang libclang-rt-14-dev time python3 chromium
 )
 
 missing=()
@@ -37,4 +37,11 @@ if [[ ! -f "$js/node_modules/.setup-stamp" || "$js/package-lock.json" -nt "$js/n
   echo "setup: installing npm test checkers" >&2
   (cd "$js" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
   touch "$js/node_modules/.setup-stamp"
+fi
+# three.js for the web engine plugin (integrations/three), drawn in headless Chromium by its test.
+three="$here/integrations/three"
+if [[ ! -f "$three/node_modules/.setup-stamp" || "$three/package-lock.json" -nt "$three/node_modules/.setup-stamp" ]]; then
+  echo "setup: installing three.js for integrations/three" >&2
+  (cd "$three" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  touch "$three/node_modules/.setup-stamp"
 fi

@@ -10,7 +10,7 @@
 #   scripts/test.sh --fuzz       the libFuzzer targets (in build-sanitize/), each run briefly: ctest -L fuzz
 #                                (BAKE_FUZZ_SECONDS=600 scripts/test.sh --fuzz: ten minutes each)
 #   scripts/test.sh -L unit      extra arguments go to ctest (labels: unit cli gl stiff data pipeline
-#                                hostile peer million slow)
+#                                hostile peer million web slow)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
