@@ -5,6 +5,8 @@
 // linear float target plus an sRGB encode) so the bytes match bakeplay's PNGs.
 import * as THREE from 'three';
 import { fragmentShader, vertexShader } from './generated/geotexture-shaders.mjs';
+export { BakeHatchingPlugin } from './hatching.mjs';
+export { BakeRevolutionPlugin } from './revolution.mjs';
 
 export const EXTENSION = 'BAKE_geodesic';
 const ATTRIBUTE_PREFIX = '_GEODESIC_';

@@ -1,8 +1,10 @@
-// Builds generated/geotexture-shaders.mjs from the project's GLSL (shaders/geodesic, shaders/common),
-// so the three.js plugin draws with the very shaders bakeplay compiles. Steps: resolve `#include`
+// Builds generated/{geotexture,hatching,revolution}-shaders.mjs from the project's GLSL (shaders/), so
+// the three.js plugins draw with the very shaders bakeplay compiles. Steps: resolve `#include`
 // (relative to the including file; `common/...` relative to shaders/), each file once (they carry
-// include guards), then adapt desktop GLSL 4.x to GLSL ES 3.00: precision qualifiers, no uniform
-// default initialisers, attributes as plain `in` under the names three.js binds.
+// include guards), then adapt desktop GLSL 4.x to GLSL ES 3.00: precision qualifiers (samplers too),
+// no uniform default initialisers, no texture bindings, textureQueryLevels as a uniform, attributes as
+// plain `in` under the names three.js binds. Hatching takes the fragment stage only (hatching.mjs
+// replaces the geometry stage).
 // The `#version 300 es` line is left to three.js (glslVersion: THREE.GLSL3).
 //   node tools/generate-shaders.mjs          write the module
 //   node tools/generate-shaders.mjs --check  exit 1 when the committed module is out of date
@@ -14,6 +16,9 @@ const here = dirname(fileURLToPath(import.meta.url));
 const packageDir = resolve(here, '..');
 const shadersDir = resolve(packageDir, '../../shaders');
 const outputPath = join(packageDir, 'generated/geotexture-shaders.mjs');
+// Hatching: the fragment stage only; WebGL2 has no geometry stage, so hatching.mjs computes what
+// hatching.geom computes on the CPU and feeds it through its own small vertex shader.
+const hatchingOutputPath = join(packageDir, 'generated/hatching-shaders.mjs');
 
 // three.js binds geometry attributes by name: POSITION -> position, NORMAL -> normal; the plugin
 // aliases each field slot's attribute as aField<slot>, so those names stay.
@@ -55,15 +60,26 @@ function adaptToEs(source, stage) {
       text = text.replace(new RegExp(`\\b${from}\\b`, 'g'), to);
     }
   }
+  // Texture units are the application's business in WebGL2 (three.js assigns them).
+  text = text.replace(/layout\s*\(\s*binding\s*=\s*\d+\s*\)\s*uniform\s+/g, 'uniform ');
+  // ES 3.00 has no textureQueryLevels: the level count becomes a uniform bakeLevels_<sampler>.
+  const queried = [...new Set([...text.matchAll(/\btextureQueryLevels\s*\(\s*(\w+)\s*\)/g)].map((m) => m[1]))];
+  for (const sampler of queried) {
+    text = text.replace(new RegExp(`\\btextureQueryLevels\\s*\\(\\s*${sampler}\\s*\\)`, 'g'), `bakeLevels_${sampler}`);
+    text = text.replace(new RegExp(`^(\\s*uniform\\s+\\w+\\s+${sampler}\\s*;.*)$`, 'm'), `$1\nuniform int bakeLevels_${sampler};`);
+  }
+  // Samplers without a default precision in ES 3.00 need one where they are used.
+  const samplerPrecision = ['sampler2DArray', 'sampler3D', 'isampler2D', 'usampler2D']
+    .filter((type) => new RegExp(`\\b${type}\\b`).test(text))
+    .map((type) => `precision highp ${type};\n`).join('');
   // Integer hashes need 32-bit ints and the noises full float precision in both stages.
-  return 'precision highp float;\nprecision highp int;\n' + text;
+  return 'precision highp float;\nprecision highp int;\n' + samplerPrecision + text;
 }
 
-function build() {
-  const stages = [
-    ['vertexShader', 'vertex', join(shadersDir, 'geodesic/geotexture.vert')],
-    ['fragmentShader', 'fragment', join(shadersDir, 'geodesic/geotexture.frag')],
-  ];
+function build(stages = [
+  ['vertexShader', 'vertex', join(shadersDir, 'geodesic/geotexture.vert')],
+  ['fragmentShader', 'fragment', join(shadersDir, 'geodesic/geotexture.frag')],
+]) {
   const allUsed = [];
   const parts = [];
   for (const [name, stage, file] of stages) {
@@ -82,20 +98,34 @@ function build() {
   return `${header}\nexport const sources = ${JSON.stringify(allUsed)};\n\n${parts.join('\n')}`;
 }
 
-const generated = build();
+const outputs = [
+  [outputPath, build()],
+  [hatchingOutputPath, build([['fragmentShader', 'fragment', join(shadersDir, 'hatching/hatching.frag')]])],
+  // Revolution mapping: the ray march runs in the fragment stage; the vertex stage only places the box.
+  [join(packageDir, 'generated/revolution-shaders.mjs'), build([
+    ['vertexShader', 'vertex', join(shadersDir, 'revolution/revolution.vert')],
+    ['fragmentShader', 'fragment', join(shadersDir, 'revolution/revolution.frag')],
+  ])],
+];
 if (process.argv.includes('--check')) {
-  let committed = '';
-  try {
-    committed = readFileSync(outputPath, 'utf8');
-  } catch {
-    // a missing file is out of date too
+  let stale = false;
+  for (const [path, generated] of outputs) {
+    let committed = '';
+    try {
+      committed = readFileSync(path, 'utf8');
+    } catch {
+      // a missing file is out of date too
+    }
+    if (committed !== generated) {
+      console.error(`${relative(process.cwd(), path)} is out of date with shaders/: run node tools/generate-shaders.mjs`);
+      stale = true;
+    }
   }
-  if (committed !== generated) {
-    console.error(`${relative(process.cwd(), outputPath)} is out of date with shaders/: run node tools/generate-shaders.mjs`);
-    process.exit(1);
-  }
+  if (stale) process.exit(1);
   console.log('generated shaders are up to date');
 } else {
-  writeFileSync(outputPath, generated);
-  console.log(`wrote ${relative(process.cwd(), outputPath)}`);
+  for (const [path, generated] of outputs) {
+    writeFileSync(path, generated);
+    console.log(`wrote ${relative(process.cwd(), path)}`);
+  }
 }
