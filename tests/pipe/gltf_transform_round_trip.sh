@@ -4,7 +4,8 @@
 # `prune`, `dedup` and `optimize`, each on the one before, without the steps that rewrite what the
 # extensions index (geometry simplification, welding, vertex-attribute pruning, mesh and texture
 # compression; integrations/gltf-transform/README.md). The result must pass `bakeplay validate` and
-# show the original package's first reference view (the tolerances of a golden image).
+# show the original package's first reference view (the tolerances of a golden image). Without the
+# modules, glTF-Transform must refuse the packages that list their extension as required.
 #   gltf_transform_round_trip.sh TOOLS_DIR SOURCE_DIR FOLDER
 set -euo pipefail
 tools="$(cd "$1" && pwd)" source="$(cd "$2" && pwd)" folder="$(cd "$3" && pwd)"
@@ -16,6 +17,7 @@ rm -rf "$work"
 mkdir -p "$work/views"
 failures=0
 checked=0
+refused=0
 mapfile -t packages < <(find "$folder" -maxdepth 1 -name '*.glb' | sort)
 # One chain per package, copy -> prune -> dedup -> optimize, each step reading the one before: every
 # step must run and know every extension, and the chain's end must still be the same package (one
@@ -45,12 +47,31 @@ for package in "${packages[@]}"; do
     fi
     input="$out"
   done
+  # Without the modules glTF-Transform is a tool that does not know our extensions: it must refuse a
+  # package whose primitives mean nothing without theirs (extensionsRequired: BAKE_grooves, the policy
+  # of docs/architecture.md) and copy the others, keeping the plain object.
+  required=$(node -e '
+    const b = require("fs").readFileSync(process.argv[1]), n = b.readUInt32LE(12);
+    const j = JSON.parse(b.toString("utf8", 20, 20 + n));
+    const used = j.extensionsUsed || [], req = j.extensionsRequired || [];
+    if (used.includes("BAKE_grooves") && !req.includes("BAKE_grooves")) { console.log("unlisted"); process.exit(0); }
+    console.log(req.filter((e) => e.startsWith("BAKE_")).join(" "));' "$package")
+  if [[ $required == unlisted ]]; then
+    echo "FAIL: $name carries BAKE_grooves without listing it in extensionsRequired"; ok=false
+  elif (cd "$source/tests/js" && "$cli" copy "$package" "$work/$name.plain.glb") >"$work/$name.plain.log" 2>&1; then
+    [[ -z $required ]] || { echo "FAIL: gltf-transform without our modules copied $name (requires $required)"; ok=false; }
+  elif [[ -z $required ]] || ! grep -q "Missing required extension" "$work/$name.plain.log"; then
+    echo "FAIL: gltf-transform without our modules refused $name:"; cat "$work/$name.plain.log"; ok=false
+  else
+    refused=$((refused + 1))
+  fi
   if $ok && ! "$tools/bakeplay/bakeplay" validate -q "$input" --golden "$golden" --size 96; then
     echo "FAIL: $name after gltf-transform copy, prune, dedup and optimize"; ok=false
   fi
   if $ok; then checked=$((checked + 1)); else failures=$((failures + 1)); fi
 done
 echo "gltf-transform round trip: $checked packages kept their baked data and picture through copy, prune," \
-     "dedup and optimize; $failures failed"
+     "dedup and optimize; $failures failed; without our modules it refused the $refused that require their extension"
 ((checked >= 12)) || { echo "FAIL: only $checked packages checked" >&2; exit 1; }
+((refused >= 1)) || { echo "FAIL: no package required its extension" >&2; exit 1; }
 ((failures == 0))
