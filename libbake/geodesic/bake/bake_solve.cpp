@@ -88,9 +88,11 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
       total.windowsCreated += s.windowsCreated;
       total.windowsPropagated += s.windowsPropagated;
       total.pseudoSources += s.pseudoSources;
+      total.windowsPeak = std::max(total.windowsPeak, s.windowsPeak);
     }
     stats.details = {{"windowsCreated", total.windowsCreated},
                      {"windowsPropagated", total.windowsPropagated},
+                     {"windowsPeak", total.windowsPeak},
                      {"pseudoSources", total.pseudoSources}};
   }
   for (std::size_t f = 0; f < fields.size(); ++f)

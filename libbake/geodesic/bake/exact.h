@@ -26,6 +26,8 @@ struct ExactOptions {
 struct ExactStats {
   std::size_t windowsCreated = 0;
   std::size_t windowsPropagated = 0;
+  std::size_t windowsSplit = 0;   // extra pieces when a new window cut an existing one in two
+  std::size_t windowsPeak = 0;    // most windows held at once (edges behind the front release theirs)
   std::size_t pseudoSources = 0;  // saddle and boundary vertices that re-emitted
   // The safety limit on windows (60 per edge + 10^6) was reached: the distances are then upper bounds
   // (windows plus edge paths) rather than exact. Never seen on real meshes; it keeps bad input finite.

@@ -5,10 +5,13 @@
 // final relaxes its edges (a valid path, so distances stay upper bounds even on broken input) and, when
 // geodesics can bend around it (saddle, boundary, non-manifold, a source), emits windows on the far
 // edge of every face around it. Windows that cannot beat a path through an edge's endpoint are dropped
-// before insertion (the filter of Surazhsky et al. section 4.2).
+// before insertion (the filter of Surazhsky et al. section 4.2). An edge is closed, and its windows'
+// slots reused, once the front has passed the farthest point of the edge's distance: every later
+// window is farther everywhere, so the lists only matter inside the front's band.
 #include "geodesic/bake/exact_propagate.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -31,7 +34,9 @@ Propagator::Propagator(const Surface& surface, const ExactOptions& options)
   distance_.assign(n, kUnreachable);
   emittedAt_.assign(n, kUnreachable);
   emits_.assign(n, 0);
-  edgeHead_.assign(surface.edgeCount(), kNone);
+  edgeWindows_.resize(surface.edgeCount());
+  edgeClosed_.assign(surface.edgeCount(), 0);
+  closeScheduled_.assign(surface.edgeCount(), 0);
   windowCap_ = 60 * surface.edgeCount() + 1000000;
   buildFaceSides();
   markEmittingVertices();
@@ -105,25 +110,23 @@ const Propagator::FaceSide& Propagator::side(std::uint32_t face, std::uint32_t e
   return sides_[3 * face + j];
 }
 
-// A 4-ary min-heap: half the depth of a binary heap, and the four children share a cache line or two,
-// which matters because popping dominates the queue's cost.
-void Propagator::push(double key, std::uint32_t item) {
-  std::size_t i = heap_.size();
-  heap_.push_back({key, item});
+void Propagator::Queue::push(Entry entry) {
+  std::size_t i = entries_.size();
+  entries_.push_back(entry);
   while (i > 0) {
     const std::size_t parent = (i - 1) / 4;
-    if (heap_[parent].key <= key) break;
-    heap_[i] = heap_[parent];
+    if (entries_[parent].key <= entry.key) break;
+    entries_[i] = entries_[parent];
     i = parent;
   }
-  heap_[i] = {key, item};
+  entries_[i] = entry;
 }
 
-Propagator::Entry Propagator::popMin() {
-  const Entry top = heap_.front();
-  const Entry last = heap_.back();
-  heap_.pop_back();
-  const std::size_t n = heap_.size();
+Propagator::Entry Propagator::Queue::pop() {
+  const Entry top = entries_.front();
+  const Entry last = entries_.back();
+  entries_.pop_back();
+  const std::size_t n = entries_.size();
   if (n == 0) return top;
   std::size_t i = 0;
   for (;;) {
@@ -132,13 +135,77 @@ Propagator::Entry Propagator::popMin() {
     std::size_t best = first;
     const std::size_t end = std::min(first + 4, n);
     for (std::size_t c = first + 1; c < end; ++c)
-      if (heap_[c].key < heap_[best].key) best = c;
-    if (heap_[best].key >= last.key) break;
-    heap_[i] = heap_[best];
+      if (entries_[c].key < entries_[best].key) best = c;
+    if (entries_[best].key >= last.key) break;
+    entries_[i] = entries_[best];
     i = best;
   }
-  heap_[i] = last;
+  entries_[i] = last;
   return top;
+}
+
+std::uint64_t Propagator::RadixQueue::bitsOf(double key) {
+  return key > 0.0 ? std::bit_cast<std::uint64_t>(key) : 0;
+}
+
+std::size_t Propagator::RadixQueue::bucketOf(std::uint64_t bits) const {
+  return bits <= last_ ? 0 : 64 - static_cast<std::size_t>(std::countl_zero(bits ^ last_));
+}
+
+void Propagator::RadixQueue::push(const Entry& entry) {
+  buckets_[bucketOf(bitsOf(entry.key))].push_back(entry);
+  ++size_;
+}
+
+Propagator::Entry Propagator::RadixQueue::pop() {
+  if (buckets_[0].empty()) {
+    std::size_t i = 1;
+    while (buckets_[i].empty()) ++i;
+    std::vector<Entry>& bucket = buckets_[i];
+    double smallest = bucket.front().key;
+    for (const Entry& entry : bucket) smallest = std::min(smallest, entry.key);
+    last_ = bitsOf(smallest);
+    for (const Entry& entry : bucket) buckets_[bucketOf(bitsOf(entry.key))].push_back(entry);
+    bucket.clear();
+  }
+  const Entry top = buckets_[0].back();
+  buckets_[0].pop_back();
+  --size_;
+  return top;
+}
+
+void Propagator::RadixQueue::clear() {
+  for (std::vector<Entry>& bucket : buckets_) bucket.clear();
+  last_ = 0;
+  size_ = 0;
+}
+
+void Propagator::pushWindow(std::uint32_t id) {
+  queue_.push({windows_[id].minDistance(), id, windows_[id].generation});
+}
+
+std::uint32_t Propagator::allocateWindow(const Window& w) {
+  ++liveWindows_;
+  stats_.windowsPeak = std::max(stats_.windowsPeak, liveWindows_);
+  if (freeSlots_.empty()) {
+    windows_.push_back(w);
+    return static_cast<std::uint32_t>(windows_.size() - 1);
+  }
+  const std::uint32_t id = freeSlots_.back();
+  freeSlots_.pop_back();
+  const std::uint32_t generation = windows_[id].generation;
+  windows_[id] = w;
+  windows_[id].generation = generation;
+  return id;
+}
+
+// The window must already be off its edge's list.
+void Propagator::releaseWindow(std::uint32_t id) {
+  Window& w = windows_[id];
+  w.alive = 0;
+  w.generation = w.generation + 1;
+  freeSlots_.push_back(id);
+  --liveWindows_;
 }
 
 void Propagator::relaxVertex(std::uint32_t v, double distance) {
@@ -147,17 +214,17 @@ void Propagator::relaxVertex(std::uint32_t v, double distance) {
   distance_[v] = distance;
   // Only vertices that re-emit need their turn in the queue; the edge paths of the others are
   // relaxed once at the end (closeOverEdges), which keeps the heap small.
-  if (emits_[v]) push(distance, v | kVertexBit);
+  if (emits_[v]) queue_.push({distance, v | kVertexBit});
 }
 
 void Propagator::closeOverEdges() {
   // Edge paths are valid paths: a Dijkstra over them from every distance found bounds each vertex from
   // above, so even a vertex no window reached (broken input) gets a finite distance when connected.
-  heap_.clear();
+  queue_.clear();
   for (std::uint32_t v = 0; v < surface_.vertexCount(); ++v)
-    if (distance_[v] < kUnreachable) push(distance_[v], v);
-  while (!heap_.empty()) {
-    const Entry top = popMin();
+    if (distance_[v] < kUnreachable) queue_.push({distance_[v], v});
+  while (!queue_.empty()) {
+    const Entry top = queue_.pop();
     if (top.key > distance_[top.item] || top.key > options_.maxDistance) continue;
     for (std::uint32_t e : surface_.edgesOfVertex(top.item)) {
       const auto& ends = surface_.edges[e];
@@ -165,7 +232,7 @@ void Propagator::closeOverEdges() {
       const double candidate = top.key + surface_.edgeLengths[e];
       if (candidate < distance_[other]) {
         distance_[other] = candidate;
-        push(candidate, other);
+        queue_.push({candidate, other});
       }
     }
   }
@@ -205,14 +272,15 @@ void Propagator::addSource(const SurfacePoint& point) {
 void Propagator::run() {
   constexpr std::size_t kReportEvery = 16384;
   std::size_t events = 0;
-  while (!heap_.empty()) {
+  while (!queue_.empty()) {
     if (options_.onReached && ++events % kReportEvery == 0) options_.onReached(reached_);
-    const Entry top = popMin();
+    const Entry top = queue_.pop();
     if (top.key > options_.maxDistance) break;
+    closeEdgesBefore(top.key);
     if (top.item & kVertexBit) {
       processVertex(top.item & ~kVertexBit, top.key);
     } else {
-      processWindow(top.item, top.key);
+      processWindow(top.item, top.key, top.generation);
     }
   }
   closeOverEdges();
@@ -257,17 +325,17 @@ void Propagator::emitFromVertex(std::uint32_t v) {
   }
 }
 
-void Propagator::processWindow(std::uint32_t id, double key) {
+void Propagator::processWindow(std::uint32_t id, double key, std::uint32_t generation) {
   const Window w = windows_[id];
-  if (!w.alive || w.propagated) return;
+  if (w.generation != generation || !w.alive || w.propagated) return;
   const double length = surface_.edgeLengths[w.edge];
   const double tolerance = kRelativeTolerance * length;
   const double nearest = w.minDistance();
   if (nearest > key + tolerance) {  // trimmed since it was queued: wait for its real turn
-    push(nearest, id);
+    pushWindow(id);
     return;
   }
-  windows_[id].propagated = true;
+  windows_[id].propagated = 1;
   // Vertex distances may have dropped since it was queued: the endpoint filter may now reject it.
   if (dominatedByEndpoints(w, length)) return;
   ++stats_.windowsPropagated;
@@ -316,6 +384,7 @@ bool Propagator::dominatedByEndpoints(const Window& w, double length) const {
 void Propagator::insertWindow(Window w) {
   const double length = surface_.edgeLengths[w.edge];
   if (!(length > kRelativeTolerance * surface_.diagonal)) return;  // zero-length edge: vertices carry it
+  if (edgeClosed_[w.edge]) return;  // every point there is nearer than any window still to come
   const double tolerance = kRelativeTolerance * length;
   w.b0 = std::clamp(w.b0, 0.0, length);
   w.b1 = std::clamp(w.b1, w.b0, length);
@@ -323,19 +392,23 @@ void Propagator::insertWindow(Window w) {
   if (w.b0 <= tolerance) relaxVertex(surface_.edges[w.edge][0], w.distanceAt(0.0));
   if (w.b1 >= length - tolerance) relaxVertex(surface_.edges[w.edge][1], w.distanceAt(length));
   if (w.b1 - w.b0 <= tolerance) return;
-  if (windows_.size() >= windowCap_) {
+  if (stats_.windowsCreated + stats_.windowsSplit >= windowCap_) {
     stats_.windowLimitReached = true;
     return;
   }
   if (w.minDistance() > options_.maxDistance || dominatedByEndpoints(w, length)) return;
 
+  // The windows it overlaps: from the last one starting at or before it (which may reach into it).
+  const std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  std::size_t i = std::upper_bound(slots.begin(), slots.end(), w.b0,
+                                   [](double x, const EdgeSlot& slot) { return x < slot.b0; }) -
+                  slots.begin();
+  if (i > 0) --i;
+  overlapped_.clear();
+  for (; i < slots.size() && slots[i].b0 < w.b1 - tolerance; ++i)
+    if (windows_[slots[i].id].b1 > w.b0 + tolerance) overlapped_.push_back(slots[i].id);
   lost_.clear();
-  std::uint32_t id = edgeHead_[w.edge];
-  while (id != kNone && windows_[id].b0 < w.b1 - tolerance) {
-    const std::uint32_t next = windows_[id].next;
-    if (windows_[id].b1 > w.b0 + tolerance) trimAgainst(w, id);
-    id = next;
-  }
+  for (std::uint32_t id : overlapped_) trimAgainst(w, id);
   // What the existing windows did not keep becomes new windows.
   double cursor = w.b0;
   auto emitPiece = [&](double lo, double hi) {
@@ -343,11 +416,11 @@ void Propagator::insertWindow(Window w) {
     Window piece = w;
     piece.b0 = lo;
     piece.b1 = hi;
-    const auto newId = static_cast<std::uint32_t>(windows_.size());
-    windows_.push_back(piece);
+    const std::uint32_t newId = allocateWindow(piece);
     linkSorted(newId);
-    push(piece.minDistance(), newId);
+    pushWindow(newId);
     ++stats_.windowsCreated;
+    scheduleClose(piece.edge, std::max(piece.distanceAt(lo), piece.distanceAt(hi)));
   };
   for (const Span& s : lost_) {
     emitPiece(cursor, std::min(s.lo, w.b1));
@@ -398,34 +471,102 @@ void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
   if (old.b1 - cursor > tolerance) pieces_.push_back({cursor, old.b1});
   if (pieces_.empty()) {
     unlink(existing);
-    windows_[existing].alive = false;
+    releaseWindow(existing);
     return;
   }
+  // The first piece stays in place: it starts at or after the old start and before the next window.
+  edgeWindows_[old.edge][slotOf(existing)].b0 = pieces_[0].lo;
   windows_[existing].b0 = pieces_[0].lo;
   windows_[existing].b1 = pieces_[0].hi;
   for (std::size_t i = 1; i < pieces_.size(); ++i) {
     Window split = old;
     split.b0 = pieces_[i].lo;
     split.b1 = pieces_[i].hi;
-    const auto newId = static_cast<std::uint32_t>(windows_.size());
-    windows_.push_back(split);
+    const std::uint32_t newId = allocateWindow(split);
+    ++stats_.windowsSplit;
     linkSorted(newId);
-    if (!split.propagated) push(split.minDistance(), newId);
+    if (!split.propagated) pushWindow(newId);
   }
 }
 
+std::size_t Propagator::slotOf(std::uint32_t id) const {
+  const Window& w = windows_[id];
+  const std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  std::size_t i = std::lower_bound(slots.begin(), slots.end(), w.b0,
+                                   [](const EdgeSlot& slot, double x) { return slot.b0 < x; }) -
+                  slots.begin();
+  while (i < slots.size() && slots[i].id != id) ++i;  // equal starts: a few at most
+  return i;
+}
+
 void Propagator::linkSorted(std::uint32_t id) {
-  Window& w = windows_[id];
-  std::uint32_t* link = &edgeHead_[w.edge];
-  while (*link != kNone && windows_[*link].b0 < w.b0) link = &windows_[*link].next;
-  w.next = *link;
-  *link = id;
+  const Window& w = windows_[id];
+  std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  const auto at = std::upper_bound(slots.begin(), slots.end(), w.b0,
+                                   [](double x, const EdgeSlot& slot) { return x < slot.b0; });
+  slots.insert(at, EdgeSlot{w.b0, id});
 }
 
 void Propagator::unlink(std::uint32_t id) {
-  std::uint32_t* link = &edgeHead_[windows_[id].edge];
-  while (*link != kNone && *link != id) link = &windows_[*link].next;
-  if (*link == id) *link = windows_[id].next;
+  std::vector<EdgeSlot>& slots = edgeWindows_[windows_[id].edge];
+  const std::size_t i = slotOf(id);
+  if (i < slots.size()) slots.erase(slots.begin() + static_cast<std::ptrdiff_t>(i));
+}
+
+}  // namespace bake::geodesic::exact
+
+namespace bake::geodesic::exact {
+
+// The largest distance any point of the edge has now: windows where they lie (a window's distance is
+// convex, so largest at an end), the paths through the edge's ends in the gaps between them.
+double Propagator::farthestOnEdge(std::uint32_t edge, bool& allPropagated) const {
+  const double length = surface_.edgeLengths[edge];
+  const double viaFirst = distance_[surface_.edges[edge][0]];
+  const double viaSecond = distance_[surface_.edges[edge][1]];
+  auto gapFarthest = [&](double lo, double hi) {
+    if (hi <= lo) return 0.0;
+    if (viaFirst == kUnreachable && viaSecond == kUnreachable) return kUnreachable;
+    // min(viaFirst + x, viaSecond + length - x) peaks where the two meet.
+    const double x = std::clamp(0.5 * (viaSecond + length - viaFirst), lo, hi);
+    return std::min(viaFirst + x, viaSecond + length - x);
+  };
+  allPropagated = true;
+  double farthest = 0.0, cursor = 0.0;
+  for (const EdgeSlot& slot : edgeWindows_[edge]) {
+    const Window& w = windows_[slot.id];
+    if (!w.propagated) allPropagated = false;
+    farthest = std::max({farthest, gapFarthest(cursor, w.b0), w.distanceAt(w.b0), w.distanceAt(w.b1)});
+    cursor = std::max(cursor, w.b1);
+  }
+  return std::max(farthest, gapFarthest(cursor, length));
+}
+
+void Propagator::scheduleClose(std::uint32_t edge, double when) {
+  if (closeScheduled_[edge]) return;
+  closeScheduled_[edge] = 1;
+  checks_.push({when, edge});
+}
+
+// Closes the edges the front has passed: a window still to come starts at `key` or beyond (children
+// are no nearer than their parent), so it cannot beat a point already nearer than that. The margin
+// keeps ties, which the trimming tolerance could resolve either way, on the open side.
+void Propagator::closeEdgesBefore(double key) {
+  const double margin = kRelativeTolerance * surface_.diagonal;
+  while (!checks_.empty() && checks_.top().key < key - margin) {
+    const std::uint32_t edge = checks_.pop().item;
+    bool allPropagated = false;
+    const double farthest = farthestOnEdge(edge, allPropagated);
+    if (farthest < key - margin && allPropagated) {
+      for (const EdgeSlot& slot : edgeWindows_[edge]) releaseWindow(slot.id);
+      std::vector<EdgeSlot>().swap(edgeWindows_[edge]);
+      edgeClosed_[edge] = 1;
+      closeScheduled_[edge] = 0;
+    } else if (farthest < kUnreachable) {
+      checks_.push({std::max(farthest, key), edge});  // not yet: look again when the front gets there
+    } else {
+      closeScheduled_[edge] = 0;  // an end not reached yet: the next window on the edge reschedules
+    }
+  }
 }
 
 }  // namespace bake::geodesic::exact

@@ -3,8 +3,11 @@
 // reaches, holds windows to unfold into the next faces and vertices whose distance has just become
 // final. Saddle, boundary and non-manifold vertices then re-emit as pseudo-sources. Each edge keeps its
 // windows in one sorted list without overlaps; a new window is trimmed against them point by point.
+// An edge whose every point is already closer than the front is closed: its windows are released
+// (no later window can beat them) and their slots reused, so memory follows the front, not the mesh.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -33,21 +36,59 @@ class Propagator {
   };
   struct Entry {
     double key;
-    std::uint32_t item;  // window index, or vertex index | kVertexBit
+    std::uint32_t item;            // window index, or vertex index | kVertexBit; an edge in checks_
+    std::uint32_t generation = 0;  // of the window slot when queued
   };
+  // A 4-ary min-heap: half the depth of a binary heap, and the four children share a cache line or
+  // two. It holds the edges waiting to be closed, a small queue.
+  class Queue {
+   public:
+    void push(Entry entry);
+    Entry pop();
+    const Entry& top() const { return entries_.front(); }
+    bool empty() const { return entries_.empty(); }
+    void clear() { entries_.clear(); }
+
+   private:
+    std::vector<Entry> entries_;
+  };
+  // A monotone radix heap (Ahuja, Mehlhorn, Orlin and Tarjan 1990) over the bit patterns of the
+  // keys, which for non-negative doubles sort as the numbers do. The propagation never queues below
+  // the distance last popped (children are no nearer than their parents), so each entry only moves
+  // to lower buckets: constant work per push and a short scan per pop, where a comparison heap paid
+  // a cache miss per level. A key a rounding below the last is served as if equal to it.
+  class RadixQueue {
+   public:
+    void push(const Entry& entry);
+    Entry pop();
+    bool empty() const { return size_ == 0; }
+    void clear();
+
+   private:
+    static std::uint64_t bitsOf(double key);
+    std::size_t bucketOf(std::uint64_t bits) const;
+    std::array<std::vector<Entry>, 65> buckets_;
+    std::uint64_t last_ = 0;
+    std::size_t size_ = 0;
+  };
+
   static constexpr std::uint32_t kVertexBit = 0x80000000u;
 
   void buildFaceSides();
   void markEmittingVertices();
   const FaceSide& side(std::uint32_t face, std::uint32_t edge) const;
 
-  void push(double key, std::uint32_t item);
-  Entry popMin();
+  void pushWindow(std::uint32_t id);
+  std::uint32_t allocateWindow(const Window& w);
+  void releaseWindow(std::uint32_t id);
+  void scheduleClose(std::uint32_t edge, double when);
+  void closeEdgesBefore(double key);
+  double farthestOnEdge(std::uint32_t edge, bool& allPropagated) const;
   void relaxVertex(std::uint32_t v, double distance);
   void closeOverEdges();
   void processVertex(std::uint32_t v, double key);
   void emitFromVertex(std::uint32_t v);
-  void processWindow(std::uint32_t id, double key);
+  void processWindow(std::uint32_t id, double key, std::uint32_t generation);
   void emitChild(const Window& parent, std::uint32_t face, Point2 source, Point2 from, std::uint32_t fromVertex,
                  Point2 to, std::uint32_t edge, const ChildRange& range);
 
@@ -56,6 +97,7 @@ class Propagator {
   void trimAgainst(const Window& incoming, std::uint32_t existing);
   void linkSorted(std::uint32_t id);
   void unlink(std::uint32_t id);
+  std::size_t slotOf(std::uint32_t id) const;
 
   const Surface& surface_;
   ExactOptions options_;
@@ -64,9 +106,20 @@ class Propagator {
   std::vector<double> emittedAt_;
   std::vector<std::uint8_t> emits_;
   std::vector<Window> windows_;
-  std::vector<std::uint32_t> edgeHead_;
-  std::vector<Entry> heap_;
+  std::vector<std::uint32_t> freeSlots_;
+  // Each edge's windows sorted by start, with the start kept beside the index so that finding where
+  // a new window falls is a binary search over contiguous memory.
+  struct EdgeSlot {
+    double b0;
+    std::uint32_t id;
+  };
+  std::vector<std::vector<EdgeSlot>> edgeWindows_;
+  std::vector<std::uint8_t> edgeClosed_;
+  std::vector<std::uint8_t> closeScheduled_;
+  RadixQueue queue_;  // windows and vertices, by distance
+  Queue checks_;  // edges to try closing, by the distance beyond which they may be final
   std::size_t windowCap_ = 0;
+  std::size_t liveWindows_ = 0;
   std::size_t reached_ = 0;  // vertices with a finite distance, for ExactOptions::onReached
   ExactStats stats_;
 
@@ -77,6 +130,7 @@ class Propagator {
   std::vector<Span> lost_;      // parts of the incoming window an existing one keeps
   std::vector<Span> pieces_;    // what is left of a window after subtraction
   std::vector<Span> won_;       // parts of an existing window the incoming one takes
+  std::vector<std::uint32_t> overlapped_;  // existing windows an incoming one overlaps
 };
 
 }  // namespace bake::geodesic::exact

@@ -23,9 +23,11 @@ struct Window {
   double sigma = 0.0;         // distance of the pseudo-source
   std::uint32_t edge = kNone;
   std::uint32_t fromFace = kNone;  // the face the rays came through; they continue into the others
-  std::uint32_t next = kNone;      // next window on the same edge (list sorted by b0)
-  bool alive = true;
-  bool propagated = false;
+  // A window's slot is reused once the window is gone; queue entries carry the generation they were
+  // queued for, so an entry left behind by an earlier occupant is recognised and skipped.
+  std::uint32_t generation : 30 = 0;
+  std::uint32_t alive : 1 = 1;
+  std::uint32_t propagated : 1 = 0;
 
   double distanceAt(double x) const { return sigma + length2d(x - sx, sy); }
   double minDistance() const {
