@@ -37,6 +37,7 @@ Propagator::Propagator(const Surface& surface, const ExactOptions& options)
   edgeWindows_.resize(surface.edgeCount());
   edgeClosed_.assign(surface.edgeCount(), 0);
   closeScheduled_.assign(surface.edgeCount(), 0);
+  farthestPlaced_.assign(surface.edgeCount(), 0.0);
   windowCap_ = 60 * surface.edgeCount() + 1000000;
   buildFaceSides();
   markEmittingVertices();
@@ -420,7 +421,9 @@ void Propagator::insertWindow(Window w) {
     linkSorted(newId);
     pushWindow(newId);
     ++stats_.windowsCreated;
-    scheduleClose(piece.edge, std::max(piece.distanceAt(lo), piece.distanceAt(hi)));
+    farthestPlaced_[piece.edge] =
+        std::max({farthestPlaced_[piece.edge], piece.distanceAt(lo), piece.distanceAt(hi)});
+    scheduleClose(piece.edge, farthestPlaced_[piece.edge]);
   };
   for (const Span& s : lost_) {
     emitPiece(cursor, std::min(s.lo, w.b1));
@@ -517,28 +520,20 @@ void Propagator::unlink(std::uint32_t id) {
 
 namespace bake::geodesic::exact {
 
-// The largest distance any point of the edge has now: windows where they lie (a window's distance is
-// convex, so largest at an end), the paths through the edge's ends in the gaps between them.
-double Propagator::farthestOnEdge(std::uint32_t edge, bool& allPropagated) const {
+// A bound on the largest distance of any point of the edge, kept without looking at its windows:
+// the largest any window placed there ever had (trimming only lowers them), and for the points no
+// window covers, the larger of the two paths through the edge's ends at their worst.
+double Propagator::farthestBoundOnEdge(std::uint32_t edge) const {
   const double length = surface_.edgeLengths[edge];
   const double viaFirst = distance_[surface_.edges[edge][0]];
   const double viaSecond = distance_[surface_.edges[edge][1]];
-  auto gapFarthest = [&](double lo, double hi) {
-    if (hi <= lo) return 0.0;
-    if (viaFirst == kUnreachable && viaSecond == kUnreachable) return kUnreachable;
-    // min(viaFirst + x, viaSecond + length - x) peaks where the two meet.
-    const double x = std::clamp(0.5 * (viaSecond + length - viaFirst), lo, hi);
-    return std::min(viaFirst + x, viaSecond + length - x);
-  };
-  allPropagated = true;
-  double farthest = 0.0, cursor = 0.0;
-  for (const EdgeSlot& slot : edgeWindows_[edge]) {
-    const Window& w = windows_[slot.id];
-    if (!w.propagated) allPropagated = false;
-    farthest = std::max({farthest, gapFarthest(cursor, w.b0), w.distanceAt(w.b0), w.distanceAt(w.b1)});
-    cursor = std::max(cursor, w.b1);
+  double throughEnds = kUnreachable;  // min(viaFirst + x, viaSecond + length - x) at its peak
+  if (viaFirst < kUnreachable && viaSecond < kUnreachable) {
+    throughEnds = 0.5 * (viaFirst + viaSecond + length);
+  } else if (viaFirst < kUnreachable || viaSecond < kUnreachable) {
+    throughEnds = std::min(viaFirst, viaSecond) + length;
   }
-  return std::max(farthest, gapFarthest(cursor, length));
+  return std::max(farthestPlaced_[edge], throughEnds);
 }
 
 void Propagator::scheduleClose(std::uint32_t edge, double when) {
@@ -554,10 +549,12 @@ void Propagator::closeEdgesBefore(double key) {
   const double margin = kRelativeTolerance * surface_.diagonal;
   while (!checks_.empty() && checks_.top().key < key - margin) {
     const std::uint32_t edge = checks_.pop().item;
-    bool allPropagated = false;
-    const double farthest = farthestOnEdge(edge, allPropagated);
-    if (farthest < key - margin && allPropagated) {
-      for (const EdgeSlot& slot : edgeWindows_[edge]) releaseWindow(slot.id);
+    const double farthest = farthestBoundOnEdge(edge);
+    // Every window there was queued at its nearest point, below `key`, so all have been propagated.
+    const auto& slots = edgeWindows_[edge];
+    if (farthest < key - margin &&
+        std::all_of(slots.begin(), slots.end(), [&](const EdgeSlot& slot) { return windows_[slot.id].propagated; })) {
+      for (const EdgeSlot& slot : slots) releaseWindow(slot.id);
       std::vector<EdgeSlot>().swap(edgeWindows_[edge]);
       edgeClosed_[edge] = 1;
       closeScheduled_[edge] = 0;

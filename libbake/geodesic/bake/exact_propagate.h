@@ -83,7 +83,7 @@ class Propagator {
   void releaseWindow(std::uint32_t id);
   void scheduleClose(std::uint32_t edge, double when);
   void closeEdgesBefore(double key);
-  double farthestOnEdge(std::uint32_t edge, bool& allPropagated) const;
+  double farthestBoundOnEdge(std::uint32_t edge) const;
   void relaxVertex(std::uint32_t v, double distance);
   void closeOverEdges();
   void processVertex(std::uint32_t v, double key);
@@ -116,6 +116,7 @@ class Propagator {
   std::vector<std::vector<EdgeSlot>> edgeWindows_;
   std::vector<std::uint8_t> edgeClosed_;
   std::vector<std::uint8_t> closeScheduled_;
+  std::vector<double> farthestPlaced_;  // per edge, the largest distance of any window placed there
   RadixQueue queue_;  // windows and vertices, by distance
   Queue checks_;  // edges to try closing, by the distance beyond which they may be final
   std::size_t windowCap_ = 0;
