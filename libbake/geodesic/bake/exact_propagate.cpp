@@ -34,10 +34,11 @@ Propagator::Propagator(const Surface& surface, const ExactOptions& options)
   distance_.assign(n, kUnreachable);
   emittedAt_.assign(n, kUnreachable);
   emits_.assign(n, 0);
-  edgeWindows_.resize(surface.edgeCount());
-  edgeClosed_.assign(surface.edgeCount(), 0);
-  closeScheduled_.assign(surface.edgeCount(), 0);
-  farthestPlaced_.assign(surface.edgeCount(), 0.0);
+  edges_.resize(surface.edgeCount());
+  for (std::uint32_t e = 0; e < surface.edgeCount(); ++e) {
+    edges_[e].length = surface.edgeLengths[e];
+    edges_[e].ends = surface.edges[e];
+  }
   windowCap_ = 60 * surface.edgeCount() + 1000000;
   buildFaceSides();
   markEmittingVertices();
@@ -52,6 +53,7 @@ void Propagator::buildFaceSides() {
       const std::uint32_t e = te[j];
       const std::uint32_t a = surface_.edges[e][0], b = surface_.edges[e][1];
       FaceSide& s = sides_[3 * f + j];
+      s.face = f;
       s.vertex = tri[(j + 2) % 3];
       // Slot j+1 joins corners j+1 and j+2, slot j+2 joins corners j+2 and j.
       const bool firstIsCornerJ = tri[j] == a;
@@ -66,6 +68,11 @@ void Propagator::buildFaceSides() {
         s.third = {0.0, vec::length(ac)};
       }
     }
+  }
+  for (std::uint32_t e = 0; e < surface_.edgeCount(); ++e) {
+    const auto faces = surface_.facesOfEdge(e);
+    edges_[e].faceCount = static_cast<std::uint8_t>(std::min<std::size_t>(faces.size(), 3));
+    for (std::size_t k = 0; k < faces.size() && k < 2; ++k) edges_[e].sides[k] = side(faces[k], e);
   }
 }
 
@@ -329,7 +336,8 @@ void Propagator::emitFromVertex(std::uint32_t v) {
 void Propagator::processWindow(std::uint32_t id, double key, std::uint32_t generation) {
   const Window w = windows_[id];
   if (w.generation != generation || !w.alive || w.propagated) return;
-  const double length = surface_.edgeLengths[w.edge];
+  const EdgeState& edge = edges_[w.edge];
+  const double length = edge.length;
   const double tolerance = kRelativeTolerance * length;
   const double nearest = w.minDistance();
   if (nearest > key + tolerance) {  // trimmed since it was queued: wait for its real turn
@@ -342,23 +350,36 @@ void Propagator::processWindow(std::uint32_t id, double key, std::uint32_t gener
   ++stats_.windowsPropagated;
   const Point2 source{w.sx, -w.sy};
   const Point2 first{0.0, 0.0}, second{length, 0.0};
-  for (std::uint32_t g : surface_.facesOfEdge(w.edge)) {
-    if (g == w.fromFace) continue;
-    const FaceSide& s = side(g, w.edge);
+  auto crossInto = [&](const FaceSide& s) {
     const FaceCrossing crossing = crossFace(w, length, s.third, tolerance);
     if (crossing.reachesC)
       relaxVertex(s.vertex, w.sigma + length2d(s.third.x - source.x, s.third.y - source.y));
     if (crossing.onAC.valid)
-      emitChild(w, g, source, first, surface_.edges[w.edge][0], s.third, s.edgeToFirst, crossing.onAC);
+      emitChild(w, s.face, source, first, edge.ends[0], s.third, s.edgeToFirst, crossing.onAC);
     if (crossing.onBC.valid)
-      emitChild(w, g, source, second, surface_.edges[w.edge][1], s.third, s.edgeToSecond, crossing.onBC);
+      emitChild(w, s.face, source, second, edge.ends[1], s.third, s.edgeToSecond, crossing.onBC);
+  };
+  if (edge.faceCount <= 2) {
+    const FaceSide* into = nullptr;
+    for (int k = 0; k < edge.faceCount; ++k)
+      if (edge.sides[k].face != w.fromFace) into = &edge.sides[k];
+    if (!into) return;
+    // The children land on these edges and are checked against these ends: fetch them while the
+    // unfolding is computed (the propagation waits on memory more than on arithmetic).
+    __builtin_prefetch(&edges_[into->edgeToFirst]);
+    __builtin_prefetch(&edges_[into->edgeToSecond]);
+    __builtin_prefetch(&distance_[into->vertex]);
+    crossInto(*into);
+    return;
   }
+  for (std::uint32_t g : surface_.facesOfEdge(w.edge))  // a non-manifold edge: into every other face
+    if (g != w.fromFace) crossInto(side(g, w.edge));
 }
 
 void Propagator::emitChild(const Window& parent, std::uint32_t face, Point2 source, Point2 from,
                            std::uint32_t fromVertex, Point2 to, std::uint32_t edge, const ChildRange& range) {
-  const double length = surface_.edgeLengths[edge];
-  const bool forward = surface_.edges[edge][0] == fromVertex;
+  const double length = edges_[edge].length;
+  const bool forward = edges_[edge].ends[0] == fromVertex;
   const Point2 origin = forward ? from : to;
   const Point2 end = forward ? to : from;
   const Point2 s = sourceInFrame(source, origin, end);
@@ -376,22 +397,23 @@ void Propagator::emitChild(const Window& parent, std::uint32_t face, Point2 sour
 bool Propagator::dominatedByEndpoints(const Window& w, double length) const {
   // sigma + |S - p| - x never increases along the edge, so checking the far end suffices.
   const double tolerance = kRelativeTolerance * length;
-  const double viaFirst = distance_[surface_.edges[w.edge][0]];
-  const double viaSecond = distance_[surface_.edges[w.edge][1]];
+  const double viaFirst = distance_[edges_[w.edge].ends[0]];
+  const double viaSecond = distance_[edges_[w.edge].ends[1]];
   return w.distanceAt(w.b1) - w.b1 > viaFirst + tolerance ||
          w.distanceAt(w.b0) - (length - w.b0) > viaSecond + tolerance;
 }
 
 void Propagator::insertWindow(Window w) {
-  const double length = surface_.edgeLengths[w.edge];
+  EdgeState& edge = edges_[w.edge];
+  const double length = edge.length;
   if (!(length > kRelativeTolerance * surface_.diagonal)) return;  // zero-length edge: vertices carry it
-  if (edgeClosed_[w.edge]) return;  // every point there is nearer than any window still to come
+  if (edge.closed) return;  // every point there is nearer than any window still to come
   const double tolerance = kRelativeTolerance * length;
   w.b0 = std::clamp(w.b0, 0.0, length);
   w.b1 = std::clamp(w.b1, w.b0, length);
   if (!std::isfinite(w.sx) || !std::isfinite(w.sy) || !std::isfinite(w.sigma)) return;
-  if (w.b0 <= tolerance) relaxVertex(surface_.edges[w.edge][0], w.distanceAt(0.0));
-  if (w.b1 >= length - tolerance) relaxVertex(surface_.edges[w.edge][1], w.distanceAt(length));
+  if (w.b0 <= tolerance) relaxVertex(edge.ends[0], w.distanceAt(0.0));
+  if (w.b1 >= length - tolerance) relaxVertex(edge.ends[1], w.distanceAt(length));
   if (w.b1 - w.b0 <= tolerance) return;
   if (stats_.windowsCreated + stats_.windowsSplit >= windowCap_) {
     stats_.windowLimitReached = true;
@@ -400,7 +422,7 @@ void Propagator::insertWindow(Window w) {
   if (w.minDistance() > options_.maxDistance || dominatedByEndpoints(w, length)) return;
 
   // The windows it overlaps: from the last one starting at or before it (which may reach into it).
-  const std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  const std::vector<EdgeSlot>& slots = edge.slots;
   std::size_t i = std::upper_bound(slots.begin(), slots.end(), w.b0,
                                    [](double x, const EdgeSlot& slot) { return x < slot.b0; }) -
                   slots.begin();
@@ -421,9 +443,8 @@ void Propagator::insertWindow(Window w) {
     linkSorted(newId);
     pushWindow(newId);
     ++stats_.windowsCreated;
-    farthestPlaced_[piece.edge] =
-        std::max({farthestPlaced_[piece.edge], piece.distanceAt(lo), piece.distanceAt(hi)});
-    scheduleClose(piece.edge, farthestPlaced_[piece.edge]);
+    edge.farthestPlaced = std::max({edge.farthestPlaced, piece.distanceAt(lo), piece.distanceAt(hi)});
+    scheduleClose(piece.edge, edge.farthestPlaced);
   };
   for (const Span& s : lost_) {
     emitPiece(cursor, std::min(s.lo, w.b1));
@@ -432,11 +453,28 @@ void Propagator::insertWindow(Window w) {
   emitPiece(cursor, w.b1);
 }
 
+// Adds [a, b] to spans kept in order, merged with the last one where they touch.
+void Propagator::appendSpan(std::vector<Span>& spans, double a, double b) {
+  if (!spans.empty() && spans.back().hi >= a) {
+    spans.back().hi = std::max(spans.back().hi, b);
+  } else {
+    spans.push_back({a, b});
+  }
+}
+
 void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
   const Window old = windows_[existing];
-  const double length = surface_.edgeLengths[old.edge];
+  const double length = edges_[old.edge].length;
   const double tolerance = kRelativeTolerance * length;
   const double lo = std::max(incoming.b0, old.b0), hi = std::min(incoming.b1, old.b1);
+  // Most overlaps are settled by bounds alone (each distance is convex along the edge: its smallest
+  // value is at the source's foot, its largest at an end), without solving for crossings.
+  auto nearestOn = [lo, hi](const Window& w) { return w.distanceAt(std::clamp(w.sx, lo, hi)); };
+  auto farthestOn = [lo, hi](const Window& w) { return std::max(w.distanceAt(lo), w.distanceAt(hi)); };
+  if (nearestOn(incoming) >= farthestOn(old) - tolerance) {
+    appendSpan(lost_, lo, hi);
+    return;
+  }
   std::array<double, 2> roots{};
   const int rootCount = crossingPoints(incoming, old, lo, hi, roots);
   std::array<double, 4> cuts{lo, 0.0, 0.0, 0.0};
@@ -445,21 +483,14 @@ void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
   cuts[cutCount++] = hi;
 
   won_.clear();
-  auto append = [](std::vector<Span>& spans, double a, double b) {
-    if (!spans.empty() && spans.back().hi >= a) {
-      spans.back().hi = std::max(spans.back().hi, b);
-    } else {
-      spans.push_back({a, b});
-    }
-  };
   for (int i = 0; i + 1 < cutCount; ++i) {
     const double a = cuts[i], b = cuts[i + 1];
     if (b <= a) continue;
     const double mid = 0.5 * (a + b);
     if (incoming.distanceAt(mid) < old.distanceAt(mid) - tolerance) {
-      append(won_, a, b);
+      appendSpan(won_, a, b);
     } else {
-      append(lost_, a, b);
+      appendSpan(lost_, a, b);
     }
   }
   if (won_.empty()) return;
@@ -478,7 +509,7 @@ void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
     return;
   }
   // The first piece stays in place: it starts at or after the old start and before the next window.
-  edgeWindows_[old.edge][slotOf(existing)].b0 = pieces_[0].lo;
+  edges_[old.edge].slots[slotOf(existing)].b0 = pieces_[0].lo;
   windows_[existing].b0 = pieces_[0].lo;
   windows_[existing].b1 = pieces_[0].hi;
   for (std::size_t i = 1; i < pieces_.size(); ++i) {
@@ -494,7 +525,7 @@ void Propagator::trimAgainst(const Window& incoming, std::uint32_t existing) {
 
 std::size_t Propagator::slotOf(std::uint32_t id) const {
   const Window& w = windows_[id];
-  const std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  const std::vector<EdgeSlot>& slots = edges_[w.edge].slots;
   std::size_t i = std::lower_bound(slots.begin(), slots.end(), w.b0,
                                    [](const EdgeSlot& slot, double x) { return slot.b0 < x; }) -
                   slots.begin();
@@ -504,14 +535,14 @@ std::size_t Propagator::slotOf(std::uint32_t id) const {
 
 void Propagator::linkSorted(std::uint32_t id) {
   const Window& w = windows_[id];
-  std::vector<EdgeSlot>& slots = edgeWindows_[w.edge];
+  std::vector<EdgeSlot>& slots = edges_[w.edge].slots;
   const auto at = std::upper_bound(slots.begin(), slots.end(), w.b0,
                                    [](double x, const EdgeSlot& slot) { return x < slot.b0; });
   slots.insert(at, EdgeSlot{w.b0, id});
 }
 
 void Propagator::unlink(std::uint32_t id) {
-  std::vector<EdgeSlot>& slots = edgeWindows_[windows_[id].edge];
+  std::vector<EdgeSlot>& slots = edges_[windows_[id].edge].slots;
   const std::size_t i = slotOf(id);
   if (i < slots.size()) slots.erase(slots.begin() + static_cast<std::ptrdiff_t>(i));
 }
@@ -524,21 +555,22 @@ namespace bake::geodesic::exact {
 // the largest any window placed there ever had (trimming only lowers them), and for the points no
 // window covers, the larger of the two paths through the edge's ends at their worst.
 double Propagator::farthestBoundOnEdge(std::uint32_t edge) const {
-  const double length = surface_.edgeLengths[edge];
-  const double viaFirst = distance_[surface_.edges[edge][0]];
-  const double viaSecond = distance_[surface_.edges[edge][1]];
+  const EdgeState& state = edges_[edge];
+  const double length = state.length;
+  const double viaFirst = distance_[state.ends[0]];
+  const double viaSecond = distance_[state.ends[1]];
   double throughEnds = kUnreachable;  // min(viaFirst + x, viaSecond + length - x) at its peak
   if (viaFirst < kUnreachable && viaSecond < kUnreachable) {
     throughEnds = 0.5 * (viaFirst + viaSecond + length);
   } else if (viaFirst < kUnreachable || viaSecond < kUnreachable) {
     throughEnds = std::min(viaFirst, viaSecond) + length;
   }
-  return std::max(farthestPlaced_[edge], throughEnds);
+  return std::max(state.farthestPlaced, throughEnds);
 }
 
 void Propagator::scheduleClose(std::uint32_t edge, double when) {
-  if (closeScheduled_[edge]) return;
-  closeScheduled_[edge] = 1;
+  if (edges_[edge].closeScheduled) return;
+  edges_[edge].closeScheduled = 1;
   checks_.push({when, edge});
 }
 
@@ -551,17 +583,18 @@ void Propagator::closeEdgesBefore(double key) {
     const std::uint32_t edge = checks_.pop().item;
     const double farthest = farthestBoundOnEdge(edge);
     // Every window there was queued at its nearest point, below `key`, so all have been propagated.
-    const auto& slots = edgeWindows_[edge];
+    EdgeState& state = edges_[edge];
+    const auto& slots = state.slots;
     if (farthest < key - margin &&
         std::all_of(slots.begin(), slots.end(), [&](const EdgeSlot& slot) { return windows_[slot.id].propagated; })) {
       for (const EdgeSlot& slot : slots) releaseWindow(slot.id);
-      std::vector<EdgeSlot>().swap(edgeWindows_[edge]);
-      edgeClosed_[edge] = 1;
-      closeScheduled_[edge] = 0;
+      std::vector<EdgeSlot>().swap(state.slots);
+      state.closed = 1;
+      state.closeScheduled = 0;
     } else if (farthest < kUnreachable) {
       checks_.push({std::max(farthest, key), edge});  // not yet: look again when the front gets there
     } else {
-      closeScheduled_[edge] = 0;  // an end not reached yet: the next window on the edge reschedules
+      state.closeScheduled = 0;  // an end not reached yet: the next window on the edge reschedules
     }
   }
 }

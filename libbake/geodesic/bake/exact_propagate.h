@@ -30,6 +30,7 @@ class Propagator {
   // The face seen from one of its edges: its third corner in that edge's frame and the two other edges.
   struct FaceSide {
     Point2 third;
+    std::uint32_t face = kNone;
     std::uint32_t vertex = kNone;          // the third corner
     std::uint32_t edgeToFirst = kNone;     // edge between the edge's first vertex and the third corner
     std::uint32_t edgeToSecond = kNone;    // edge between the edge's second vertex and the third corner
@@ -74,6 +75,26 @@ class Propagator {
 
   static constexpr std::uint32_t kVertexBit = 0x80000000u;
 
+  // Each edge's windows sorted by start, with the start kept beside the index so that finding where
+  // a new window falls is a binary search over contiguous memory.
+  struct EdgeSlot {
+    double b0;
+    std::uint32_t id;
+  };
+  // What processing and placing windows needs about an edge, together: a window costs a cache line
+  // or two here rather than a miss in each of the surface's arrays. The first line is all that
+  // placing a window reads; the second holds the faces on either side (of at most two).
+  struct alignas(64) EdgeState {
+    double length = 0.0;
+    std::array<std::uint32_t, 2> ends{};
+    double farthestPlaced = 0.0;  // the largest distance of any window placed here
+    std::vector<EdgeSlot> slots;
+    std::uint8_t closed = 0;
+    std::uint8_t closeScheduled = 0;
+    std::uint8_t faceCount = 0;  // 3 stands for three or more: then the surface's lists are used
+    std::array<FaceSide, 2> sides;
+  };
+
   void buildFaceSides();
   void markEmittingVertices();
   const FaceSide& side(std::uint32_t face, std::uint32_t edge) const;
@@ -107,16 +128,7 @@ class Propagator {
   std::vector<std::uint8_t> emits_;
   std::vector<Window> windows_;
   std::vector<std::uint32_t> freeSlots_;
-  // Each edge's windows sorted by start, with the start kept beside the index so that finding where
-  // a new window falls is a binary search over contiguous memory.
-  struct EdgeSlot {
-    double b0;
-    std::uint32_t id;
-  };
-  std::vector<std::vector<EdgeSlot>> edgeWindows_;
-  std::vector<std::uint8_t> edgeClosed_;
-  std::vector<std::uint8_t> closeScheduled_;
-  std::vector<double> farthestPlaced_;  // per edge, the largest distance of any window placed there
+  std::vector<EdgeState> edges_;
   RadixQueue queue_;  // windows and vertices, by distance
   Queue checks_;  // edges to try closing, by the distance beyond which they may be final
   std::size_t windowCap_ = 0;
@@ -128,6 +140,7 @@ class Propagator {
   struct Span {
     double lo, hi;
   };
+  static void appendSpan(std::vector<Span>& spans, double a, double b);
   std::vector<Span> lost_;      // parts of the incoming window an existing one keeps
   std::vector<Span> pieces_;    // what is left of a window after subtraction
   std::vector<Span> won_;       // parts of an existing window the incoming one takes

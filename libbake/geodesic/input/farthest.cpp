@@ -47,6 +47,7 @@ std::vector<std::uint32_t> farthestPointSamples(const Surface& surface, unsigned
   std::int64_t next = farthestVertex(surface, probe);
   while (next >= 0 && chosen.size() < count) {
     chosen.push_back(std::uint32_t(next));
+    if (chosen.size() == count) break;  // the field from the last pick would choose nothing more
     const SurfacePoint source = vertexPoint(surface, std::uint32_t(next));
     foldMinimum(running, fastMarchingDistances(surface, {&source, 1}));
     next = farthestVertex(surface, running);
