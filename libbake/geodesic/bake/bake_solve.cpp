@@ -51,7 +51,10 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
                      {"mollifyEpsilon", h.mollifyEpsilon},
                      {"tuftedEdges", h.tuftedEdges},
                      {"intrinsicSeconds", h.intrinsicSeconds},
-                     {"factorSeconds", h.factorSeconds}};
+                     {"factorSeconds", h.factorSeconds},
+                     {"factorBackwardError", h.factorBackwardError},
+                     {"factorsRedoneWithoutBlas", h.factorsRedoneWithoutBlas},
+                     {"blasOneAtATime", h.blasOneAtATime}};
   }
   stats.setupSeconds = secondsSince(setupStart);
 

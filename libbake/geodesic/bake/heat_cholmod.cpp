@@ -16,12 +16,19 @@
 // parallel, each in its own CHOLMOD workspace, with the BLAS held to one thread: each factor is then computed
 // by one sequential code path, so it does not depend on the thread count (a threaded BLAS splits its sums by
 // its thread count). Solves build a private cholmod_common so that several threads share a factor.
+// A BLAS is trusted only so far: Debian's sequential OpenBLAS (libopenblas0-serial 0.3.21) is not safe to
+// call from two threads at once, and factorising both matrices of a 1.37M-triangle sphere concurrently
+// through it failed as "not positive definite" (one at a time it succeeds). So a sequential OpenBLAS is
+// called from one thread at a time, and every factor is checked by its backward error on a system with a
+// known solution; a factor that fails the check is computed again simplicially, without the BLAS.
 #include "geodesic/bake/heat_cholmod.h"
 
 #include <cholmod.h>
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -73,7 +80,64 @@ void holdBlasToOneThread() {
   if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
 }
 
+// A sequential OpenBLAS keeps unlocked buffers of its own: calls from two threads at once corrupt each
+// other. OpenBLAS says how it was built; other BLAS libraries keep no such state.
+bool blasIsSequentialOpenBlas() {
+  using GetParallel = int (*)();
+  auto get = reinterpret_cast<GetParallel>(dlsym(RTLD_DEFAULT, "openblas_get_parallel"));
+  return get && get() == 0;
+}
+
+using SparseUpper = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// y = A x for the symmetric matrix whose upper triangle is stored.
+std::vector<double> multiplySymmetric(const SparseUpper& upper, const std::vector<double>& x) {
+  std::vector<double> y(x.size(), 0.0);
+  for (int j = 0; j < upper.outerSize(); ++j)
+    for (SparseUpper::InnerIterator it(upper, j); it; ++it) {
+      const auto i = static_cast<std::size_t>(it.row());
+      y[i] += it.value() * x[static_cast<std::size_t>(j)];
+      if (i != static_cast<std::size_t>(j)) y[static_cast<std::size_t>(j)] += it.value() * x[i];
+    }
+  return y;
+}
+
+// Largest absolute row sum of the symmetric matrix (its infinity norm).
+double normInfinity(const SparseUpper& upper) {
+  std::vector<double> rows(static_cast<std::size_t>(upper.rows()), 0.0);
+  for (int j = 0; j < upper.outerSize(); ++j)
+    for (SparseUpper::InnerIterator it(upper, j); it; ++it) {
+      rows[static_cast<std::size_t>(it.row())] += std::fabs(it.value());
+      if (it.row() != j) rows[static_cast<std::size_t>(j)] += std::fabs(it.value());
+    }
+  return rows.empty() ? 0.0 : *std::max_element(rows.begin(), rows.end());
+}
+
+double normInfinity(const std::vector<double>& v) {
+  double largest = 0.0;
+  for (double x : v) largest = std::max(largest, std::fabs(x));
+  return largest;
+}
+
 }  // namespace
+
+// Normwise backward error of the factor on A x = b with b = A t for a fixed t: Cholesky is backward
+// stable, so a sound factor gives a few units of rounding whatever A's conditioning; a corrupted one
+// gives orders of magnitude more. A plain check, independent of how the factor was computed.
+double CholeskyFactor::backwardError(const SparseUpper& upper) const {
+  const std::size_t n = size();
+  std::vector<double> truth(n);
+  for (std::size_t k = 0; k < n; ++k) truth[k] = 1.0 + 0.5 * std::sin(static_cast<double>(k));
+  const std::vector<double> rhs = multiplySymmetric(upper, truth);
+  std::vector<double> x(n);
+  solve(rhs, x);
+  std::vector<double> residual = multiplySymmetric(upper, x);
+  for (std::size_t k = 0; k < n; ++k) residual[k] -= rhs[k];
+  const double scale = normInfinity(upper) * normInfinity(x) + normInfinity(rhs);
+  const double error = normInfinity(residual);
+  if (!std::isfinite(error)) return std::numeric_limits<double>::infinity();
+  return scale > 0.0 ? error / scale : error;
+}
 
 struct CholeskyFactor::Impl {
   Common common;  // owns the factor's memory
@@ -91,7 +155,10 @@ CholeskyFactor::~CholeskyFactor() = default;
 std::size_t CholeskyFactor::size() const { return impl_->factor->n; }
 
 Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
-    std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads) {
+    std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads,
+    FactoriseReport* report) {
+  FactoriseReport local;
+  FactoriseReport& out = report ? *report : local;
   std::vector<CholeskyFactor> factors;
   if (uppers.empty()) return factors;
   Common common = startCommon();
@@ -99,7 +166,8 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   const int supernodal = first.nrow < kSupernodalFromRows ? CHOLMOD_SIMPLICIAL : CHOLMOD_SUPERNODAL;
   common->supernodal = supernodal;
   common->nmethods = 1;
-  common->method[0].ordering = first.nrow < kMetisFromRows ? CHOLMOD_AMD : CHOLMOD_METIS;
+  const int ordering = first.nrow < kMetisFromRows ? CHOLMOD_AMD : CHOLMOD_METIS;
+  common->method[0].ordering = ordering;
   cholmod_factor* symbolic = cholmod_analyze(&first, common.get());
   if (!symbolic) {
     common->method[0].ordering = CHOLMOD_AMD;
@@ -119,8 +187,9 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
   }
   cholmod_free_factor(&symbolic, common.get());
   holdBlasToOneThread();
+  out.oneAtATime = supernodal == CHOLMOD_SUPERNODAL && blasIsSequentialOpenBlas();
   std::vector<int> status(uppers.size(), CHOLMOD_OK);
-  parallelForBlocks(uppers.size(), 1, threads, [&](std::size_t k, std::size_t) {
+  parallelForBlocks(uppers.size(), 1, out.oneAtATime ? 1u : threads, [&](std::size_t k, std::size_t) {
     Impl& impl = *impls[k];
     cholmod_common* c = impl.common.get();
     cholmod_sparse a = viewUpper(*uppers[k]);
@@ -130,12 +199,49 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
                                  /*to_monotonic=*/1, impl.factor, c);
     status[k] = ok && c->status == CHOLMOD_OK ? CHOLMOD_OK : (c->status != CHOLMOD_OK ? c->status : CHOLMOD_INVALID);
   });
+  // Backward errors of a sound factor are about 1e-16; this bound leaves room for rounding on large
+  // meshes and still catches corruption, which shows as 1e-6 and worse.
+  constexpr double kBackwardErrorBound = 1e-10;
   for (std::size_t k = 0; k < uppers.size(); ++k) {
-    if (status[k] != CHOLMOD_OK)
-      return internalError("sparse Cholesky factorisation failed (status " + std::to_string(status[k]) + ")");
-    factors.push_back(CholeskyFactor(std::move(impls[k])));
+    double error = std::numeric_limits<double>::infinity();
+    if (status[k] == CHOLMOD_OK) {
+      CholeskyFactor factor(std::move(impls[k]));
+      error = factor.backwardError(*uppers[k]);
+      if (error <= kBackwardErrorBound) {
+        out.worstBackwardError = std::max(out.worstBackwardError, error);
+        factors.push_back(std::move(factor));
+        continue;
+      }
+    }
+    BAKE_ASSIGN_OR_RETURN(CholeskyFactor redone, factoriseSimplicial(*uppers[k], ordering));
+    ++out.redoneWithoutBlas;
+    error = redone.backwardError(*uppers[k]);
+    if (!(error <= kBackwardErrorBound))
+      return internalError("sparse Cholesky factorisation failed: backward error " + std::to_string(error) +
+                           " even without the BLAS (is the matrix positive definite?)");
+    out.worstBackwardError = std::max(out.worstBackwardError, error);
+    factors.push_back(std::move(redone));
   }
   return factors;
+}
+
+// One matrix alone, simplicial from its own analysis: no dense blocks, so no BLAS call.
+Result<CholeskyFactor> CholeskyFactor::factoriseSimplicial(const SparseUpper& upper, int ordering) {
+  auto impl = std::make_unique<Impl>();
+  impl->common = startCommon();
+  cholmod_common* c = impl->common.get();
+  c->supernodal = CHOLMOD_SIMPLICIAL;
+  c->nmethods = 1;
+  c->method[0].ordering = ordering;
+  cholmod_sparse a = viewUpper(upper);
+  impl->factor = cholmod_analyze(&a, c);
+  if (!impl->factor) {
+    c->method[0].ordering = CHOLMOD_AMD;
+    impl->factor = cholmod_analyze(&a, c);
+  }
+  if (!impl->factor || !cholmod_factorize(&a, impl->factor, c) || c->status != CHOLMOD_OK)
+    return internalError("sparse Cholesky factorisation failed (status " + std::to_string(c->status) + ")");
+  return CholeskyFactor(std::move(impl));
 }
 
 void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution,

@@ -14,13 +14,22 @@
 
 namespace bake::geodesic {
 
+// How a factorisation went past the BLAS it found (for the report).
+struct FactoriseReport {
+  bool oneAtATime = false;           // a sequential OpenBLAS: never called from two threads at once
+  std::size_t redoneWithoutBlas = 0;  // factors whose check failed, computed again without the BLAS
+  double worstBackwardError = 0.0;   // of the factors kept, |A x - b| / (|A| |x| + |b|), max norms
+};
+
 class CholeskyFactor {
  public:
   // Factorises each matrix (upper triangles of symmetric positive definite matrices, all with the
   // same pattern) after one shared analysis, up to `threads` at once (0: all cores); the factors do
-  // not depend on `threads`.
+  // not depend on `threads`. Each factor is checked by solving a system with a known solution; one
+  // that fails (a faulty BLAS) is computed again by the simplicial method, which uses no BLAS.
   static Result<std::vector<CholeskyFactor>> factoriseAll(
-      std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads = 0);
+      std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads = 0,
+      FactoriseReport* report = nullptr);
 
   CholeskyFactor(CholeskyFactor&&) noexcept;
   CholeskyFactor& operator=(CholeskyFactor&&) noexcept;
@@ -33,6 +42,9 @@ class CholeskyFactor {
  private:
   struct Impl;
   explicit CholeskyFactor(std::unique_ptr<Impl> impl);
+  static Result<CholeskyFactor> factoriseSimplicial(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper,
+                                                    int ordering);
+  double backwardError(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper) const;
   std::unique_ptr<Impl> impl_;
 };
 

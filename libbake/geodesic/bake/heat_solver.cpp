@@ -249,7 +249,12 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   });
   const std::array<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>*, 2> matrices{&heatMatrix,
                                                                                           &poissonMatrix};
-  BAKE_ASSIGN_OR_RETURN(std::vector<CholeskyFactor> factors, CholeskyFactor::factoriseAll(matrices, options.threads));
+  FactoriseReport factorising;
+  BAKE_ASSIGN_OR_RETURN(std::vector<CholeskyFactor> factors,
+                        CholeskyFactor::factoriseAll(matrices, options.threads, &factorising));
+  stats.factorBackwardError = factorising.worstBackwardError;
+  stats.factorsRedoneWithoutBlas = factorising.redoneWithoutBlas;
+  stats.blasOneAtATime = factorising.oneAtATime;
   state->heat.emplace(std::move(factors[0]));
   state->poisson.emplace(std::move(factors[1]));
   stats.factorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

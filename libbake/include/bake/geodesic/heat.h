@@ -41,6 +41,12 @@ struct HeatStats {
   double geodesicExtent = 0.0;  // estimated longest geodesic, which bounds the time step from below
   double intrinsicSeconds = 0.0;  // tufted cover, mollification, Delaunay flips, operators
   double factorSeconds = 0.0;     // assembly and sparse Cholesky factorisation of both systems
+  // The factors' check (sparse Cholesky through the BLAS found at run time): the worst backward error
+  // on a system with a known solution, how many failed it and were computed again without the BLAS,
+  // and whether the BLAS, a sequential OpenBLAS, was called from one thread at a time.
+  double factorBackwardError = 0.0;
+  std::size_t factorsRedoneWithoutBlas = 0;
+  bool blasOneAtATime = false;
 };
 
 class HeatSolver {
