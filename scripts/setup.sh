@@ -10,7 +10,7 @@ debian_packages=(
   libopenmesh-dev libcgal-dev libgmp-dev libmpfr-dev
   libopenimageio-dev openimageio-tools libopenexr-dev libdraco-dev libxxhash-dev
   libcli11-dev nlohmann-json3-dev libxml2-dev
-  libeigen3-dev libsuitesparse-dev libzstd-dev
+  libeigen3-dev libsuitesparse-dev libzstd-dev libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   libopencv-dev gnuplot-nox xvfb xauth help2man
