@@ -1,8 +1,10 @@
 // Exact polyhedral geodesic distances by continuous-Dijkstra window propagation (Mitchell, Mount and
 // Papadimitriou 1987, as made practical by Surazhsky et al. 2005, with their endpoint filter: a window
 // that cannot beat a path through an endpoint of its edge is dropped). All sources propagate together,
-// so a combined min-field costs about as much as a single source. Stages: exact_window.cpp (window
-// geometry and unfolding), exact_propagate.cpp (edge lists, trimming, event queue), exact.cpp (entry).
+// so a combined min-field costs about as much as a single source. Edges the front has passed give their
+// windows back, so memory follows the front's band rather than the whole field. Stages:
+// exact_window.cpp (window geometry and unfolding), exact_propagate.cpp (edge lists, trimming, event
+// queue, closing edges), exact.cpp (entry).
 #pragma once
 
 #include <cstddef>

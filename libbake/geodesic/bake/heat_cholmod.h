@@ -18,15 +18,16 @@ namespace bake::geodesic {
 struct FactoriseReport {
   bool oneAtATime = false;           // a sequential OpenBLAS: never called from two threads at once
   std::size_t redoneWithoutBlas = 0;  // factors whose check failed, computed again without the BLAS
-  double worstBackwardError = 0.0;   // of the factors kept, |A x - b| / (|A| |x| + |b|), max norms
+  double worstBackwardError = 0.0;   // of the factors checked, |A x - b| / (|A| |x| + |b|), max norms
 };
 
 class CholeskyFactor {
  public:
   // Factorises each matrix (upper triangles of symmetric positive definite matrices, all with the
   // same pattern) after one shared analysis, up to `threads` at once (0: all cores); the factors do
-  // not depend on `threads`. Each factor is checked by solving a system with a known solution; one
-  // that fails (a faulty BLAS) is computed again by the simplicial method, which uses no BLAS.
+  // not depend on `threads`. Each factor that went through the BLAS (supernodal) is checked by solving
+  // a system with a known solution; one that fails (a faulty BLAS) is computed again by the simplicial
+  // method, which uses no BLAS.
   static Result<std::vector<CholeskyFactor>> factoriseAll(
       std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads = 0,
       FactoriseReport* report = nullptr);

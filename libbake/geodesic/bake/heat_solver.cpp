@@ -224,15 +224,22 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   if (surface.triangleCount() == 0) return HeatSolver(std::move(state));
 
   const auto intrinsicStart = std::chrono::steady_clock::now();
-  IntrinsicBuildStats intrinsic;
-  IntrinsicTriangulation mesh = buildTuftedCover(surface, intrinsic);
   const double h = surface.meanEdgeLength > 0.0 ? surface.meanEdgeLength : 1.0;
-  stats.mollifyEpsilon = mollify(mesh, options.mollifyFactor * h);
-  stats.edgeFlips = flipToDelaunay(mesh);
-  stats.tuftedEdges = intrinsic.nonManifoldEdges;
-  stats.doubledCover = intrinsic.doubled;
-  state->ops = buildHeatOperators(mesh, surface.vertexCount());
-  stats.geodesicExtent = estimateGeodesicExtent(surface);
+  // The intrinsic operators and the extent estimate (two edge-path sweeps, for the time step) only
+  // read the surface: they run side by side.
+  parallelForBlocks(2, 1, options.threads, [&](std::size_t k, std::size_t) {
+    if (k == 1) {
+      stats.geodesicExtent = estimateGeodesicExtent(surface);
+      return;
+    }
+    IntrinsicBuildStats intrinsic;
+    IntrinsicTriangulation mesh = buildTuftedCover(surface, intrinsic);
+    stats.mollifyEpsilon = mollify(mesh, options.mollifyFactor * h);
+    stats.edgeFlips = flipToDelaunay(mesh);
+    stats.tuftedEdges = intrinsic.nonManifoldEdges;
+    stats.doubledCover = intrinsic.doubled;
+    state->ops = buildHeatOperators(mesh, surface.vertexCount());
+  });
   stats.timeStep = heatTimeStep(h, stats.geodesicExtent, options.timeFactor);
   stats.intrinsicSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - intrinsicStart).count();
 
