@@ -241,6 +241,29 @@ TEST(GeodesicExact, OtherComponentsAreUnreachableAndMaxDistanceStops) {
   }
 }
 
+TEST(GeodesicExact, WindowLimitIsReportedAndLeavesUpperBounds) {
+  // Cut short after a few windows, the propagation must say so, and what it returns must still be
+  // path lengths: never below the exact distance, finite wherever a path exists.
+  const Surface s = jitteredGrid(12, 0.3);
+  const std::vector<SurfacePoint> source{atVertex(s, 0)};
+  ExactStats full;
+  const auto exact = exactDistances(s, source, {}, &full);
+  EXPECT_FALSE(full.windowLimitReached);
+  ExactOptions options;
+  options.maxWindows = 20;
+  ExactStats limited;
+  const auto bounds = exactDistances(s, source, options, &limited);
+  EXPECT_TRUE(limited.windowLimitReached);
+  EXPECT_LE(limited.windowsCreated + limited.windowsSplit, 20u);
+  std::size_t above = 0;
+  for (std::uint32_t v = 0; v < s.vertexCount(); ++v) {
+    ASSERT_TRUE(std::isfinite(bounds[v])) << v;
+    EXPECT_GE(bounds[v], exact[v] - 1e-12) << v;
+    if (bounds[v] > exact[v] + 1e-9) ++above;
+  }
+  EXPECT_GT(above, 0u);  // the limit did cut something short
+}
+
 TEST(GeodesicExact, ZeroAreaFacePassesWindowsThrough) {
   // A flat grid whose middle cell holds a sliver: vertex m sits on the segment a-b.
   const Surface base = jitteredGrid(8, 0.0);

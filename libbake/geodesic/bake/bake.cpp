@@ -110,6 +110,11 @@ Status bake(const Settings& settings, BakeSession& session) {
   BAKE_ASSIGN_OR_RETURN(distances, solveFields(build.surface, fields, settings, solveStats));
   if (settings.method == Method::Heat) report.addStage("factorise", solveStats.setupSeconds);
   report.addStage("solve", solveStats.fieldSeconds);
+  if (solveStats.fieldsAtWindowLimit > 0)
+    diagnostics.warning("window-limit", std::to_string(solveStats.fieldsAtWindowLimit) + " of " +
+                                            std::to_string(fields.size()) +
+                                            " exact fields stopped at the window limit: their distances are "
+                                            "upper bounds (window and edge paths), not exact");
 
   std::vector<FieldError> errors;
   if (settings.verifySamples > 0) {

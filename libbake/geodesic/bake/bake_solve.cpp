@@ -92,10 +92,12 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
       total.windowsPropagated += s.windowsPropagated;
       total.pseudoSources += s.pseudoSources;
       total.windowsPeak = std::max(total.windowsPeak, s.windowsPeak);
+      if (s.windowLimitReached) ++stats.fieldsAtWindowLimit;
     }
     stats.details = {{"windowsCreated", total.windowsCreated},
                      {"windowsPropagated", total.windowsPropagated},
                      {"windowsPeak", total.windowsPeak},
+                     {"fieldsAtWindowLimit", stats.fieldsAtWindowLimit},
                      {"pseudoSources", total.pseudoSources}};
   }
   for (std::size_t f = 0; f < fields.size(); ++f)

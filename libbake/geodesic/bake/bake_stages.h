@@ -36,6 +36,7 @@ Result<std::vector<ResolvedField>> resolveFields(const Settings& settings, const
 struct SolveStats {
   double setupSeconds = 0.0;  // heat: intrinsic triangulation and factorisation
   double fieldSeconds = 0.0;  // all fields
+  std::size_t fieldsAtWindowLimit = 0;  // exact fields that stopped at the window limit (upper bounds)
   nlohmann::json details = nlohmann::json::object();
 };
 

@@ -23,6 +23,10 @@ struct ExactOptions {
   // Told now and then (every 16384 queue events, and at the end) how many vertices the front has
   // reached, for a progress bar; never changes the result.
   std::function<void(std::size_t reached)> onReached;
+  // Safety limit on the windows made (new and split pieces), 0 for the default of 400 per edge plus
+  // 10^6: it keeps pathological input finite in time (memory follows the front, not this limit). The
+  // 454k-triangle pretzel, full of marching-tetrahedra slivers, needs 53 per edge.
+  std::size_t maxWindows = 0;
 };
 
 struct ExactStats {
@@ -31,8 +35,8 @@ struct ExactStats {
   std::size_t windowsSplit = 0;   // extra pieces when a new window cut an existing one in two
   std::size_t windowsPeak = 0;    // most windows held at once (edges behind the front release theirs)
   std::size_t pseudoSources = 0;  // saddle and boundary vertices that re-emitted
-  // The safety limit on windows (60 per edge + 10^6) was reached: the distances are then upper bounds
-  // (windows plus edge paths) rather than exact. Never seen on real meshes; it keeps bad input finite.
+  // ExactOptions::maxWindows was reached: the distances are then upper bounds (windows plus
+  // edge paths) rather than exact. geobake warns (window-limit) and counts such fields in its report.
   bool windowLimitReached = false;
 };
 

@@ -39,7 +39,7 @@ Propagator::Propagator(const Surface& surface, const ExactOptions& options)
     edges_[e].length = surface.edgeLengths[e];
     edges_[e].ends = surface.edges[e];
   }
-  windowCap_ = 60 * surface.edgeCount() + 1000000;
+  windowCap_ = options.maxWindows > 0 ? options.maxWindows : 400 * surface.edgeCount() + 1000000;
   buildFaceSides();
   markEmittingVertices();
 }
