@@ -18,8 +18,8 @@
 // by one sequential code path, so it does not depend on the thread count (a threaded BLAS splits its sums by
 // its thread count). Solves build a private cholmod_common so that several threads share a factor.
 // A BLAS is trusted only so far: Debian's sequential OpenBLAS (libopenblas0-serial 0.3.21) is not safe to
-// call from two threads at once, and factorising both matrices of a 1.37M-triangle sphere concurrently
-// through it failed as "not positive definite" (one at a time it succeeds). So a sequential OpenBLAS is
+// call from two threads at once: factorising both matrices of 0.8M- and 2M-triangle spheres concurrently
+// through it failed as "not positive definite" (one at a time they succeed). So a sequential OpenBLAS is
 // called from one thread at a time, and every factor is checked by its backward error on a system with a
 // known solution; a factor that fails the check is computed again simplicially, without the BLAS.
 #include "geodesic/bake/heat_cholmod.h"
