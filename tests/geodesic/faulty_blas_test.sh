@@ -4,8 +4,9 @@
 # spoils its results (faulty_blas.c, through LD_PRELOAD): grossly (the factorisation fails) and subtly
 # (it succeeds with a wrong factor). Each faulty run must notice both factors, compute them again
 # without the BLAS (factorsRedoneWithoutBlas = 2) and bake the same field.
-# Arguments: TOOLS_DIR SOURCE_DIR TMP_DIR FAULTY_BLAS_LIBRARY. Exit 77 (skipped) under a sanitizer,
-# whose runtime must come first among preloaded libraries.
+# Arguments: TOOLS_DIR SOURCE_DIR TMP_DIR FAULTY_BLAS_LIBRARY. Exit 77 (skipped) when the tools load a
+# sanitizer runtime as a shared library, which must come first among preloaded libraries (clang links
+# its runtime statically, so the ASan + UBSan stage does run this test).
 set -euo pipefail
 source "$(dirname "$0")/../pipeline/script_support.sh"
 faulty="$(cd "$(dirname "$4")" && pwd)/$(basename "$4")"

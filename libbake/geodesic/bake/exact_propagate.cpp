@@ -210,7 +210,6 @@ std::uint32_t Propagator::allocateWindow(const Window& w) {
 // The window must already be off its edge's list.
 void Propagator::releaseWindow(std::uint32_t id) {
   Window& w = windows_[id];
-  w.alive = 0;
   w.generation = w.generation + 1;
   freeSlots_.push_back(id);
   --liveWindows_;
@@ -335,7 +334,7 @@ void Propagator::emitFromVertex(std::uint32_t v) {
 
 void Propagator::processWindow(std::uint32_t id, double key, std::uint32_t generation) {
   const Window w = windows_[id];
-  if (w.generation != generation || !w.alive || w.propagated) return;
+  if (w.generation != generation || w.propagated) return;
   const EdgeState& edge = edges_[w.edge];
   const double length = edge.length;
   const double tolerance = kRelativeTolerance * length;

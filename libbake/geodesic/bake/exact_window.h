@@ -23,10 +23,10 @@ struct Window {
   double sigma = 0.0;         // distance of the pseudo-source
   std::uint32_t edge = kNone;
   std::uint32_t fromFace = kNone;  // the face the rays came through; they continue into the others
-  // A window's slot is reused once the window is gone; queue entries carry the generation they were
-  // queued for, so an entry left behind by an earlier occupant is recognised and skipped.
-  std::uint32_t generation : 30 = 0;
-  std::uint32_t alive : 1 = 1;
+  // A window's slot is reused once the window is gone (trimmed away or its edge closed); releasing
+  // bumps the generation, and queue entries carry the generation they were queued for, so an entry
+  // left behind by an earlier occupant is recognised and skipped.
+  std::uint32_t generation : 31 = 0;
   std::uint32_t propagated : 1 = 0;
 
   double distanceAt(double x) const { return sigma + length2d(x - sx, sy); }
