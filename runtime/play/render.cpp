@@ -191,6 +191,7 @@ Result<RendererRegistry> renderersFor(const ViewSettings& view) {
     return usageError("--groove-reflections must be traced or environment, not '" + view.grooveReflections + "'");
   GroovesOptions grooves;
   grooves.areaReflections = view.grooveReflections == "traced";
+  grooves.retryDraws = view.grooveRetries;
   registry.add(format::grooves::kExtension, [grooves] { return std::make_unique<GroovesRenderer>(grooves); });
   if (!view.environmentMap.empty()) {
     BAKE_ASSIGN_OR_RETURN(Image image, readImage(view.environmentMap));

@@ -4,6 +4,7 @@
 // scene drawn with standard shading too.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct ViewSettings {
   // Grooves: "environment" (a mirror piece in area-sampled footprints reflects the environment only:
   // the cheaper model) or "traced" (its bounces followed as beams, seed 000 §7, as the CPU method).
   std::string grooveReflections = "environment";
+  // Grooves: the most retry draws per frame for area samples a driver's loop cap cut short
+  // (GroovesOptions::retryDraws).
+  std::uint32_t grooveRetries = 2048;
   // GeoTextures' wave preset: an equirectangular environment image reflected by the displaced
   // surface (seed 003 C.6.4); empty: none.
   std::string environmentMap;

@@ -40,19 +40,26 @@ constexpr std::size_t kAreaSlots = 512, kAreaSlotFloats = 20480;
 // for want of a slot, line sampled because a driver's loop cap cut the area sample short.
 // The fourth: cut short in the first pass and shaded again in a retry pass (counted there too).
 constexpr std::size_t kAreaCountsOffset = kAreaSlots * sizeof(std::uint32_t), kAreaCounts = 4;
-// The retry buffer of shaders/grooves/area_retry.glsl (std430): kRetryList vec4 sums, two list
-// lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short by
-// a driver's loop cap are shaded again one draw each, scissored to the pixel, and those cut short
-// again beam by beam (one draw per beam of the eye's mirror pieces, kAreaEyeBeams of them at most),
-// over the whole footprint, then by quarters, sixteenths and sixty-fourths of it where a part was cut
-// short again (kAreaMaxSplitLevel, the CPU's deepest split too); without traced beams, whole parts from
-// quarters on.
+// The retry buffer of shaders/grooves/area_retry.glsl (std430): per node of the parts' quadtree of
+// each pixel of the second list, a vec4 (kRetryNodes per pixel, kRetryList pixels), two list
+// lengths, two lists of kRetryList pixels, then one mark per pixel of the target. Pixels cut short
+// by a driver's loop cap are shaded again one draw each, scissored to the pixel; those cut short
+// again are shaded by nodes of the quadtree of their footprint (down to sixty-fourths,
+// kAreaMaxSplitLevel, the CPU's deepest split too), only the children of nodes cut short, each node
+// beam by beam (kAreaEyeBeams draws, the most beams of the eye's mirror pieces) or, without traced
+// beams, whole and from quarters on; then a last draw per pixel sums its leaves.
 constexpr GLuint kAreaRetryBinding = fmt::kAreaRetryBinding;
+constexpr int kAreaMaxSplitLevel = 3, kAreaEyeBeams = 6;
 constexpr std::size_t kRetryList = 4096;
-constexpr std::size_t kRetryCountsOffset = kRetryList * 4 * sizeof(float);
+constexpr std::size_t kRetryNodes = ((std::size_t(1) << (2 * (kAreaMaxSplitLevel + 1))) - 1) / 3;  // 85
+constexpr std::size_t kRetryCountsOffset = kRetryList * kRetryNodes * 4 * sizeof(float);
 constexpr std::size_t kRetryListOffset = kRetryCountsOffset + 2 * sizeof(std::uint32_t);
 constexpr std::size_t kRetryMaskOffset = kRetryListOffset + 2 * kRetryList * sizeof(std::uint32_t);
-constexpr int kAreaMaxSplitLevel = 3, kAreaEyeBeams = 6;
+// Where a level's nodes start among the vec4 (area_retry.glsl retryNode): level by level, each
+// level pixel by pixel.
+constexpr std::size_t retryLevelStart(int level) {
+  return ((std::size_t(1) << (2 * level)) - 1) / 3 * kRetryList;
+}
 
 // The std140 GrooveHeader block of shaders/grooves/package.glsl.
 struct HeaderBlock {
@@ -114,6 +121,7 @@ std::vector<std::string> packageDefines(const grooves::GroovePackage& p, bool ar
     defines.push_back("HAS_AREA_SAMPLING");
     defines.push_back("AREA_SLOTS " + std::to_string(kAreaSlots));
     defines.push_back("AREA_RETRY_LIST " + std::to_string(kRetryList));
+    defines.push_back("AREA_RETRY_NODES " + std::to_string(kRetryNodes));
     defines.push_back("AREA_MAX_SPLIT_LEVEL " + std::to_string(kAreaMaxSplitLevel));
     defines.push_back("AREA_EYE_BEAMS " + std::to_string(kAreaEyeBeams));
     if (mirrors && areaReflections) defines.push_back("AREA_REFLECTIONS");
@@ -269,6 +277,7 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaPart"), retry.part);
     glProgramUniform1i(program, glGetUniformLocation(program, "uAreaBeam"), retry.beam);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetrySlot"), retry.slot);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uRetryRootLevel"), retry.rootLevel);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryDraw"), number);
     glProgramUniform1i(program, glGetUniformLocation(program, "uRetryStride"), std::max(frame.width, 1));
     glProgramUniform1i(program, glGetUniformLocation(program, "uForceRetries"), options_.forceRetries);
@@ -284,7 +293,8 @@ void GroovesRenderer::drawItem(const Item& item, const FrameContext& frame, int 
   item.mesh.draw();
 }
 
-// The pixels of list `list` (0: shade again whole, 1: by quarters) as (x, y).
+// The pixels of list `list` (0: shade again whole, 1: by parts) as (x, y), in the list's order (the
+// slots of list 1).
 std::vector<std::array<int, 2>> GroovesRenderer::retryList(int list) const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::uint32_t count = 0;
@@ -299,32 +309,85 @@ std::vector<std::array<int, 2>> GroovesRenderer::retryList(int list) const {
   return pixels;
 }
 
+// The slots of `pixels` in raster order, so that which pixels the draw budget reaches does not
+// depend on the order the shader listed them in (threads race for the list).
+std::vector<std::size_t> rasterOrder(const std::vector<std::array<int, 2>>& pixels) {
+  std::vector<std::size_t> order(pixels.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::array{pixels[a][1], pixels[a][0]} < std::array{pixels[b][1], pixels[b][0]};
+  });
+  return order;
+}
+
 // Every item that samples by area, drawn again for one retry pass, scissored to its pixel; each pass
-// sees the marks and sums of the ones before.
-void GroovesRenderer::drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry) {
+// sees the marks and sums of the ones before. False, drawing nothing, once the frame's retry draws
+// are spent (the sum passes are not counted: one per pixel listed by parts).
+bool GroovesRenderer::drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry) {
+  if (retry.kind != 3 && retryDrawsSpent_ >= options_.retryDraws) return false;
+  if (retry.kind != 3) ++retryDrawsSpent_;
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glScissor(pixel[0], pixel[1], 1, 1);
   ++retryPasses_;
   for (std::size_t i = 0; i < items_.size(); ++i)
     if (items_[i].areaSampling) drawItem(items_[i], frame, int(i) + 1, retry);
+  return true;
 }
 
-// The retry slots among `slots` where a part of the pixel was cut short again (its sum's w,
-// area_retry.glsl), from one read of the first `count` sums.
-std::vector<std::size_t> GroovesRenderer::failedParts(const std::vector<std::size_t>& slots, std::size_t count) const {
-  std::vector<float> sums(4 * count);
+// The children of the nodes at `level` (of the pixels in the second list, `pixels` of them) that a
+// draw cut short (their w, area_retry.glsl), from one read of the level's nodes.
+std::vector<GroovesRenderer::RetryNode> GroovesRenderer::childrenOfCutNodes(int level, const std::vector<RetryNode>& nodes,
+                                                                            std::size_t pixels) const {
+  std::vector<float> sums(4 * (pixels << (2 * level)));
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(areaRetry_, 0, GLsizeiptr(sums.size() * sizeof(float)), sums.data());
-  std::vector<std::size_t> failed;
-  for (const std::size_t slot : slots)
-    if (sums[4 * slot + 3] > 0) failed.push_back(slot);
-  return failed;
+  glGetNamedBufferSubData(areaRetry_, GLintptr(retryLevelStart(level) * 4 * sizeof(float)),
+                          GLsizeiptr(sums.size() * sizeof(float)), sums.data());
+  std::vector<RetryNode> children;
+  const int side = 1 << level;
+  for (const RetryNode& node : nodes) {
+    if (sums[4 * ((node.slot << (2 * level)) + std::size_t(node.part)) + 3] == 0) continue;
+    const int x = node.part % side, y = node.part / side;
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) children.push_back({node.slot, (2 * y + dy) * 2 * side + 2 * x + dx});
+  }
+  return children;
 }
 
-// The pixels the first pass listed, shaded again one at a time, then those listed again beam by
-// beam: the whole footprint, then quarters, sixteenths and sixty-fourths for the pixels where a part
-// was cut short again. Depth is tested (LEQUAL: the same fragments as the first pass) but not
-// written.
+// The pixels listed again by the whole retries, shaded by nodes of their footprint's quadtree: the
+// root level, then the children of each node cut short, level by level; then the sum pass of every
+// pixel whose nodes were all drawn. A node is drawn beam by beam (with traced beams) or whole.
+void GroovesRenderer::drawRetriesByParts(const FrameContext& frame, const std::vector<std::array<int, 2>>& pixels) {
+  const float zero = 0.0f;
+  glClearNamedBufferSubData(areaRetry_, GL_R32F, 0, GLintptr(kRetryCountsOffset), GL_RED, GL_FLOAT, &zero);
+  const bool byBeams = options_.areaReflections;
+  const int beams = byBeams ? kAreaEyeBeams : 1;
+  // Without traced beams there is nothing to take one by one: whole nodes, from quarters on.
+  const int root = byBeams ? 0 : 1;
+  std::vector<RetryNode> nodes;
+  for (const std::size_t slot : rasterOrder(pixels))
+    for (int part = 0; part < 1 << (2 * root); ++part) nodes.push_back({slot, part});
+  std::vector<bool> unfinished(pixels.size(), false);
+  for (int level = root; !nodes.empty(); ++level) {
+    for (const RetryNode& node : nodes)
+      for (int beam = 0; beam < beams; ++beam)
+        if (!drawRetryPass(frame, pixels[node.slot], {2, level, node.part, int(node.slot), byBeams ? beam : -1, root}))
+          unfinished[node.slot] = true;
+    if (level == kAreaMaxSplitLevel) break;
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    nodes = childrenOfCutNodes(level, nodes, pixels.size());
+    std::vector<bool> again(pixels.size(), false);
+    for (const RetryNode& node : nodes) again[node.slot] = true;
+    retriedByParts_ += std::uint32_t(std::count(again.begin(), again.end(), true));
+  }
+  for (const std::size_t slot : rasterOrder(pixels)) {
+    if (!unfinished[slot]) drawRetryPass(frame, pixels[slot], {3, 0, 0, int(slot), -1, root});
+    else ++retriesUnfinished_;  // keeps the line sample of its whole retry
+  }
+}
+
+// The pixels the first pass listed, shaded again one at a time, then those listed again by parts;
+// up to the frame's retry draws (GroovesOptions::retryDraws), in raster order. Depth is tested
+// (LEQUAL: the same fragments as the first pass) but not written.
 void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   const std::vector<std::array<int, 2>> whole = retryList(0);
   if (whole.empty()) return;
@@ -337,19 +400,10 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   glEnable(GL_SCISSOR_TEST);
-  for (const auto& pixel : whole) drawRetryPass(frame, pixel, {1, 1, 0, 0});
+  for (const std::size_t k : rasterOrder(whole))
+    if (!drawRetryPass(frame, whole[k], {1, 1, 0, 0})) ++retriesUnfinished_;  // keeps its first line sample
   const std::vector<std::array<int, 2>> byParts = retryList(1);
-  std::vector<std::size_t> pending(byParts.size());
-  for (std::size_t slot = 0; slot < pending.size(); ++slot) pending[slot] = slot;
-  // Without traced beams there is nothing to take one by one: whole parts, from quarters on.
-  const bool byBeams = options_.areaReflections;
-  for (int level = byBeams ? 0 : 1; level <= kAreaMaxSplitLevel && !pending.empty(); ++level) {
-    for (const std::size_t slot : pending)
-      for (int part = 0; part < 1 << (2 * level); ++part)
-        for (int beam = 0; beam < (byBeams ? kAreaEyeBeams : 1); ++beam)
-          drawRetryPass(frame, byParts[slot], {2, level, part, int(slot), byBeams ? beam : -1});
-    pending = failedParts(pending, byParts.size());
-  }
+  if (!byParts.empty()) drawRetriesByParts(frame, byParts);
   glDepthFunc(GLenum(depthFunc));
   glDepthMask(depthMask);
   glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
@@ -358,6 +412,9 @@ void GroovesRenderer::drawRetryPasses(const FrameContext& frame) {
 
 void GroovesRenderer::draw(const FrameContext& frame) {
   retryPasses_ = 0;
+  retriedByParts_ = 0;
+  retriesUnfinished_ = 0;
+  retryDrawsSpent_ = 0;
   if (frameCounts_ != 0) {
     const std::uint32_t zero = 0;
     glClearNamedBufferData(frameCounts_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -393,11 +450,14 @@ nlohmann::json GroovesRenderer::statistics() const {
     glGetNamedBufferSubData(buffer, GLintptr(kAreaCountsOffset), sizeof own, own);
     for (std::size_t k = 0; k < kAreaCounts; ++k) counts[k] += own[k];
   }
-  s["grooveAreaFragments"] = counts[0] + counts[1] + counts[2];
+  // A listed pixel the retry draws did not finish was counted as deferred by the pass that listed
+  // it; its outcome is its line sample.
+  s["grooveAreaFragments"] = counts[0] + counts[1] + counts[2] + retriesUnfinished_;
   s["grooveAreaLineSampledNoSlot"] = counts[1];
-  s["grooveAreaLineSampledLoopCap"] = counts[2];
-  s["grooveAreaRetried"] = counts[3];
+  s["grooveAreaLineSampledLoopCap"] = counts[2] + retriesUnfinished_;
+  s["grooveAreaRetried"] = counts[3] + retriedByParts_;
   s["grooveAreaRetryPasses"] = retryPasses_;
+  s["grooveAreaRetriesUnfinished"] = retriesUnfinished_;
   s["grooveAreaArenas"] = areaScratch_.size();
   return s;
 }
@@ -425,7 +485,12 @@ std::vector<std::string> GroovesRenderer::warnings() const {
                 " special-case fragments of the last frame were line sampled instead of sampled by area (" +
                 std::to_string(noSlot) + " found no free scratch slot, " + std::to_string(loopCap) +
                 " were cut short by the driver's cap on loop iterations, as llvmpipe has, and not finished by the "
-                "retry passes)");
+                "retry passes" +
+                (s["grooveAreaRetriesUnfinished"].get<std::uint32_t>() > 0
+                     ? ", " + s["grooveAreaRetriesUnfinished"].dump() + " of them for want of retry draws (--groove-retries " +
+                           std::to_string(options_.retryDraws) + ")"
+                     : std::string()) +
+                ")");
   return out;
 }
 

@@ -34,9 +34,13 @@ struct GroovesOptions {
   bool areaReflections = false;
   // Tests: area samples taken as cut short by a loop cap whatever the driver, so that the retry
   // passes run: 1 in the first pass (shaded again whole), 2 also in the whole-footprint retry passes
-  // (shaded again beam by beam), 3 also in the beam-by-beam passes of whole footprints (shaded again
-  // beam by beam by quarters).
+  // (shaded again by parts), 3 also in the passes of the whole footprint by parts (shaded again by
+  // quarters), 4 as 2 and by parts in node 0 of each level but the deepest (leaves of every level).
   int forceRetries = 0;
+  // The most retry draws per frame (each shades one pixel again, alone or one part of it; a pixel
+  // still cut short when they run out is line sampled, counted in the warning). On llvmpipe a draw
+  // that runs into its loop cap costs a few milliseconds: dense packages list thousands of pixels.
+  std::uint32_t retryDraws = 2048;
 };
 
 // The loader checks are libbake's (grooves/package/package.h).
@@ -69,6 +73,9 @@ class GroovesRenderer : public TechniqueRenderer {
   unsigned areaRetry_ = 0;  // retry lists, sums and per-pixel marks (shaders/grooves/area_retry.glsl)
   std::size_t retryBytes_ = 0;
   std::uint32_t retryPasses_ = 0;  // of the last frame
+  std::uint32_t retriedByParts_ = 0;  // of the last frame: pixels shaded again by smaller parts
+  std::uint32_t retriesUnfinished_ = 0;  // of the last frame: listed pixels left line sampled (no draws left)
+  std::uint32_t retryDrawsSpent_ = 0;    // of the last frame, against GroovesOptions::retryDraws
   // The shader's per-frame counts (far_level.glsl): fragments shaded from the far level, over more
   // primitives than it holds without a far level (a version 1 package: the rest dropped), and with
   // more classes of grooves than it keeps (the rest dropped).
@@ -86,15 +93,23 @@ class GroovesRenderer : public TechniqueRenderer {
     bool areaSampling = false;  // its variant samples special cases by area (and retries)
     unsigned areaScratch = 0;   // then its arena
   };
-  // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaPartLevel, uAreaPart, uRetrySlot).
+  // Which pass a draw belongs to (area_retry.glsl uAreaRetry, uAreaPartLevel, uAreaPart, uRetrySlot,
+  // uAreaBeam, uRetryRootLevel).
   struct RetryPass {
-    int kind = 0, level = 1, part = 0, slot = 0, beam = -1;
+    int kind = 0, level = 1, part = 0, slot = 0, beam = -1, rootLevel = 0;
+  };
+  // A node of the quadtree of parts of a footprint shaded again by parts: the pixel's place in the
+  // second list, the part (row-major at its level).
+  struct RetryNode {
+    std::size_t slot = 0;
+    int part = 0;
   };
   void drawItem(const Item& item, const FrameContext& frame, int number, const RetryPass& retry) const;
   std::vector<std::array<int, 2>> retryList(int list) const;
-  void drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry);
+  bool drawRetryPass(const FrameContext& frame, std::array<int, 2> pixel, const RetryPass& retry);
   void drawRetryPasses(const FrameContext& frame);
-  std::vector<std::size_t> failedParts(const std::vector<std::size_t>& slots, std::size_t count) const;
+  void drawRetriesByParts(const FrameContext& frame, const std::vector<std::array<int, 2>>& pixels);
+  std::vector<RetryNode> childrenOfCutNodes(int level, const std::vector<RetryNode>& nodes, std::size_t pixels) const;
   GroovesOptions options_;
   std::vector<Upload> uploads_;
   std::vector<Item> items_;

@@ -92,7 +92,7 @@ void main() {
   if (toViewer.z > 0.0) radiance = shadeFootprint(centre, axis1, axis2, toViewer);  // the back side: black
 #ifdef HAS_AREA_SAMPLING
   markForRetry(gAreaDeferred);
-  if (isQuarterPass() && !isLastPart()) discard;  // a share, summed in the retry buffer: no output yet
+  if (isQuarterPass()) discard;  // a share, summed in the retry buffer: the sum pass writes the pixel
 #endif
   fragColor = vec4(radiance, 1.0);
 #ifdef SHADING_INPUTS

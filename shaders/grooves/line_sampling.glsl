@@ -262,34 +262,47 @@ vec3 shadeFootprint(vec2 centre, vec2 axis1, vec2 axis2, vec3 toViewer) {
   // split's loops would leave the area sample fewer iterations under such a cap).
   bool split = !gFarMode && !gSpecialCase && nearArcCentre(axis1, axis2);
   gClassesDropped = false;
+#ifdef HAS_AREA_SAMPLING
+  // A retry by parts adds an area share and writes no pixel: no line sample (its loops would count
+  // against the driver's cap too).
+  vec3 lineSampled = isQuarterPass() ? flatBase : lineSampleParts(centre, axis1, axis2, toViewer, flatBase, split);
+#else
   vec3 lineSampled = lineSampleParts(centre, axis1, axis2, toViewer, flatBase, split);
+#endif
   if (gClassesDropped) countFirstPassFragment(kCountClassesDropped);
 #ifdef HAS_AREA_SAMPLING
   gAreaNoSlot = false;
   gAreaCut = false;
   // A footprint without area (no screen-space derivatives) is line sampled: a rasterised pixel has one.
   if (gSpecialCase && length(axis1) + length(axis2) > 0.0) {
-    int part = isQuarterPass() ? uAreaPart : -1;
-    gAreaBeamAlone = isBeamByBeam() ? uAreaBeam : -1;
-    sampled = areaSample(axis1, axis2, toViewer, part, uAreaPartLevel, radiance);
-    gAreaNoSlot = !sampled;  // every arena slot tried was taken: line sampled instead
-    // Cut short by such a cap, the area sample misses the pieces it had not reached: the line
-    // sample stands in, and gAreaCut says so.
-    gAreaCut = sampled && (loopsCutShort() || retryForced());
-    bool counted = true;
-    if (part >= 0) {  // a share of the footprint: the value once the parts are summed
-      vec4 sum;
-      counted = addPart(radiance, !sampled || gAreaCut, sum);
+    if (isSumPass()) {
+      // The parts drawn before, summed; if this loop too was cut short, the sum is not whole.
+      vec4 sum = sumOfParts();
       radiance = sum.rgb;
-      gAreaCut = sum.w > 0.0;  // a part without a slot is counted as cut short too
-      gAreaNoSlot = false;
-      sampled = true;
+      gAreaCut = sum.w > 0.0 || loopsCutShort();
+      sampled = !gAreaCut;
+      atomicAdd(areaCounts[gAreaCut ? 2 : 0], 1u);  // the pixel's outcome, counted once
+    } else {
+      int part = isQuarterPass() ? uAreaPart : -1;
+      gAreaBeamAlone = isBeamByBeam() ? uAreaBeam : -1;
+      sampled = areaSample(axis1, axis2, toViewer, part, uAreaPartLevel, radiance);
+      gAreaNoSlot = !sampled;  // every arena slot tried was taken: line sampled instead
+      // Cut short by such a cap, the area sample misses the pieces it had not reached: the line
+      // sample stands in, and gAreaCut says so.
+      gAreaCut = sampled && (loopsCutShort() || retryForced());
+      if (part >= 0) {
+        // A share of one node of the footprint's quadtree (a part without a slot counts as cut
+        // short); the renderer counts the pixels it shades again by smaller parts, the sum pass the
+        // outcome.
+        addPart(radiance, !sampled || gAreaCut);
+      } else {
+        sampled = sampled && !gAreaCut;
+        // Shaded again: alone, then by parts.
+        gAreaDeferred = gAreaCut && listForRetry();
+        // No effect in helper invocations. A deferred fragment is counted again by its retry.
+        atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
+      }
     }
-    sampled = sampled && !gAreaCut;
-    // Shaded again: alone, then by parts, smaller ones while a part is cut short.
-    gAreaDeferred = gAreaCut && (part >= 0 ? retriedAfterParts() : listForRetry());
-    // No effect in helper invocations. A deferred fragment is counted again by its retry.
-    if (counted) atomicAdd(areaCounts[gAreaNoSlot ? 1 : (gAreaDeferred ? 3 : (gAreaCut ? 2 : 0))], 1u);
   }
 #endif
   return sampled ? radiance : lineSampled;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -193,6 +194,8 @@ class GroovesOracle : public test::GlTest {
   // special cases turn it on; the others check that none is in view.
   bool areaSampling_ = false;
   int forceRetries_ = 0;  // GroovesOptions::forceRetries
+  // GroovesOptions::retryDraws: no limit, so that every pixel a view lists is retried to the end.
+  std::uint32_t retryDraws_ = std::numeric_limits<std::uint32_t>::max();
   bool areaReflections_ = true;  // GroovesOptions::areaReflections, and the CPU method's
   Vec3 environment_{0, 0, 0};  // what mirror bounces that leave the surface see (seed §7)
   // Arc centres to watch: line-sampled pixels whose footprint centre lies within 1.5 half-extents of
@@ -215,6 +218,7 @@ class GroovesOracle : public test::GlTest {
     options.areaSampling = areaSampling_;
     options.areaReflections = areaReflections_;
     options.forceRetries = forceRetries_;
+    options.retryDraws = retryDraws_;
     GroovesRenderer renderer(options);
     const Status prepared = renderer.prepare(*scene, {0}, shaders);
     EXPECT_TRUE(prepared.isOk()) << prepared.describe();
@@ -856,17 +860,67 @@ TEST_F(GroovesOracle, RetryPassesBeamByBeamByQuartersMatchTheCpu) {
   // beam-by-beam retry.
   EXPECT_EQ(f.statistics["grooveAreaRetried"].get<std::uint32_t>(), 3 * fragments);
   // One retry pass per pixel for the whole footprint, then one per beam (6), then one per beam for
-  // each quarter (24).
-  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 31 * fragments);
+  // each quarter (24), then the pass that sums them.
+  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 32 * fragments);
   // Without traced beams (the renderer's default), the second retry takes the footprint's quarters
-  // whole: cut short in the first pass and when shaded alone, each pixel is shaded by quarters.
+  // whole: cut short in the first pass and when shaded alone, each pixel is shaded by quarters, then
+  // summed.
   areaReflections_ = false;
   forceRetries_ = 2;
   const OracleFigures quarters = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
   expectWithinTwoLevels(quarters, "example_plate_retries_environment", true);
   ASSERT_TRUE(quarters.statistics.is_object());
   EXPECT_EQ(quarters.statistics["grooveAreaRetried"].get<std::uint32_t>(), 2 * fragments);
-  EXPECT_EQ(quarters.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 5 * fragments);
+  EXPECT_EQ(quarters.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 6 * fragments);
+}
+
+// Shaded again by parts, only the children of a node cut short are drawn: with node 0 of every level
+// but the deepest taken as cut short, each special-case pixel sums three quarters, three sixteenths
+// and four sixty-fourths, and must still match the CPU, with and without traced beams.
+TEST_F(GroovesOracle, RetryPassesByPartsRefineOnlyNodesCutShort) {
+  areaSampling_ = true;
+  forceRetries_ = 4;
+  const Baked baked = bake(exampleScene("plate.json"), "example_plate_retries");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
+  expectWithinTwoLevels(f, "example_plate_retries_nodes", true);
+  ASSERT_TRUE(f.statistics.is_object());
+  const auto fragments = f.statistics["grooveAreaFragments"].get<std::uint32_t>();
+  EXPECT_GT(fragments, 16u);
+  EXPECT_EQ(f.statistics["grooveAreaLineSampledLoopCap"].get<std::uint32_t>(), 0u);
+  // Deferred from the first pass, the whole retry, and levels 0, 1 and 2 by parts.
+  EXPECT_EQ(f.statistics["grooveAreaRetried"].get<std::uint32_t>(), 5 * fragments);
+  // The whole retry; by parts, 6 beams of the footprint, then of 4 quarters, of the 4 children of
+  // quarter 0, of the 4 children of that sixteenth; the sum.
+  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), (1 + 6 * (1 + 4 + 4 + 4) + 1) * fragments);
+  areaReflections_ = false;
+  const OracleFigures whole = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
+  expectWithinTwoLevels(whole, "example_plate_retries_nodes_environment", true);
+  ASSERT_TRUE(whole.statistics.is_object());
+  EXPECT_EQ(whole.statistics["grooveAreaLineSampledLoopCap"].get<std::uint32_t>(), 0u);
+  // From quarters: deferred from the first pass, the whole retry, levels 1 and 2.
+  EXPECT_EQ(whole.statistics["grooveAreaRetried"].get<std::uint32_t>(), 4 * fragments);
+  EXPECT_EQ(whole.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), (1 + 4 + 4 + 4 + 1) * fragments);
+}
+
+// The frame's retry draws are bounded (GroovesOptions::retryDraws): with every first-pass area sample
+// taken as cut short and 20 retry draws, the first 20 listed pixels are shaded again alone and sampled
+// by area to the end; the rest keep their line samples, counted as cut short and unfinished.
+TEST_F(GroovesOracle, RetryDrawsStopAtTheBudget) {
+  areaSampling_ = true;
+  forceRetries_ = 1;
+  retryDraws_ = 20;
+  const Baked baked = bake(exampleScene("plate.json"), "example_plate_retries");
+  ASSERT_FALSE(baked.file.empty());
+  const OracleFigures f = compare(baked, {0.11f, -0.02f, 0.1f}, {0.05f, 0.05f, 0.0f}, {0.3f, 0.5f, 0.8f}, 1);
+  ASSERT_TRUE(f.statistics.is_object());
+  const auto fragments = f.statistics["grooveAreaFragments"].get<std::uint32_t>();
+  ASSERT_GT(fragments, 20u);
+  EXPECT_EQ(f.statistics["grooveAreaRetryPasses"].get<std::uint32_t>(), 20u);
+  EXPECT_EQ(f.statistics["grooveAreaRetriesUnfinished"].get<std::uint32_t>(), fragments - 20);
+  EXPECT_EQ(f.statistics["grooveAreaLineSampledLoopCap"].get<std::uint32_t>(), fragments - 20);
+  EXPECT_EQ(f.cut, std::size_t(fragments - 20)) << "the pixels flagged as line sampled";
+  EXPECT_EQ(f.specialMaxLevels, 0) << "the 20 retried pixels, sampled by area, against the CPU";
 }
 
 // The per-frame counts (far level, truncated, classes dropped) are the first pass's: a star of six

@@ -48,6 +48,11 @@ void addViewOptions(CLI::App& command, bake::play::ViewSettings& view, std::stri
                      "software GL such as llvmpipe)")
       ->capture_default_str()
       ->check(CLI::IsMember({"traced", "environment"}));
+  command.add_option("--groove-retries", view.grooveRetries,
+                     "Grooves: the most retry draws per frame for special-case pixels whose area sample a driver's "
+                     "loop cap cut short (llvmpipe); a pixel they do not finish is line sampled, with a warning")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 10000000u));
   command.add_option("--environment-map", view.environmentMap,
                      "GeoTextures' wave-displacement preset: an equirectangular image (linear RGB, e.g. EXR) the "
                      "displaced surface reflects (seed 003 C.6.4)")
