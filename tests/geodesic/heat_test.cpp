@@ -173,6 +173,31 @@ TEST(HeatSolver, FewSourcesGiveTheMinimumOfTheirOwnFields) {
   }
 }
 
+// Separate fields go through the factors in batches of columns, the batches side by side: seven
+// sources (a batch of four and one of three) give the same bytes on one thread and on two, and no
+// vertex lies above the nearest source's own field.
+TEST(HeatSolver, SeparateFieldsInBatchesDoNotDependOnTheThreadCount) {
+  const Surface s = geodesicSphere(2, 1.0);
+  HeatOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const HeatSolver serial = buildSolver(s, one), parallel = buildSolver(s, two);
+  std::vector<SurfacePoint> sources;
+  for (std::uint32_t v : {3u, 11u, 40u, 77u, 120u, 151u}) sources.push_back(vertexPoint(s, v));
+  sources.push_back(SurfacePoint{30, {0.2, 0.3, 0.5}});
+  const std::vector<double> d = serial.distances(sources);
+  EXPECT_EQ(d, parallel.distances(sources));
+  std::vector<double> nearest(d.size(), kUnreachable);
+  for (const SurfacePoint& source : sources) {
+    const std::vector<double> own = serial.distances(std::span(&source, 1));
+    for (std::size_t v = 0; v < d.size(); ++v) nearest[v] = std::min(nearest[v], own[v]);
+  }
+  for (std::size_t v = 0; v < d.size(); ++v) {
+    EXPECT_LE(d[v], nearest[v] + 1e-12) << v;
+    EXPECT_NEAR(d[v], nearest[v], 0.05) << v;
+  }
+}
+
 // With maxSeparateSources = 0 the sources share one field and are held at 0 by Dirichlet conditions.
 TEST(HeatSolver, EverySourceSitsAtZeroAndNothingFoldsBetweenThem) {
   const Surface s = planarGrid(64, 1.0);

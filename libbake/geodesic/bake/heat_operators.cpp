@@ -110,18 +110,28 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> assembleUpper(const HeatOperat
 }
 
 void divergenceOfNormalizedGradient(const HeatOperators& ops, std::span<const double> u,
-                                    std::span<double> rhs) {
+                                    std::span<double> rhs, std::size_t columns) {
+  const std::size_t n = columns > 0 ? u.size() / columns : 0;
   for (const HeatFace& face : ops.faces) {
-    double gx = 0.0, gy = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      gx += u[face.vertices[i]] * face.hatGradient[i][0];
-      gy += u[face.vertices[i]] * face.hatGradient[i][1];
+    for (std::size_t c = 0; c < columns; ++c) {
+      const double* field = u.data() + c * n;
+      double gx = 0.0, gy = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        gx += field[face.vertices[i]] * face.hatGradient[i][0];
+        gy += field[face.vertices[i]] * face.hatGradient[i][1];
+      }
+      // Scaled by the larger component first: far from the sources u is as small as 1e-300, where
+      // the squares would underflow (hypot's care, at a fraction of its cost).
+      const double scale = std::max(std::abs(gx), std::abs(gy));
+      if (!(scale > 0.0) || !std::isfinite(scale)) continue;
+      gx /= scale;
+      gy /= scale;
+      const double inverseNorm = 1.0 / std::sqrt(gx * gx + gy * gy);
+      const double xx = -gx * inverseNorm, xy = -gy * inverseNorm;
+      double* out = rhs.data() + c * n;
+      for (int i = 0; i < 3; ++i)
+        out[face.vertices[i]] += face.area * (face.hatGradient[i][0] * xx + face.hatGradient[i][1] * xy);
     }
-    const double norm = std::hypot(gx, gy);
-    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
-    const double xx = -gx / norm, xy = -gy / norm;
-    for (int i = 0; i < 3; ++i)
-      rhs[face.vertices[i]] += face.area * (face.hatGradient[i][0] * xx + face.hatGradient[i][1] * xy);
   }
 }
 
