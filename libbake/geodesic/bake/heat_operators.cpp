@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <utility>
 
 namespace bake::geodesic {
@@ -41,18 +40,29 @@ HeatFace layoutFace(const IntrinsicTriangulation& mesh, std::uint32_t f) {
 // (same corner vertices facing the same side lengths), halving the per-field work.
 std::vector<HeatFace> mergeMirroredFaces(const IntrinsicTriangulation& mesh, std::vector<HeatFace> faces) {
   using Key = std::array<std::pair<std::uint32_t, double>, 3>;
-  std::map<Key, std::size_t> first;
-  std::vector<HeatFace> merged;
-  merged.reserve(faces.size() / 2 + 1);
+  std::vector<Key> keys(faces.size());
   for (std::uint32_t f = 0; f < faces.size(); ++f) {
-    Key key;
-    for (int i = 0; i < 3; ++i) key[i] = {mesh.tail[3 * f + i], mesh.lengthOf(3 * f + (i + 1) % 3)};
-    std::sort(key.begin(), key.end());
-    const auto [it, inserted] = first.try_emplace(key, merged.size());
-    if (inserted)
+    for (int i = 0; i < 3; ++i) keys[f][i] = {mesh.tail[3 * f + i], mesh.lengthOf(3 * f + (i + 1) % 3)};
+    std::sort(keys[f].begin(), keys[f].end());
+  }
+  // Faces in key order (ties by index), so that each face finds the first face with its key.
+  std::vector<std::uint32_t> order(faces.size());
+  for (std::uint32_t f = 0; f < order.size(); ++f) order[f] = f;
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+  std::vector<std::uint32_t> firstWithKey(faces.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    firstWithKey[order[k]] = k > 0 && keys[order[k]] == keys[order[k - 1]] ? firstWithKey[order[k - 1]] : order[k];
+  std::vector<HeatFace> merged;
+  std::vector<std::size_t> mergedIndex(faces.size());
+  merged.reserve(faces.size());
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    if (firstWithKey[f] == f) {
+      mergedIndex[f] = merged.size();
       merged.push_back(faces[f]);
-    else
-      merged[it->second].area += faces[f].area;
+    } else {
+      merged[mergedIndex[firstWithKey[f]]].area += faces[f].area;
+    }
   }
   return merged;
 }

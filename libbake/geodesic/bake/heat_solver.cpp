@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -354,7 +355,11 @@ std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::ve
 constexpr std::size_t kMaxBoundedSources = 64;
 
 double straightDistance(const Vec3d& a, const Vec3d& b) {
-  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  const double squared = dx * dx + dy * dy + dz * dz;
+  // hypot only where the squares could overflow or lose digits to underflow (it costs several times more).
+  if (squared < std::numeric_limits<double>::max() && squared > 1e-280) return std::sqrt(squared);
+  return std::hypot(dx, dy, dz);
 }
 
 void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows,
