@@ -187,7 +187,8 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
     impls.push_back(std::move(impl));
   }
   cholmod_free_factor(&symbolic, common.get());
-  holdBlasToOneThread();
+  // Only a supernodal factor calls the BLAS (the simplicial method and its solves make no BLAS call).
+  if (supernodal == CHOLMOD_SUPERNODAL) holdBlasToOneThread();
   out.oneAtATime = supernodal == CHOLMOD_SUPERNODAL && blasIsSequentialOpenBlas();
   std::vector<int> status(uppers.size(), CHOLMOD_OK);
   parallelForBlocks(uppers.size(), 1, out.oneAtATime ? 1u : threads, [&](std::size_t k, std::size_t) {
