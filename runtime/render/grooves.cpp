@@ -363,8 +363,9 @@ void GroovesRenderer::drawRetriesByParts(const FrameContext& frame, const std::v
   const int beams = byBeams ? kAreaEyeBeams : 1;
   // Without traced beams there is nothing to take one by one: whole nodes, from quarters on.
   const int root = byBeams ? 0 : 1;
+  const std::vector<std::size_t> order = rasterOrder(pixels);
   std::vector<RetryNode> nodes;
-  for (const std::size_t slot : rasterOrder(pixels))
+  for (const std::size_t slot : order)
     for (int part = 0; part < 1 << (2 * root); ++part) nodes.push_back({slot, part});
   std::vector<bool> unfinished(pixels.size(), false);
   for (int level = root; !nodes.empty(); ++level) {
@@ -379,7 +380,7 @@ void GroovesRenderer::drawRetriesByParts(const FrameContext& frame, const std::v
     for (const RetryNode& node : nodes) again[node.slot] = true;
     retriedByParts_ += std::uint32_t(std::count(again.begin(), again.end(), true));
   }
-  for (const std::size_t slot : rasterOrder(pixels)) {
+  for (const std::size_t slot : order) {
     if (!unfinished[slot]) drawRetryPass(frame, pixels[slot], {3, 0, 0, int(slot), -1, root});
     else ++retriesUnfinished_;  // keeps the line sample of its whole retry
   }
