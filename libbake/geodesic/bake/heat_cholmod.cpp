@@ -16,7 +16,8 @@
 // 0.24 s on an 83k-triangle sphere, but 1.9 s against 1.4 s on a 326k-triangle one. The matrices factorise in
 // parallel, each in its own CHOLMOD workspace, with the BLAS held to one thread: each factor is then computed
 // by one sequential code path, so it does not depend on the thread count (a threaded BLAS splits its sums by
-// its thread count). Solves build a private cholmod_common so that several threads share a factor.
+// its thread count). Solves are our own substitution (heat_substitution.h), which only reads the factor, so
+// several threads share it; CHOLMOD's solve remains for a factor not laid out as that expects.
 // A BLAS is trusted only so far: Debian's sequential OpenBLAS (libopenblas0-serial 0.3.21) is not safe to
 // call from two threads at once: factorising both matrices of 0.8M- and 2M-triangle spheres concurrently
 // through it failed as "not positive definite" (one at a time they succeed). So a sequential OpenBLAS is
@@ -143,6 +144,22 @@ double CholeskyFactor::backwardError(const SparseUpper& upper) const {
 struct CholeskyFactor::Impl {
   Common common;  // owns the factor's memory
   cholmod_factor* factor = nullptr;
+  SubstitutionPlan substitution;  // our own solves, once the factor is simplicial
+  bool planned = false;
+  // Plans the substitution of a simplicial factor (a supernodal one keeps CHOLMOD's solve).
+  void plan() {
+    if (!factor || factor->is_super || factor->xtype != CHOLMOD_REAL || factor->itype != CHOLMOD_INT) return;
+    SimplicialFactorView view;
+    view.size = factor->n;
+    view.start = static_cast<const int*>(factor->p);
+    view.count = static_cast<const int*>(factor->nz);
+    view.rows = static_cast<const int*>(factor->i);
+    view.values = static_cast<const double*>(factor->x);
+    view.permutation = static_cast<const int*>(factor->Perm);
+    view.unitDiagonal = !factor->is_ll;
+    substitution = SubstitutionPlan(view);
+    planned = substitution.valid();
+  }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, common.get());
   }
@@ -154,6 +171,10 @@ CholeskyFactor& CholeskyFactor::operator=(CholeskyFactor&&) noexcept = default;
 CholeskyFactor::~CholeskyFactor() = default;
 
 std::size_t CholeskyFactor::size() const { return impl_->factor->n; }
+
+const SubstitutionPlan* CholeskyFactor::substitution() const {
+  return impl_->planned ? &impl_->substitution : nullptr;
+}
 
 Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
     std::span<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>* const> uppers, unsigned threads,
@@ -199,6 +220,7 @@ Result<std::vector<CholeskyFactor>> CholeskyFactor::factoriseAll(
     if (ok && c->status == CHOLMOD_OK && impl.factor->is_super)
       ok = cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0, /*to_packed=*/1,
                                  /*to_monotonic=*/1, impl.factor, c);
+    if (ok && c->status == CHOLMOD_OK) impl.plan();
     status[k] = ok && c->status == CHOLMOD_OK ? CHOLMOD_OK : (c->status != CHOLMOD_OK ? c->status : CHOLMOD_INVALID);
   });
   // Backward errors of a sound factor are about 1e-16; this bound leaves room for rounding on large
@@ -249,11 +271,21 @@ Result<CholeskyFactor> CholeskyFactor::factoriseSimplicial(const SparseUpper& up
   }
   if (!impl->factor || !cholmod_factorize(&a, impl->factor, c) || c->status != CHOLMOD_OK)
     return internalError("sparse Cholesky factorisation failed (status " + std::to_string(c->status) + ")");
+  impl->plan();
   return CholeskyFactor(std::move(impl));
 }
 
-void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution,
-                           std::size_t columns) const {
+void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
+                           unsigned threads) const {
+  if (impl_->planned) {
+    impl_->substitution.solve(rhs, solution, columns, threads);
+    return;
+  }
+  solveWithCholmod(rhs, solution, columns);
+}
+
+void CholeskyFactor::solveWithCholmod(std::span<const double> rhs, std::span<double> solution,
+                                      std::size_t columns) const {
   const std::size_t n = size();
   cholmod_common local;
   cholmod_start(&local);

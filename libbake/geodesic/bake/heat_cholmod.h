@@ -11,6 +11,7 @@
 #include <span>
 
 #include "bake/core/status.h"
+#include "geodesic/bake/heat_substitution.h"
 
 namespace bake::geodesic {
 
@@ -37,8 +38,15 @@ class CholeskyFactor {
   ~CholeskyFactor();
 
   std::size_t size() const;
-  // Solves A X = B for `columns` right-hand sides stored column after column (size() values each).
-  void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns = 1) const;
+  // Solves A X = B for `columns` right-hand sides stored column after column (size() values each),
+  // by our own substitution (heat_substitution.h) on up to `threads` threads (0: all cores); the
+  // solution does not depend on `threads`.
+  void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns = 1,
+             unsigned threads = 1) const;
+  // The substitution's plan; null when solves go through CHOLMOD (a factor not laid out as expected).
+  const SubstitutionPlan* substitution() const;
+  // The same through CHOLMOD's own solve (an independent check of the substitution).
+  void solveWithCholmod(std::span<const double> rhs, std::span<double> solution, std::size_t columns = 1) const;
 
  private:
   struct Impl;

@@ -52,6 +52,8 @@ struct HeatSystem {
   // For the batches of separate fields (HeatOptions::threads; 1 when the BLAS must be called from one
   // thread at a time).
   unsigned threads = 1;
+  // For one solve's substitution (HeatOptions::threads: it makes no BLAS call).
+  unsigned solveThreads = 1;
 };
 
 struct HeatSolver::State : HeatSystem {
@@ -120,7 +122,7 @@ std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRo
   std::vector<double> delta(state.vertexCount, 0.0), u(state.vertexCount, 0.0);
   for (const SourceRow& row : rows)
     for (int i = 0; i < 3; ++i) delta[row.vertices[i]] += row.weights[i];
-  state.heat->solve(delta, u);
+  state.heat->solve(delta, u, 1, state.solveThreads);
   return u;
 }
 
@@ -130,7 +132,7 @@ std::vector<double> integrateDirections(const HeatSystem& state, const std::vect
   divergenceOfNormalizedGradient(state.ops, u, rhs);
   for (std::size_t v = 0; v < state.vertexCount; ++v)
     if (state.pinned[v] || state.isolated[v]) rhs[v] = 0.0;
-  state.poisson->solve(rhs, phi);
+  state.poisson->solve(rhs, phi, 1, state.solveThreads);
   return phi;
 }
 
@@ -167,7 +169,7 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
     const std::size_t m = std::min(kBatch, k - first);
     std::vector<double> c(n * m, 0.0), gc(n * m, 0.0);
     for (std::size_t j = 0; j < m; ++j) addColumn(first + j, 1.0, c.data() + j * n);
-    state.poisson->solve(c, gc, m);
+    state.poisson->solve(c, gc, m, state.solveThreads);
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t j = 0; j < m; ++j) schur(a, first + j) = rowDot(rows[members[a]], gc.data() + j * n);
   }
@@ -176,7 +178,7 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
   const Eigen::VectorXd solution = multipliers(0.5 * (schur + schur.transpose()), right);
   std::vector<double> forces(n, 0.0), correction(n, 0.0);
   for (std::size_t s = 0; s < k; ++s) addColumn(s, solution[s], forces.data());
-  state.poisson->solve(forces, correction);
+  state.poisson->solve(forces, correction, 1, state.solveThreads);
   const std::uint32_t component = rows[members[0]].component;
   for (std::size_t v = 0; v < n; ++v)
     if (state.componentOf[v] == component) phi[v] += correction[v] + solution[k];
@@ -267,6 +269,7 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   stats.factorsRedoneWithoutBlas = factorising.redoneWithoutBlas;
   stats.blasOneAtATime = factorising.oneAtATime;
   state->threads = factorising.oneAtATime ? 1 : options.threads;
+  state->solveThreads = options.threads;
   state->heat.emplace(std::move(factors[0]));
   state->poisson.emplace(std::move(factors[1]));
   stats.factorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -304,12 +307,12 @@ std::vector<double> combinedField(const HeatSystem& state, const std::vector<Sou
 // one solve (the factor is read once per batch instead of once per source), each field shifted to
 // its source; their minimum into phi.
 void singleFieldsBatch(const HeatSystem& state, const std::vector<SourceRow>& rows, std::size_t first,
-                       std::size_t m, std::vector<double>& phi) {
+                       std::size_t m, unsigned solveThreads, std::vector<double>& phi) {
   const std::size_t n = state.vertexCount;
   std::vector<double> delta(n * m, 0.0), u(n * m, 0.0);
   for (std::size_t j = 0; j < m; ++j)
     for (int i = 0; i < 3; ++i) delta[j * n + rows[first + j].vertices[i]] += rows[first + j].weights[i];
-  state.heat->solve(delta, u, m);
+  state.heat->solve(delta, u, m, solveThreads);
   std::vector<double>& rhs = delta;  // step I's right-hand sides are spent
   std::fill(rhs.begin(), rhs.end(), 0.0);
   divergenceOfNormalizedGradient(state.ops, u, rhs, m);
@@ -317,7 +320,7 @@ void singleFieldsBatch(const HeatSystem& state, const std::vector<SourceRow>& ro
     if (state.pinned[v] || state.isolated[v])
       for (std::size_t j = 0; j < m; ++j) rhs[j * n + v] = 0.0;
   std::vector<double>& single = u;
-  state.poisson->solve(rhs, single, m);
+  state.poisson->solve(rhs, single, m, solveThreads);
   for (std::size_t j = 0; j < m; ++j) {
     const std::span<double> field(single.data() + j * n, n);
     shiftToSources(state, rows, {first + j}, field);
@@ -337,9 +340,12 @@ std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::ve
   constexpr std::size_t kBatch = 4;
   const std::size_t batches = (rows.size() + kBatch - 1) / kBatch;
   std::vector<std::vector<double>> partial(batches);
+  // One batch alone has the threads to itself for its substitutions.
+  const unsigned solveThreads = batches == 1 ? state.solveThreads : 1u;
   parallelForBlocks(batches, 1, state.threads, [&](std::size_t b, std::size_t) {
     partial[b].assign(state.vertexCount, kUnreachable);
-    singleFieldsBatch(state, rows, b * kBatch, std::min(kBatch, rows.size() - b * kBatch), partial[b]);
+    singleFieldsBatch(state, rows, b * kBatch, std::min(kBatch, rows.size() - b * kBatch), solveThreads,
+                      partial[b]);
   });
   std::vector<double> phi = std::move(partial[0]);
   for (std::size_t b = 1; b < batches; ++b)

@@ -1,0 +1,67 @@
+// Forward and back substitution with a simplicial sparse Cholesky factor (A = P' L L' P, or
+// P' L D L' P with L unit), our own instead of CHOLMOD's solve, for two reasons that the heat method's
+// fields feel (Crane, Weischedel and Wardetzky 2013, Algorithm 1, steps I and III):
+//   - Step I's right-hand side is zero but at the source's corners, so the forward substitution skips
+//     every column whose value is still zero: only the source's path to the root of the elimination
+//     tree does any work (Gilbert and Peierls' observation for sparse right-hand sides).
+//   - Below the top separator the elimination tree splits into subtrees that share no row but the
+//     separator's, so two threads substitute one group of subtrees each (the subtrees' updates of the
+//     separator go to a private buffer per group, added in a fixed order). The groups depend only on
+//     the factor, never on the thread count, so neither does the solution.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace bake::geodesic {
+
+// A simplicial factor in CHOLMOD's layout (not owned): column j's entries are rows[start[j] ..
+// start[j] + count[j]), the diagonal first. `permutation[k]` is the row of A that is row k of L (null:
+// none). With `unitDiagonal`, L's diagonal is 1 and the stored diagonal is D.
+struct SimplicialFactorView {
+  std::size_t size = 0;
+  const int* start = nullptr;
+  const int* count = nullptr;
+  const int* rows = nullptr;
+  const double* values = nullptr;
+  const int* permutation = nullptr;
+  bool unitDiagonal = false;
+};
+
+class SubstitutionPlan {
+ public:
+  SubstitutionPlan() = default;
+  explicit SubstitutionPlan(const SimplicialFactorView& factor);
+
+  // Solves A X = B for `columns` right-hand sides stored column after column (size values each),
+  // on up to `threads` threads (0: all cores); the solution does not depend on `threads`.
+  void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
+             unsigned threads) const;
+
+  // False when the factor is not laid out as described (the caller then solves some other way).
+  bool valid() const { return valid_; }
+  // Columns [0, top) are split into the two groups' subtrees (empty when the tree does not split).
+  std::size_t top() const { return top_; }
+  const std::array<std::vector<std::pair<int, int>>, 2>& groups() const { return groups_; }
+  // Runs of columns substituted together (at most size(); fewer where columns share their rows).
+  std::size_t runCount() const { return runStarts_.size(); }
+
+ private:
+  template <std::size_t M>
+  void solveColumns(double* work, unsigned threads) const;
+  void splitTree();
+  void findRuns();
+
+  SimplicialFactorView factor_;
+  std::size_t top_ = 0;  // first column of the top part, substituted by one thread
+  std::array<std::vector<std::pair<int, int>>, 2> groups_;  // [begin, end) column ranges, ascending
+  std::size_t nonZeros_ = 0;
+  bool valid_ = false;
+  std::vector<unsigned char> runs_;  // at a run's first column, its length (1 to 4); 0 elsewhere
+  std::vector<int> runStarts_;       // the runs' first columns, ascending
+};
+
+}  // namespace bake::geodesic

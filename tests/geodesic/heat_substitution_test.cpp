@@ -1,0 +1,178 @@
+// Our substitution with a Cholesky factor (heat_substitution.cpp) against two references that share
+// no code with it: CHOLMOD's own solve with the same factor, and, on a small factor written by hand,
+// the known solution of A x = b with A multiplied out densely.
+#include "geodesic/bake/heat_substitution.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "geodesic/bake/heat_cholmod.h"
+#include "geodesic/bake/heat_intrinsic.h"
+#include "geodesic/bake/heat_operators.h"
+#include "geodesic/heat_meshes.h"
+
+namespace bake::geodesic {
+namespace {
+
+using SparseUpper = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// The heat method's two matrices on a surface: M + tL, and L with its first vertex held.
+std::array<SparseUpper, 2> heatMatrices(const Surface& s) {
+  IntrinsicBuildStats stats;
+  IntrinsicTriangulation mesh = buildTuftedCover(s, stats);
+  flipToDelaunay(mesh);
+  const HeatOperators ops = buildHeatOperators(mesh, s.vertexCount());
+  const std::vector<char> free(s.vertexCount(), 0);
+  std::vector<char> held(s.vertexCount(), 0);
+  held[0] = 1;
+  const std::vector<double> none(s.vertexCount(), 0.0);
+  const double t = ops.meanEdgeLength * ops.meanEdgeLength;
+  return {assembleUpper(ops, t, ops.mass, free), assembleUpper(ops, 1.0, none, held)};
+}
+
+std::vector<CholeskyFactor> factorise(const std::array<SparseUpper, 2>& matrices) {
+  const std::array<const SparseUpper*, 2> pointers{&matrices[0], &matrices[1]};
+  Result<std::vector<CholeskyFactor>> factors = CholeskyFactor::factoriseAll(pointers, 2);
+  EXPECT_TRUE(factors.isOk()) << factors.status().describe();
+  return std::move(factors).value();
+}
+
+double relativeDifference(const std::vector<double>& ours, const std::vector<double>& reference) {
+  double difference = 0.0, largest = 0.0;
+  for (std::size_t k = 0; k < ours.size(); ++k) {
+    difference = std::max(difference, std::abs(ours[k] - reference[k]));
+    largest = std::max(largest, std::abs(reference[k]));
+  }
+  return largest > 0.0 ? difference / largest : difference;
+}
+
+// Dense right-hand sides, a unit one (the sparse forward substitution), and batches of 3 and of 10
+// (more than are substituted together): the same solution as CHOLMOD's, and the same bytes on one
+// thread and on two.
+void expectAgreesWithCholmod(const CholeskyFactor& factor) {
+  const std::size_t n = factor.size();
+  for (const std::size_t columns : {std::size_t{1}, std::size_t{3}, std::size_t{10}}) {
+    for (const bool unit : {false, true}) {
+      std::vector<double> rhs(n * columns, 0.0);
+      for (std::size_t c = 0; c < columns; ++c)
+        for (std::size_t k = 0; k < n; ++k)
+          if (unit ? k == (c + 1) * n / (columns + 2) : true)
+            rhs[c * n + k] = unit ? 1.0 : 1.0 + 0.5 * std::sin(0.37 * static_cast<double>(k) + c);
+      std::vector<double> ours(n * columns), twoThreads(n * columns), reference(n * columns);
+      factor.solve(rhs, ours, columns, 1);
+      factor.solve(rhs, twoThreads, columns, 2);
+      factor.solveWithCholmod(rhs, reference, columns);
+      EXPECT_LE(relativeDifference(ours, reference), 1e-12) << columns << " columns, unit " << unit;
+      EXPECT_EQ(std::memcmp(ours.data(), twoThreads.data(), ours.size() * sizeof(double)), 0)
+          << columns << " columns, unit " << unit;
+    }
+  }
+}
+
+TEST(HeatSubstitution, AgreesWithCholmodOnASmallSimplicialFactor) {
+  const Surface s = testing::geodesicSphere(3, 1.0);  // 642 vertices: AMD, simplicial LDL'
+  for (const CholeskyFactor& factor : factorise(heatMatrices(s))) {
+    ASSERT_NE(factor.substitution(), nullptr);
+    expectAgreesWithCholmod(factor);
+  }
+}
+
+TEST(HeatSubstitution, AgreesWithCholmodOnASupernodalFactorSplitInTwo) {
+  // 68,121 vertices: METIS, a supernodal factor turned simplicial LL', large enough for two threads.
+  const Surface s = testing::planarGrid(260, 1.0);
+  for (const CholeskyFactor& factor : factorise(heatMatrices(s))) {
+    const SubstitutionPlan* plan = factor.substitution();
+    ASSERT_NE(plan, nullptr);
+    // Nested dissection: a top separator over two groups of subtrees, and supernodes as runs.
+    EXPECT_GT(plan->top(), 0u);
+    EXPECT_LT(plan->top(), factor.size());
+    EXPECT_FALSE(plan->groups()[0].empty());
+    EXPECT_FALSE(plan->groups()[1].empty());
+    EXPECT_LT(plan->runCount(), factor.size() / 2);
+    expectAgreesWithCholmod(factor);
+  }
+}
+
+// A factor written by hand: two components (rows 0-3 and 4-6 of L), so the tree is a forest that
+// splits at its (virtual) root, with a permutation.
+struct HandFactor {
+  std::vector<int> start, count, rows, permutation;
+  std::vector<double> values;
+  SimplicialFactorView view(bool unitDiagonal) const {
+    return {start.size(), start.data(), count.data(), rows.data(), values.data(), permutation.data(),
+            unitDiagonal};
+  }
+};
+
+HandFactor handFactor() {
+  HandFactor f;
+  // Columns (row: value), the diagonal first.
+  const std::vector<std::vector<std::pair<int, double>>> columns{
+      {{0, 2.0}, {1, 0.5}, {3, -0.25}}, {{1, 1.5}, {3, 0.75}}, {{2, 3.0}, {3, -1.0}}, {{3, 1.25}},
+      {{4, 1.0}, {5, 0.5}, {6, 0.125}}, {{5, 2.5}, {6, -0.5}}, {{6, 0.75}}};
+  for (const auto& column : columns) {
+    f.start.push_back(static_cast<int>(f.rows.size()));
+    f.count.push_back(static_cast<int>(column.size()));
+    for (const auto& [row, value] : column) {
+      f.rows.push_back(row);
+      f.values.push_back(value);
+    }
+  }
+  f.permutation = {3, 6, 0, 5, 1, 4, 2};
+  return f;
+}
+
+// A = P' L D L' P (D = I and L's stored diagonal for LL'), multiplied out densely.
+std::vector<std::vector<double>> denseMatrix(const HandFactor& f, bool unitDiagonal) {
+  const std::size_t n = f.start.size();
+  std::vector<std::vector<double>> l(n, std::vector<double>(n, 0.0)), a(n, std::vector<double>(n, 0.0));
+  std::vector<double> d(n, 1.0);
+  for (std::size_t j = 0; j < n; ++j)
+    for (int k = f.start[j]; k < f.start[j] + f.count[j]; ++k) l[f.rows[k]][j] = f.values[k];
+  if (unitDiagonal)
+    for (std::size_t j = 0; j < n; ++j) std::swap(d[j], l[j][j]);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t k = 0; k < n; ++k)
+        a[f.permutation[r]][f.permutation[c]] += l[r][k] * d[k] * l[c][k];
+  return a;
+}
+
+TEST(HeatSubstitution, SolvesAFactorWrittenByHand) {
+  const HandFactor f = handFactor();
+  const std::size_t n = f.start.size();
+  for (const bool unitDiagonal : {false, true}) {
+    const SubstitutionPlan plan(f.view(unitDiagonal));
+    ASSERT_TRUE(plan.valid());
+    EXPECT_EQ(plan.top(), n);  // a forest: both trees below the virtual root, no top chain
+    EXPECT_FALSE(plan.groups()[0].empty());
+    EXPECT_FALSE(plan.groups()[1].empty());
+    const auto a = denseMatrix(f, unitDiagonal);
+    std::vector<double> truth(2 * n), rhs(2 * n, 0.0), solution(2 * n);
+    for (std::size_t k = 0; k < 2 * n; ++k) truth[k] = 1.0 + 0.25 * static_cast<double>(k % 5) - 0.1 * (k / n);
+    for (std::size_t c = 0; c < 2; ++c)
+      for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t k = 0; k < n; ++k) rhs[c * n + r] += a[r][k] * truth[c * n + k];
+    for (const std::size_t columns : {std::size_t{1}, std::size_t{2}}) {
+      plan.solve(std::span(rhs).first(columns * n), solution, columns, 2);
+      for (std::size_t k = 0; k < columns * n; ++k)
+        EXPECT_NEAR(solution[k], truth[k], 1e-12) << "unit diagonal " << unitDiagonal << ", entry " << k;
+    }
+  }
+}
+
+TEST(HeatSubstitution, RefusesAFactorNotLaidOutAsExpected) {
+  HandFactor f = handFactor();
+  std::swap(f.rows[0], f.rows[1]);  // column 0 no longer opens with its diagonal
+  std::swap(f.values[0], f.values[1]);
+  EXPECT_FALSE(SubstitutionPlan(f.view(false)).valid());
+  HandFactor above = handFactor();
+  above.rows[4] = 0;  // column 1 holds a row above its diagonal
+  EXPECT_FALSE(SubstitutionPlan(above.view(false)).valid());
+}
+
+}  // namespace
+}  // namespace bake::geodesic
