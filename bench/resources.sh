@@ -15,7 +15,8 @@
 # Inputs: geobake on the largest real mesh of ../shared/data/meshes/real (or $BAKE_DATA_DIR/meshes/real;
 # else a pretzel from bakeshape), exact and heat, one source, and in full mode also on bakeshape's pretzel
 # at 256 cells (about 450k triangles, the size of the full geodesic ladder's largest rungs); revolbake on pipelines/revolution/vase.json;
-# groovebake on 100,000 random grooves; tambake on pipelines/hatching/hatching.json; bakeshape's pretzel
+# groovebake on 100,000 random grooves; tambake on pipelines/hatching/hatching.json (and both shipped
+# styles at their own settings, median of 5 runs); bakeshape's pretzel
 # at 256 cells; bakepipe assemble on each pipelines/*/scene.json (baked first with bakepipe ninja);
 # bakeplay validate and render on the largest package made here (the groove grid of 100,000 grooves).
 # Every baker runs with -j THREADS (default 2).
@@ -79,6 +80,30 @@ measure() {
   echo "$tool: $(show "$*")" >>"$commands"
 }
 set_size() { if [[ $last_ok == 1 ]]; then sed -i "\$s/,?,/,$1,/" "$csv"; fi; }
+
+# measure_median RUNS TOOL INPUT SIZE COMMAND...: like measure, for a command short enough that one
+# run is mostly noise: RUNS runs, the median wall time and the largest peak memory.
+measure_median() {
+  local runs="$1" tool="$2" input="$3" size="$4" rc=0 k
+  shift 4
+  echo "resources: $tool ($runs runs): $(show "$*")" >&2
+  : >"$work/times.txt"
+  for ((k = 0; k < runs; k++)); do
+    /usr/bin/time -f '%e %M' -o "$work/time.txt" "$@" || rc=$?
+    [[ $rc == 0 ]] || break
+    tail -1 "$work/time.txt" >>"$work/times.txt"
+  done
+  if [[ $rc != 0 ]]; then
+    echo "resources: error: $tool failed (exit $rc)" >&2
+    echo "$tool,$input,failed (exit $rc),," >>"$csv"
+    failures=$((failures + 1))
+  else
+    sort -n "$work/times.txt" | awk -v t="$tool" -v i="$input (median of $runs runs)" -v s="$size" \
+      '{ wall[NR] = $1; if ($2 > kib) kib = $2 }
+       END { gsub(",", ";", i); gsub(",", ";", s); printf "%s,%s,%s,%.2f,%.1f\n", t, i, s, wall[int((NR + 1) / 2)], kib / 1024 }' >>"$csv"
+  fi
+  echo "$tool: $(show "$*")" >>"$commands"
+}
 
 # A number from a tool's JSON report: the first value of KEY anywhere in it.
 report_value() {
@@ -146,6 +171,13 @@ grooves_package="$work/grooves-100000.glb"
 measure tambake "pipelines/hatching/hatching.json" "${tam_resolution}^2 finest level" \
   "$tools/tambake/tambake" "$here/pipelines/hatching/hatching.json" -o "$work/hatching.ktx2" \
   --resolution "$tam_resolution" -j "$threads" -q
+
+# tambake's two shipped styles as a user runs them, at their own resolution (256): the default
+# hatching (6 tones x 4 levels) and stippling, whole process.
+for style in hatching stippling; do
+  measure_median 5 tambake "pipelines/hatching/$style.json (style's own settings)" "256^2 finest level" \
+    "$tools/tambake/tambake" "$here/pipelines/hatching/$style.json" -o "$work/$style-default.ktx2" -j "$threads" -q
+done
 
 # bakeshape: the pretzel (genus 3) at 256 cells along its longest side.
 measure bakeshape "pretzel" "?" \
