@@ -79,7 +79,8 @@ Result<std::vector<std::vector<double>>> solveFields(const Surface& surface,
             progress.set(f, surface.vertexCount());
             break;
           }
-          case Method::Heat: distances[f] = heat->distances(sources); break;
+          // Several fields already share the threads; one alone has them all.
+          case Method::Heat: distances[f] = heat->distances(sources, fields.size() > 1 ? 1u : 0u); break;
           case Method::FastMarching: distances[f] = fastMarchingDistances(surface, sources); break;
         }
       },

@@ -49,11 +49,9 @@ struct HeatSystem {
   std::optional<CholeskyFactor> poisson;
   std::size_t maxPinnedSources = 0;
   std::size_t maxSeparateSources = 0;
-  // For the batches of separate fields (HeatOptions::threads; 1 when the BLAS must be called from one
-  // thread at a time).
+  // A field's default threads (HeatOptions::threads). Fields call no BLAS: their solves are our own
+  // substitution (or CHOLMOD's simplicial solve), so a sequential OpenBLAS does not hold them.
   unsigned threads = 1;
-  // For one solve's substitution (HeatOptions::threads: it makes no BLAS call).
-  unsigned solveThreads = 1;
 };
 
 struct HeatSolver::State : HeatSystem {
@@ -118,21 +116,21 @@ double rowDot(const SourceRow& row, const double* field) {
 }
 
 // Step I: heat from the sources, spread over their face corners by barycentric weight.
-std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRow>& rows) {
+std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRow>& rows, unsigned threads) {
   std::vector<double> delta(state.vertexCount, 0.0), u(state.vertexCount, 0.0);
   for (const SourceRow& row : rows)
     for (int i = 0; i < 3; ++i) delta[row.vertices[i]] += row.weights[i];
-  state.heat->solve(delta, u, 1, state.solveThreads);
+  state.heat->solve(delta, u, 1, threads);
   return u;
 }
 
 // Steps II and III with the pinned factor: phi0 = G div X.
-std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u) {
+std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u, unsigned threads) {
   std::vector<double> rhs(state.vertexCount, 0.0), phi(state.vertexCount, 0.0);
   divergenceOfNormalizedGradient(state.ops, u, rhs);
   for (std::size_t v = 0; v < state.vertexCount; ++v)
     if (state.pinned[v] || state.isolated[v]) rhs[v] = 0.0;
-  state.poisson->solve(rhs, phi, 1, state.solveThreads);
+  state.poisson->solve(rhs, phi, 1, threads);
   return phi;
 }
 
@@ -153,7 +151,7 @@ Eigen::VectorXd multipliers(const Eigen::MatrixXd& s, const Eigen::VectorXd& r) 
 // place. The Schur complement C^T G C is gathered a few columns at a time so that the workspace stays
 // a few fields in size; the correction G C lambda is then one more solve.
 void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
-                const std::vector<std::size_t>& members, std::vector<double>& phi) {
+                const std::vector<std::size_t>& members, unsigned threads, std::vector<double>& phi) {
   constexpr std::size_t kBatch = 8;
   const std::size_t n = state.vertexCount, k = members.size();
   // Column s of C: the barycentric weights of source s, without the pinned vertex's entry.
@@ -169,7 +167,7 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
     const std::size_t m = std::min(kBatch, k - first);
     std::vector<double> c(n * m, 0.0), gc(n * m, 0.0);
     for (std::size_t j = 0; j < m; ++j) addColumn(first + j, 1.0, c.data() + j * n);
-    state.poisson->solve(c, gc, m, state.solveThreads);
+    state.poisson->solve(c, gc, m, threads);
     for (std::size_t a = 0; a < k; ++a)
       for (std::size_t j = 0; j < m; ++j) schur(a, first + j) = rowDot(rows[members[a]], gc.data() + j * n);
   }
@@ -178,7 +176,7 @@ void pinSources(const HeatSystem& state, const std::vector<SourceRow>& rows,
   const Eigen::VectorXd solution = multipliers(0.5 * (schur + schur.transpose()), right);
   std::vector<double> forces(n, 0.0), correction(n, 0.0);
   for (std::size_t s = 0; s < k; ++s) addColumn(s, solution[s], forces.data());
-  state.poisson->solve(forces, correction, 1, state.solveThreads);
+  state.poisson->solve(forces, correction, 1, threads);
   const std::uint32_t component = rows[members[0]].component;
   for (std::size_t v = 0; v < n; ++v)
     if (state.componentOf[v] == component) phi[v] += correction[v] + solution[k];
@@ -268,8 +266,7 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   stats.factorBackwardError = factorising.worstBackwardError;
   stats.factorsRedoneWithoutBlas = factorising.redoneWithoutBlas;
   stats.blasOneAtATime = factorising.oneAtATime;
-  state->threads = factorising.oneAtATime ? 1 : options.threads;
-  state->solveThreads = options.threads;
+  state->threads = options.threads;
   state->heat.emplace(std::move(factors[0]));
   state->poisson.emplace(std::move(factors[1]));
   stats.factorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -288,15 +285,15 @@ Components groupByComponent(const std::vector<SourceRow>& rows) {
 
 // One heat-method field from all the rows together, each source held at its value (or, beyond the
 // pin limit, the mean over the sources). Valid on the components that hold a source.
-std::vector<double> combinedField(const HeatSystem& state, const std::vector<SourceRow>& rows) {
-  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows));
+std::vector<double> combinedField(const HeatSystem& state, const std::vector<SourceRow>& rows, unsigned threads) {
+  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows, threads), threads);
   const Components byComponent = groupByComponent(rows);
   std::size_t pinnedTotal = 0;
   for (const auto& [component, members] : byComponent)
     if (members.size() > 1) pinnedTotal += members.size();
   for (const auto& [component, members] : byComponent) {
     if (members.size() > 1 && pinnedTotal <= state.maxPinnedSources)
-      pinSources(state, rows, members, phi);
+      pinSources(state, rows, members, threads, phi);
     else
       shiftToSources(state, rows, members, phi);
   }
@@ -334,15 +331,16 @@ void singleFieldsBatch(const HeatSystem& state, const std::vector<SourceRow>& ro
 // than one field from the summed heat of all sources (where the sources' kernels meet, the normalised
 // gradient turns sharply and the Poisson step smooths the ridge: on the teapot, 2.9 % mean error for
 // two sources against 1.5 % for the minimum of their fields). Two solves per source.
-std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::vector<SourceRow>& rows) {
+std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::vector<SourceRow>& rows,
+                                          unsigned threads) {
   // Batches of a fixed size (never set by the thread count, so the output does not depend on it),
   // run side by side.
   constexpr std::size_t kBatch = 4;
   const std::size_t batches = (rows.size() + kBatch - 1) / kBatch;
   std::vector<std::vector<double>> partial(batches);
   // One batch alone has the threads to itself for its substitutions.
-  const unsigned solveThreads = batches == 1 ? state.solveThreads : 1u;
-  parallelForBlocks(batches, 1, state.threads, [&](std::size_t b, std::size_t) {
+  const unsigned solveThreads = batches == 1 ? threads : 1u;
+  parallelForBlocks(batches, 1, threads, [&](std::size_t b, std::size_t) {
     partial[b].assign(state.vertexCount, kUnreachable);
     singleFieldsBatch(state, rows, b * kBatch, std::min(kBatch, rows.size() - b * kBatch), solveThreads,
                       partial[b]);
@@ -393,15 +391,16 @@ void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows
 
 }  // namespace
 
-std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources) const {
+std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources, unsigned threads) const {
   const State& state = *state_;
+  if (threads == 0) threads = state.threads;
   std::vector<double> result(state.vertexCount, kUnreachable);
   const std::vector<SourceRow> rows = sourceRows(state, sources);
   if (rows.empty() || !state.heat) return result;
 
   const std::vector<double> phi = rows.size() > 1 && rows.size() <= state.maxSeparateSources
-                                      ? minimumOfSingleFields(state, rows)
-                                      : combinedField(state, rows);
+                                      ? minimumOfSingleFields(state, rows, threads)
+                                      : combinedField(state, rows, threads);
   const Components byComponent = groupByComponent(rows);
   std::vector<char> reached(state.componentCount, 0);
   for (const auto& [component, members] : byComponent) reached[component] = 1;

@@ -17,8 +17,6 @@
 namespace bake::geodesic {
 namespace {
 
-// Below this many entries in L, a pass takes under a millisecond: not worth starting a thread.
-constexpr std::size_t kThreadedFromNonZeros = 1000000;
 // The most right-hand sides substituted together (the work array interleaves them).
 constexpr std::size_t kMaxColumns = 8;
 

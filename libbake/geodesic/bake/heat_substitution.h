@@ -46,6 +46,10 @@ class SubstitutionPlan {
   // Columns [0, top) are split into the two groups' subtrees (empty when the tree does not split).
   std::size_t top() const { return top_; }
   const std::array<std::vector<std::pair<int, int>>, 2>& groups() const { return groups_; }
+  // Entries of L, and from how many the substitution uses more than one thread (below, a pass takes
+  // under a millisecond: not worth starting a thread).
+  std::size_t nonZeros() const { return nonZeros_; }
+  static constexpr std::size_t kThreadedFromNonZeros = 1000000;
   // Runs of columns substituted together (at most size(); fewer where columns share their rows).
   std::size_t runCount() const { return runStarts_.size(); }
 

@@ -22,7 +22,9 @@ struct HeatOptions {
   double timeFactor = 0.0;
   // Mollification epsilon relative to the mean edge length.
   double mollifyFactor = 1e-6;
-  unsigned threads = 0;  // build() factorises the two systems at once (0: all cores); never changes the output
+  // Threads (0: all cores) for build(), which factorises the two systems at once, and by default for
+  // each field's solves; never changes the output.
+  unsigned threads = 0;
   // Up to this many sources, the field is the minimum of one field per source (two solves each),
   // which is more accurate than one field from the heat of all sources together.
   std::size_t maxSeparateSources = 8;
@@ -56,7 +58,9 @@ class HeatSolver {
   HeatSolver& operator=(HeatSolver&&) noexcept;
   ~HeatSolver();
 
-  std::vector<double> distances(std::span<const SurfacePoint> sources) const;
+  // One field from the sources, on up to `threads` threads (0: HeatOptions::threads of build()); the
+  // field does not depend on the thread count.
+  std::vector<double> distances(std::span<const SurfacePoint> sources, unsigned threads = 0) const;
   const HeatStats& stats() const;
 
  private:
