@@ -10,7 +10,6 @@
 #include "geodesic/bake/heat_substitution.h"
 
 #include <algorithm>
-#include <cstring>
 
 #include "core/parallel.h"
 
