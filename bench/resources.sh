@@ -56,37 +56,22 @@ echo "tool,input,size,wall_s,peak_rss_mib" >"$csv"
 # Paths on the record are relative to the checkout (or to the shared data folder).
 show() { sed -e "s|$work/|SCRATCH/|g" -e "s|$here/||g" -e "s|$(cd "$here/.." && pwd)/|../|g" <<<"$*"; }
 
-# measure TOOL INPUT SIZE COMMAND...: runs the command once under GNU time and appends a row. A command
-# that fails gets a row saying so (no figures), and the script exits non-zero at the end. SIZE "?" is
-# filled in afterwards by set_size (from the tool's report or output).
+# measure_median RUNS TOOL INPUT SIZE COMMAND...: runs the command RUNS times under GNU time and appends
+# a row: the median wall time and the largest peak memory (a command short enough that one run is
+# mostly noise gets several). A command that fails gets a row saying so (no figures), and the script
+# exits non-zero at the end. SIZE "?" is filled in afterwards by set_size (from the tool's report or
+# output). measure TOOL INPUT SIZE COMMAND...: one run.
 failures=0
 last_ok=0
-measure() {
-  local tool="$1" input="$2" size="$3" rc=0
-  shift 3
-  echo "resources: $tool: $(show "$*")" >&2
-  /usr/bin/time -f '%e %M' -o "$work/time.txt" "$@" || rc=$?
-  if [[ $rc != 0 ]]; then
-    echo "resources: error: $tool failed (exit $rc)" >&2
-    echo "$tool,$input,failed (exit $rc),," >>"$csv"
-    failures=$((failures + 1))
-    last_ok=0
-  else
-    read -r wall kib < <(tail -1 "$work/time.txt")
-    awk -v t="$tool" -v i="$input" -v s="$size" -v w="$wall" -v k="$kib" \
-      'BEGIN { gsub(",", ";", i); gsub(",", ";", s); printf "%s,%s,%s,%.2f,%.1f\n", t, i, s, w, k / 1024 }' >>"$csv"
-    last_ok=1
-  fi
-  echo "$tool: $(show "$*")" >>"$commands"
-}
-set_size() { if [[ $last_ok == 1 ]]; then sed -i "\$s/,?,/,$1,/" "$csv"; fi; }
-
-# measure_median RUNS TOOL INPUT SIZE COMMAND...: like measure, for a command short enough that one
-# run is mostly noise: RUNS runs, the median wall time and the largest peak memory.
 measure_median() {
   local runs="$1" tool="$2" input="$3" size="$4" rc=0 k
   shift 4
-  echo "resources: $tool ($runs runs): $(show "$*")" >&2
+  if ((runs > 1)); then
+    echo "resources: $tool ($runs runs): $(show "$*")" >&2
+    input="$input (median of $runs runs)"
+  else
+    echo "resources: $tool: $(show "$*")" >&2
+  fi
   : >"$work/times.txt"
   for ((k = 0; k < runs; k++)); do
     /usr/bin/time -f '%e %M' -o "$work/time.txt" "$@" || rc=$?
@@ -97,13 +82,17 @@ measure_median() {
     echo "resources: error: $tool failed (exit $rc)" >&2
     echo "$tool,$input,failed (exit $rc),," >>"$csv"
     failures=$((failures + 1))
+    last_ok=0
   else
-    sort -n "$work/times.txt" | awk -v t="$tool" -v i="$input (median of $runs runs)" -v s="$size" \
+    sort -n "$work/times.txt" | awk -v t="$tool" -v i="$input" -v s="$size" \
       '{ wall[NR] = $1; if ($2 > kib) kib = $2 }
        END { gsub(",", ";", i); gsub(",", ";", s); printf "%s,%s,%s,%.2f,%.1f\n", t, i, s, wall[int((NR + 1) / 2)], kib / 1024 }' >>"$csv"
+    last_ok=1
   fi
   echo "$tool: $(show "$*")" >>"$commands"
 }
+measure() { measure_median 1 "$@"; }
+set_size() { if [[ $last_ok == 1 ]]; then sed -i "\$s/,?,/,$1,/" "$csv"; fi; }
 
 # A number from a tool's JSON report: the first value of KEY anywhere in it.
 report_value() {

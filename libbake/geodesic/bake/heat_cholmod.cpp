@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "geodesic/bake/heat_substitution.h"
 
 namespace bake::geodesic {
 namespace {

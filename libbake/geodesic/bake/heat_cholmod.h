@@ -11,9 +11,10 @@
 #include <span>
 
 #include "bake/core/status.h"
-#include "geodesic/bake/heat_substitution.h"
 
 namespace bake::geodesic {
+
+class SubstitutionPlan;
 
 // How a factorisation went past the BLAS it found (for the report).
 struct FactoriseReport {

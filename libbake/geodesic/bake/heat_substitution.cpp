@@ -19,17 +19,6 @@ namespace {
 // The most right-hand sides substituted together (the work array interleaves them).
 constexpr std::size_t kMaxColumns = 8;
 
-std::vector<int> eliminationParents(const SimplicialFactorView& f) {
-  const auto n = static_cast<int>(f.size);
-  std::vector<int> parent(f.size, -1);
-  for (int j = 0; j < n; ++j) {
-    int smallest = n;
-    for (int k = f.start[j] + 1; k < f.start[j] + f.count[j]; ++k) smallest = std::min(smallest, f.rows[k]);
-    parent[j] = smallest < n ? smallest : -1;
-  }
-  return parent;
-}
-
 // True when every entry of the columns in `ranges` lies in one of those ranges or in [top, n).
 bool rangesAreClosed(const SimplicialFactorView& f, const std::vector<std::pair<int, int>>& ranges,
                      std::size_t top) {
@@ -73,24 +62,29 @@ void SubstitutionPlan::findRuns() {
 SubstitutionPlan::SubstitutionPlan(const SimplicialFactorView& factor) : factor_(factor) {
   const std::size_t n = factor.size;
   top_ = 0;
+  // The elimination tree's parent of each column (its smallest row below the diagonal; -1 for a root),
+  // found while checking the layout.
+  std::vector<int> parent(n, -1);
   for (std::size_t j = 0; j < n; ++j) {
     // Every column must open with its diagonal and stay inside the matrix.
     if (factor.count[j] < 1 || factor.rows[factor.start[j]] != static_cast<int>(j)) return;
-    for (int k = factor.start[j] + 1; k < factor.start[j] + factor.count[j]; ++k)
-      if (factor.rows[k] <= static_cast<int>(j) || static_cast<std::size_t>(factor.rows[k]) >= n) return;
+    for (int k = factor.start[j] + 1; k < factor.start[j] + factor.count[j]; ++k) {
+      const int i = factor.rows[k];
+      if (i <= static_cast<int>(j) || static_cast<std::size_t>(i) >= n) return;
+      if (parent[j] < 0 || i < parent[j]) parent[j] = i;
+    }
     nonZeros_ += static_cast<std::size_t>(factor.count[j]);
   }
   valid_ = true;
-  splitTree();
+  splitTree(parent);
   findRuns();
 }
 
 // See the file comment: the top chain and two groups of subtrees below it.
-void SubstitutionPlan::splitTree() {
+void SubstitutionPlan::splitTree(const std::vector<int>& parent) {
   const SimplicialFactorView& factor = factor_;
   const std::size_t n = factor.size;
   if (n < 2) return;
-  const std::vector<int> parent = eliminationParents(factor);
   // Per node (n: a virtual root above the tree's roots) its number of children and its last child.
   std::vector<int> childCount(n + 1, 0), lastChild(n + 1, -1);
   std::vector<std::size_t> subtreeSize(n, 1), subtreeWork(n, 0);

@@ -56,7 +56,7 @@ class SubstitutionPlan {
  private:
   template <std::size_t M>
   void solveColumns(double* work, unsigned threads) const;
-  void splitTree();
+  void splitTree(const std::vector<int>& parent);
   void findRuns();
 
   SimplicialFactorView factor_;
