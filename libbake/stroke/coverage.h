@@ -42,12 +42,7 @@ class PixelFilter {
   double cdf(double v) const {
     if (v <= -h_) return 0;
     if (v >= h_) return 1;
-    if (v > 0) return 1 - cdf(-v);
-    if (v < -k_) {
-      const double s = v + h_;
-      return 0.5 * s * s * invAB_;
-    }
-    return 0.5 * b_ * invA_ + (v + k_) * invA_;
+    return v > 0 ? 1 - lowerHalf(-v) : lowerHalf(v);  // symmetric about 0; no recursion, so it inlines
   }
 
   // The trapezoid's first moment below v, integral of t w(t) dt (even in v, never positive).
@@ -77,6 +72,15 @@ class PixelFilter {
   }
 
  private:
+  // cdf on (-h, 0]: the quadratic corner, then the linear middle.
+  double lowerHalf(double v) const {
+    if (v < -k_) {
+      const double s = v + h_;
+      return 0.5 * s * s * invAB_;
+    }
+    return 0.5 * b_ * invA_ + (v + k_) * invA_;
+  }
+
   double a_, b_, h_, k_, invA_, invAB_, mk_;
 };
 

@@ -14,6 +14,7 @@
 // torus when that would not be smaller). No full-image pass runs per stroke.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "hatching/bake/build_stages.h"
 
@@ -49,10 +50,11 @@ int wrapIndex(int i, int n) {
 }
 
 // out[i] = sum_k w[k] in[i + k - r] along a line of `count` samples (`stride` apart), zero outside
-// unless periodic.
-void blurLine(const float* in, float* out, int count, std::size_t stride, const Kernel& kernel, bool periodic) {
+// unless periodic, for i in [from, to] only (the other outputs are left as they are).
+void blurLine(const float* in, float* out, int count, std::size_t stride, const Kernel& kernel, bool periodic,
+              int from, int to) {
   const int r = kernel.radius;
-  for (int i = 0; i < count; ++i) {
+  for (int i = from; i <= to; ++i) {
     float sum = 0;
     for (int k = -r; k <= r; ++k) {
       int j = i + k;
@@ -65,6 +67,14 @@ void blurLine(const float* in, float* out, int count, std::size_t stride, const 
     }
     out[std::size_t(i) * stride] = sum;
   }
+}
+
+// The outputs of a line blur that can be non-zero when the input is zero outside [first, last]: all
+// of them on a periodic line, else [first - r, last + r] clipped to the line. Empty (first > last) stays empty.
+std::pair<int, int> blurReach(int first, int last, int count, int r, bool periodic) {
+  if (first > last) return {0, -1};
+  if (periodic) return {0, count - 1};
+  return {std::max(0, first - r), std::min(count - 1, last + r)};
 }
 
 // The cells' mean darkness, smoothed by [1 2 1] / 4 along both axes (wrapping).
@@ -163,13 +173,36 @@ void applyFootprint(const stroke::InkFootprint& footprint, const Kernel& kernel,
   level.darknessSum += darkening;
   updateWide(level);
 
-  for (std::size_t y = 0; y < wy; ++y) blurLine(&added[y * wx], &rows[y * wx], int(wx), 1, kernel, sx.periodic);
-  for (std::size_t x = 0; x < wx; ++x) blurLine(&rows[x], &added[x], int(wy), wx, kernel, sy.periodic);
+  // The separable blur of `added`, computed only where it can be non-zero: a row without ink stays 0
+  // through the row pass, a row with ink spreads over its ink's span widened by the radius, and so
+  // for the columns. The outputs skipped are sums of zeros, so the result is bit for bit that of the
+  // passes over the whole rectangle (and adding 0 to `blurred` changes nothing), at the cost of the
+  // stroke's neighbourhood instead of its bounding box (a slanted stroke fills a fraction of it).
+  const int r = kernel.radius;
+  std::vector<int> rowFirst(wy, int(wx)), rowLast(wy, -1);
+  for (const stroke::InkFootprint::Pixel& p : footprint.pixels) {
+    const std::size_t lx = std::size_t(wrapIndex(p.x - sx.origin, side));
+    const std::size_t ly = std::size_t(wrapIndex(p.y - sy.origin, side));
+    rowFirst[ly] = std::min(rowFirst[ly], int(lx));
+    rowLast[ly] = std::max(rowLast[ly], int(lx));
+  }
+  std::vector<int> columnFirst(wx, int(wy)), columnLast(wx, -1);
   for (std::size_t y = 0; y < wy; ++y) {
-    const std::size_t gy = std::size_t(wrapIndex(sy.origin + int(y), side));
-    for (std::size_t x = 0; x < wx; ++x) {
+    const auto [from, to] = blurReach(rowFirst[y], rowLast[y], int(wx), r, sx.periodic);
+    blurLine(&added[y * wx], &rows[y * wx], int(wx), 1, kernel, sx.periodic, from, to);
+    for (int x = from; x <= to; ++x) {
+      columnFirst[std::size_t(x)] = std::min(columnFirst[std::size_t(x)], int(y));
+      columnLast[std::size_t(x)] = std::max(columnLast[std::size_t(x)], int(y));
+    }
+  }
+  std::fill(added.begin(), added.end(), 0.0f);  // the column pass's output
+  for (std::size_t x = 0; x < wx; ++x) {
+    const auto [from, to] = blurReach(columnFirst[x], columnLast[x], int(wy), r, sy.periodic);
+    blurLine(&rows[x], &added[x], int(wy), wx, kernel, sy.periodic, from, to);
+    for (int y = from; y <= to; ++y) {
+      const std::size_t gy = std::size_t(wrapIndex(sy.origin + y, side));
       const std::size_t gx = std::size_t(wrapIndex(sx.origin + int(x), side));
-      level.blurred[gy * std::size_t(side) + gx] += added[y * wx + x];
+      level.blurred[gy * std::size_t(side) + gx] += added[std::size_t(y) * wx + x];
     }
   }
 }
