@@ -71,14 +71,24 @@ struct RunOutcome {
 // time-out after `timeoutSeconds`, address space above `memoryLimitBytes` when that is not 0).
 RunOutcome runIsolated(const std::function<Measurement()>& job, double timeoutSeconds, double memoryLimitBytes);
 
-// Times `field` up to `repeats` times (fewer once `budgetSeconds` is spent, at least once); the median.
-double medianSeconds(const std::function<void()>& field, int repeats, double budgetSeconds, int* runs);
+// How often a measurement repeats: `repeats` times, and more while they add up to under `minSeconds`
+// (a field of 0.1 ms measured three times is mostly the machine's noise), at most kMaxRepeats; fewer
+// once `budgetSeconds` is spent, at least once. The same rule for every method, ours and the peers'.
+struct RepeatRule {
+  int repeats = 5;
+  double minSeconds = 0.25;
+  double budgetSeconds = 20.0;
+  static constexpr int kMaxRepeats = 200;
+  bool again(int done, double elapsedSeconds) const;
+};
+
+// Times `field` as `rule` says; the median.
+double medianSeconds(const std::function<void()>& field, const RepeatRule& rule, int* runs);
 double medianOf(std::vector<double> times);  // of a non-empty list; 0 for none
 
 // ---- methods.cpp ----
 struct MethodSettings {
-  int repeats = 5;
-  double repeatBudgetSeconds = 20.0;
+  RepeatRule repeat;
 };
 
 struct Method {

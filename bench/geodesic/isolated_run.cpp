@@ -129,15 +129,20 @@ RunOutcome runIsolated(const std::function<Measurement()>& job, double timeoutSe
   return parse(buffer);
 }
 
-double medianSeconds(const std::function<void()>& field, int repeats, double budgetSeconds, int* runs) {
+bool RepeatRule::again(int done, double elapsedSeconds) const {
+  if (elapsedSeconds > budgetSeconds) return false;
+  if (done < repeats) return true;
+  return elapsedSeconds < minSeconds && done < kMaxRepeats;
+}
+
+double medianSeconds(const std::function<void()>& field, const RepeatRule& rule, int* runs) {
   std::vector<double> times;
   const auto start = Clock::now();
-  for (int i = 0; i < std::max(1, repeats); ++i) {
+  do {
     const auto before = Clock::now();
     field();
     times.push_back(std::chrono::duration<double>(Clock::now() - before).count());
-    if (std::chrono::duration<double>(Clock::now() - start).count() > budgetSeconds) break;
-  }
+  } while (rule.again(static_cast<int>(times.size()), std::chrono::duration<double>(Clock::now() - start).count()));
   if (runs) *runs = static_cast<int>(times.size());
   return medianOf(std::move(times));
 }

@@ -195,7 +195,7 @@ std::vector<std::filesystem::path> sharedMeshes(const std::filesystem::path& dir
 int run(Settings settings) {
   if (settings.quick) {
     settings.ladder.maxTriangles = std::min<std::size_t>(settings.ladder.maxTriangles, 30'000);
-    settings.methods.repeats = std::min(settings.methods.repeats, 3);
+    settings.methods.repeat.repeats = std::min(settings.methods.repeat.repeats, 3);
   }
   if (settings.ladder.meshes.empty()) {
     settings.ladder.meshes = sharedMeshes(settings.dataDir);
@@ -249,8 +249,10 @@ int main(int argc, char** argv) {
   app.add_option("--out", settings.out, "Output directory (geodesic.csv, summary.txt)");
   app.add_option("--mesh", meshes, "Base mesh instead of the shared set (repeatable; no sphere then)");
   app.add_option("--data-dir", settings.dataDir, "Directory of the shared real meshes");
-  app.add_option("--repeats", settings.methods.repeats, "Repetitions per field (median)");
-  app.add_option("--repeat-budget", settings.methods.repeatBudgetSeconds, "Stop repeating after this many seconds");
+  app.add_option("--repeats", settings.methods.repeat.repeats, "Repetitions per field and set-up (median)");
+  app.add_option("--min-seconds", settings.methods.repeat.minSeconds,
+                 "Repeat a field or set-up (up to 200 times) until its runs add up to this many seconds");
+  app.add_option("--repeat-budget", settings.methods.repeat.budgetSeconds, "Stop repeating after this many seconds");
   app.add_option("--methods", settings.onlyMethods, "Only these methods (exact heat fmm cgal-exact cgal-heat)")
       ->delimiter(',');
   app.add_option("--cgal-exact-max-triangles", settings.cgalExactMaxTriangles,

@@ -35,11 +35,11 @@ T valueOrThrow(Result<T> result) {
 
 Measurement timeField(const MethodSettings& settings, const std::function<std::vector<double>()>& field) {
   Measurement m;
-  m.seconds = medianSeconds([&] { m.distances = field(); }, settings.repeats, settings.repeatBudgetSeconds, &m.runs);
+  m.seconds = medianSeconds([&] { m.distances = field(); }, settings.repeat, &m.runs);
   return m;
 }
 
-// Builds a solver as often as a field is repeated and gives the last one, with the median build time:
+// Builds a solver as often as the repeat rule says and gives the last one, with the median build time:
 // a set-up of tens of milliseconds measured once is too noisy to compare with a peer's.
 // The previous solver is freed outside the timed part.
 template <class Build>
@@ -47,13 +47,12 @@ auto timedSetup(const MethodSettings& settings, Build build, double& seconds) {
   std::optional<decltype(build())> solver;
   std::vector<double> times;
   const auto start = Clock::now();
-  for (int i = 0; i < std::max(1, settings.repeats); ++i) {
+  do {
     solver.reset();
     const auto before = Clock::now();
     solver.emplace(build());
     times.push_back(secondsSince(before));
-    if (secondsSince(start) > settings.repeatBudgetSeconds) break;
-  }
+  } while (settings.repeat.again(static_cast<int>(times.size()), secondsSince(start)));
   seconds = medianOf(std::move(times));
   return std::move(*solver);
 }
