@@ -199,9 +199,9 @@ void applyFootprint(const stroke::InkFootprint& footprint, const Kernel& kernel,
   for (std::size_t x = 0; x < wx; ++x) {
     const auto [from, to] = blurReach(columnFirst[x], columnLast[x], int(wy), r, sy.periodic);
     blurLine(&rows[x], &added[x], int(wy), wx, kernel, sy.periodic, from, to);
+    const std::size_t gx = std::size_t(wrapIndex(sx.origin + int(x), side));
     for (int y = from; y <= to; ++y) {
       const std::size_t gy = std::size_t(wrapIndex(sy.origin + y, side));
-      const std::size_t gx = std::size_t(wrapIndex(sx.origin + int(x), side));
       level.blurred[gy * std::size_t(side) + gx] += added[std::size_t(y) * wx + x];
     }
   }
