@@ -173,6 +173,12 @@ TEST(HeatSubstitution, RefusesAFactorNotLaidOutAsExpected) {
   HandFactor above = handFactor();
   above.rows[4] = 0;  // column 1 holds a row above its diagonal
   EXPECT_FALSE(SubstitutionPlan(above.view(false)).valid());
+  HandFactor repeated = handFactor();
+  repeated.permutation[1] = 3;  // row 3 twice, row 6 never
+  EXPECT_FALSE(SubstitutionPlan(repeated.view(false)).valid());
+  HandFactor outside = handFactor();
+  outside.permutation[0] = 7;  // past the last row
+  EXPECT_FALSE(SubstitutionPlan(outside.view(false)).valid());
 }
 
 }  // namespace

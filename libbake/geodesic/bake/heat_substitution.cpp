@@ -75,6 +75,15 @@ SubstitutionPlan::SubstitutionPlan(const SimplicialFactorView& factor) : factor_
     }
     nonZeros_ += static_cast<std::size_t>(factor.count[j]);
   }
+  // The permutation, if any, must name every row once: solve() reads and writes through it.
+  if (factor.permutation) {
+    std::vector<char> seen(n, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+      const int row = factor.permutation[k];
+      if (row < 0 || static_cast<std::size_t>(row) >= n || seen[static_cast<std::size_t>(row)]) return;
+      seen[static_cast<std::size_t>(row)] = 1;
+    }
+  }
   valid_ = true;
   splitTree(parent);
   findRuns();
@@ -169,7 +178,7 @@ void backward(const SimplicialFactorView& f, int begin, int end, double* work) {
   }
 }
 
-// One right-hand side, a run of R columns j .. j+R-1 at a time (see columnRuns): the run's own
+// One right-hand side, a run of R columns j .. j+R-1 at a time (see findRuns): the run's own
 // triangle first, then its shared rows, each read or updated once for the R columns.
 template <int R>
 void forwardRun(const SimplicialFactorView& f, int j, double* work, std::size_t top, double* topBuffer) {

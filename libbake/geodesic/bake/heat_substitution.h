@@ -41,7 +41,8 @@ class SubstitutionPlan {
   void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
              unsigned threads) const;
 
-  // False when the factor is not laid out as described (the caller then solves some other way).
+  // False when the factor is not laid out as described, or its permutation is not one (the caller
+  // then solves some other way).
   bool valid() const { return valid_; }
   // Columns [0, top) are split into the two groups' subtrees (empty when the tree does not split).
   std::size_t top() const { return top_; }
