@@ -277,12 +277,23 @@ Result<CholeskyFactor> CholeskyFactor::factoriseSimplicial(const SparseUpper& up
 }
 
 void CholeskyFactor::solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
-                           unsigned threads) const {
+                           unsigned threads, ColumnLayout layout) const {
   if (impl_->planned) {
-    impl_->substitution.solve(rhs, solution, columns, threads);
+    impl_->substitution.solve(rhs, solution, columns, threads, layout);
     return;
   }
-  solveWithCholmod(rhs, solution, columns);
+  if (layout == ColumnLayout::Consecutive || columns == 1) {
+    solveWithCholmod(rhs, solution, columns);
+    return;
+  }
+  // CHOLMOD reads and writes columns one after another.
+  const std::size_t n = size();
+  std::vector<double> consecutive(n * columns), solved(n * columns);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < columns; ++c) consecutive[c * n + r] = rhs[r * columns + c];
+  solveWithCholmod(consecutive, solved, columns);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < columns; ++c) solution[r * columns + c] = solved[c * n + r];
 }
 
 void CholeskyFactor::solveWithCholmod(std::span<const double> rhs, std::span<double> solution,

@@ -11,10 +11,9 @@
 #include <span>
 
 #include "bake/core/status.h"
+#include "geodesic/bake/heat_substitution.h"
 
 namespace bake::geodesic {
-
-class SubstitutionPlan;
 
 // How a factorisation went past the BLAS it found (for the report).
 struct FactoriseReport {
@@ -39,11 +38,11 @@ class CholeskyFactor {
   ~CholeskyFactor();
 
   std::size_t size() const;
-  // Solves A X = B for `columns` right-hand sides stored column after column (size() values each),
-  // by our own substitution (heat_substitution.h) on up to `threads` threads (0: all cores); the
-  // solution does not depend on `threads`.
+  // Solves A X = B for `columns` right-hand sides stored as `layout` says (size() rows each), by our
+  // own substitution (heat_substitution.h) on up to `threads` threads (0: all cores); the solution
+  // does not depend on `threads`.
   void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns = 1,
-             unsigned threads = 1) const;
+             unsigned threads = 1, ColumnLayout layout = ColumnLayout::Consecutive) const;
   // The substitution's plan; null when solves go through CHOLMOD (a factor not laid out as expected).
   const SubstitutionPlan* substitution() const;
   // The same through CHOLMOD's own solve (an independent check of the substitution).

@@ -1,6 +1,5 @@
-// Cotangent Laplacian, lumped mass and per-face hat gradients on an intrinsic triangulation, and the
-// per-field divergence of the normalised heat gradient (Crane, Weischedel and Wardetzky 2013, section
-// 3.2, steps II and III of Algorithm 1).
+// Cotangent Laplacian, lumped mass and per-face hat gradients on an intrinsic triangulation (Crane,
+// Weischedel and Wardetzky 2013, section 3.2); the divergence of step II is in heat_divergence.cpp.
 //
 // Everything is computed from edge lengths alone (Sharp, Soliman and Crane 2019): each face is laid
 // out in its own plane, corner 0 at the origin and corner 1 on the x axis, and hat gradients are the
@@ -117,41 +116,6 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> assembleUpper(const HeatOperat
   matrix.setFromTriplets(entries.begin(), entries.end());
   matrix.makeCompressed();
   return matrix;
-}
-
-void divergenceOfNormalizedGradient(const HeatOperators& ops, std::span<const double> u,
-                                    std::span<double> rhs, std::size_t columns) {
-  const std::size_t n = columns > 0 ? u.size() / columns : 0;
-  // Squared gradients inside this range are safe to square-root and invert directly.
-  constexpr double kSafeLow = 1e-280, kSafeHigh = 1e280;
-  for (const HeatFace& face : ops.faces) {
-    // area * grad phi_i, per corner: the divergence's weights, and (area > 0) parallel to the gradient.
-    std::array<std::array<double, 2>, 3> weighted;
-    for (int i = 0; i < 3; ++i)
-      weighted[i] = {face.area * face.hatGradient[i][0], face.area * face.hatGradient[i][1]};
-    for (std::size_t c = 0; c < columns; ++c) {
-      const double* field = u.data() + c * n;
-      double gx = 0.0, gy = 0.0;
-      for (int i = 0; i < 3; ++i) {
-        gx += field[face.vertices[i]] * weighted[i][0];
-        gy += field[face.vertices[i]] * weighted[i][1];
-      }
-      // X = -g / |g|. Far from the sources u is as small as 1e-300, where the squares would underflow:
-      // there the components are scaled by the larger first (hypot's care, at a fraction of its cost).
-      double squared = gx * gx + gy * gy;
-      if (!(squared > kSafeLow && squared < kSafeHigh)) {
-        const double scale = std::max(std::abs(gx), std::abs(gy));
-        if (!(scale > 0.0) || !std::isfinite(scale)) continue;  // flat, or not a number
-        gx /= scale;
-        gy /= scale;
-        squared = gx * gx + gy * gy;
-      }
-      const double inverseNorm = 1.0 / std::sqrt(squared);
-      const double xx = -gx * inverseNorm, xy = -gy * inverseNorm;
-      double* out = rhs.data() + c * n;
-      for (int i = 0; i < 3; ++i) out[face.vertices[i]] += weighted[i][0] * xx + weighted[i][1] * xy;
-    }
-  }
 }
 
 }  // namespace bake::geodesic

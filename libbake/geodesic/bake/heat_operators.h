@@ -48,9 +48,10 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> assembleUpper(const HeatOperat
 
 // rhs_i = sum over faces of area * (grad phi_i . X) with X = -grad u / |grad u| (the unit vector
 // pointing away from the heat source); faces where u is flat contribute nothing. With `columns` > 1,
-// u and rhs hold that many fields one after another (vertexCount values each), done in one pass over
-// the faces.
-void divergenceOfNormalizedGradient(const HeatOperators& ops, std::span<const double> u,
+// u and rhs hold that many fields interleaved (vertex v's values at v * columns .. v * columns +
+// columns), done in one pass over the faces; each field's values are those of a pass of its own.
+// `faces` are HeatOperators::faces, or the same with their corners renumbered as u's rows are.
+void divergenceOfNormalizedGradient(std::span<const HeatFace> faces, std::span<const double> u,
                                     std::span<double> rhs, std::size_t columns = 1);
 
 }  // namespace bake::geodesic

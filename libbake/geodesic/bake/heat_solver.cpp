@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -47,6 +48,12 @@ struct HeatSystem {
   HeatOperators ops;
   std::optional<CholeskyFactor> heat;
   std::optional<CholeskyFactor> poisson;
+  // Where a field lives from step I to step III. When both factors share one row order (one
+  // analysis) and both go through our own substitution, in that order: row k is vertex vertexOfRow[k]
+  // and ops.faces name rows, so no solve copies its values in or out. Otherwise (both empty) row k is
+  // vertex k.
+  std::vector<std::uint32_t> vertexOfRow;
+  std::vector<std::uint32_t> rowOfVertex;
   std::size_t maxPinnedSources = 0;
   std::size_t maxSeparateSources = 0;
   // A field's default threads (HeatOptions::threads). Fields call no BLAS: their solves are our own
@@ -115,22 +122,46 @@ double rowDot(const SourceRow& row, const double* field) {
   return s;
 }
 
-// Step I: heat from the sources, spread over their face corners by barycentric weight.
-std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRow>& rows, unsigned threads) {
-  std::vector<double> delta(state.vertexCount, 0.0), u(state.vertexCount, 0.0);
-  for (const SourceRow& row : rows)
-    for (int i = 0; i < 3; ++i) delta[row.vertices[i]] += row.weights[i];
-  state.heat->solve(delta, u, 1, threads);
+std::size_t rowOf(const HeatSystem& state, std::size_t vertex) {
+  return state.rowOfVertex.empty() ? vertex : state.rowOfVertex[vertex];
+}
+std::size_t vertexOf(const HeatSystem& state, std::size_t row) {
+  return state.vertexOfRow.empty() ? row : state.vertexOfRow[row];
+}
+
+// Solves with `factor` in place, for `columns` interleaved fields in rows (see HeatSystem::vertexOfRow).
+void solveRows(const HeatSystem& state, const CholeskyFactor& factor, std::vector<double>& values,
+               std::size_t columns, unsigned threads) {
+  if (!state.vertexOfRow.empty()) {
+    factor.substitution()->solveInFactorOrder(values, columns, threads);
+    return;
+  }
+  std::vector<double> solution(values.size());
+  factor.solve(values, solution, columns, threads, ColumnLayout::Interleaved);
+  values = std::move(solution);
+}
+
+// Step I for `columns` sources rows[first, first + columns): heat spread over their face corners by
+// barycentric weight, in rows, interleaved.
+std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRow>& rows, std::size_t first,
+                             std::size_t columns, unsigned threads) {
+  std::vector<double> u(state.vertexCount * columns, 0.0);
+  for (std::size_t j = 0; j < columns; ++j)
+    for (int i = 0; i < 3; ++i) u[rowOf(state, rows[first + j].vertices[i]) * columns + j] += rows[first + j].weights[i];
+  solveRows(state, *state.heat, u, columns, threads);
   return u;
 }
 
-// Steps II and III with the pinned factor: phi0 = G div X.
-std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u, unsigned threads) {
-  std::vector<double> rhs(state.vertexCount, 0.0), phi(state.vertexCount, 0.0);
-  divergenceOfNormalizedGradient(state.ops, u, rhs);
-  for (std::size_t v = 0; v < state.vertexCount; ++v)
-    if (state.pinned[v] || state.isolated[v]) rhs[v] = 0.0;
-  state.poisson->solve(rhs, phi, 1, threads);
+// Steps II and III with the pinned factor, phi0 = G div X, for `columns` interleaved fields in rows.
+std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u,
+                                        std::size_t columns, unsigned threads) {
+  std::vector<double> phi(state.vertexCount * columns, 0.0);  // div X, then phi0
+  divergenceOfNormalizedGradient(state.ops.faces, u, phi, columns);
+  for (std::size_t k = 0; k < state.vertexCount; ++k) {
+    const std::size_t v = vertexOf(state, k);
+    if (state.pinned[v] || state.isolated[v]) std::fill_n(phi.begin() + k * columns, columns, 0.0);
+  }
+  solveRows(state, *state.poisson, phi, columns, threads);
   return phi;
 }
 
@@ -208,6 +239,27 @@ bool finiteGeometry(const Surface& surface) {
                      [](double l) { return std::isfinite(l); });
 }
 
+// See HeatSystem::vertexOfRow.
+void orderByFactorRows(HeatSystem& state) {
+  const SubstitutionPlan* heat = state.heat->substitution();
+  const SubstitutionPlan* poisson = state.poisson->substitution();
+  if (!heat || !poisson) return;
+  const std::size_t n = state.vertexCount;
+  const auto rowsOf = [n](const SubstitutionPlan& plan) {
+    std::vector<std::uint32_t> vertices(n);
+    for (std::size_t k = 0; k < n; ++k)
+      vertices[k] = plan.permutation() ? static_cast<std::uint32_t>(plan.permutation()[k]) : static_cast<std::uint32_t>(k);
+    return vertices;
+  };
+  std::vector<std::uint32_t> vertexOfRow = rowsOf(*heat);
+  if (vertexOfRow != rowsOf(*poisson)) return;
+  state.rowOfVertex.assign(n, 0);
+  for (std::size_t k = 0; k < n; ++k) state.rowOfVertex[vertexOfRow[k]] = static_cast<std::uint32_t>(k);
+  state.vertexOfRow = std::move(vertexOfRow);
+  for (HeatFace& face : state.ops.faces)
+    for (std::uint32_t& v : face.vertices) v = state.rowOfVertex[v];
+}
+
 }  // namespace
 
 Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& options) {
@@ -269,6 +321,7 @@ Result<HeatSolver> HeatSolver::build(const Surface& surface, const HeatOptions& 
   state->threads = options.threads;
   state->heat.emplace(std::move(factors[0]));
   state->poisson.emplace(std::move(factors[1]));
+  orderByFactorRows(*state);
   stats.factorSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return HeatSolver(std::move(state));
 }
@@ -286,7 +339,14 @@ Components groupByComponent(const std::vector<SourceRow>& rows) {
 // One heat-method field from all the rows together, each source held at its value (or, beyond the
 // pin limit, the mean over the sources). Valid on the components that hold a source.
 std::vector<double> combinedField(const HeatSystem& state, const std::vector<SourceRow>& rows, unsigned threads) {
-  std::vector<double> phi = integrateDirections(state, heatFlow(state, rows, threads), threads);
+  // One column: the sum of every source's heat.
+  std::vector<double> delta(state.vertexCount, 0.0);
+  for (const SourceRow& row : rows)
+    for (int i = 0; i < 3; ++i) delta[rowOf(state, row.vertices[i])] += row.weights[i];
+  solveRows(state, *state.heat, delta, 1, threads);
+  const std::vector<double> byRow = integrateDirections(state, delta, 1, threads);
+  std::vector<double> phi(state.vertexCount);
+  for (std::size_t k = 0; k < state.vertexCount; ++k) phi[vertexOf(state, k)] = byRow[k];
   const Components byComponent = groupByComponent(rows);
   std::size_t pinnedTotal = 0;
   for (const auto& [component, members] : byComponent)
@@ -300,31 +360,46 @@ std::vector<double> combinedField(const HeatSystem& state, const std::vector<Sou
   return phi;
 }
 
+// body(begin, end) over blocks of [0, count), on up to `threads` threads where there are enough
+// vertices to pay for starting one. For loops whose every vertex is computed alone (so the result is
+// the same on any number of threads).
+void forEachVertexBlock(std::size_t count, unsigned threads,
+                        const std::function<void(std::size_t, std::size_t)>& body) {
+  constexpr std::size_t kBlock = 16384;
+  if (count < 2 * kBlock) {
+    body(0, count);
+    return;
+  }
+  parallelForBlocks(count, kBlock, threads, body);
+}
+
 // Steps I to III for the sources rows[first, first + m) through each factor together, m columns in
 // one solve (the factor is read once per batch instead of once per source), each field shifted to
-// its source; their minimum into phi.
+// its source; their minimum into phi. The fields are interleaved (a row's m values side by side), so
+// that step II reads and writes one short row per corner for all of them; every field's values are
+// those it would have alone.
 void singleFieldsBatch(const HeatSystem& state, const std::vector<SourceRow>& rows, std::size_t first,
                        std::size_t m, unsigned solveThreads, std::vector<double>& phi) {
   const std::size_t n = state.vertexCount;
-  std::vector<double> delta(n * m, 0.0), u(n * m, 0.0);
-  for (std::size_t j = 0; j < m; ++j)
-    for (int i = 0; i < 3; ++i) delta[j * n + rows[first + j].vertices[i]] += rows[first + j].weights[i];
-  state.heat->solve(delta, u, m, solveThreads);
-  std::vector<double>& rhs = delta;  // step I's right-hand sides are spent
-  std::fill(rhs.begin(), rhs.end(), 0.0);
-  divergenceOfNormalizedGradient(state.ops, u, rhs, m);
-  for (std::size_t v = 0; v < n; ++v)
-    if (state.pinned[v] || state.isolated[v])
-      for (std::size_t j = 0; j < m; ++j) rhs[j * n + v] = 0.0;
-  std::vector<double>& single = u;
-  state.poisson->solve(rhs, single, m, solveThreads);
+  const std::vector<double> field =
+      integrateDirections(state, heatFlow(state, rows, first, m, solveThreads), m, solveThreads);
+  // Each field shifted so that its source's error is 0 (as shiftToSources does for one field alone).
+  std::vector<double> shift(m);
+  std::vector<std::uint32_t> component(m);
   for (std::size_t j = 0; j < m; ++j) {
-    const std::span<double> field(single.data() + j * n, n);
-    shiftToSources(state, rows, {first + j}, field);
-    const std::uint32_t component = rows[first + j].component;
-    for (std::size_t v = 0; v < n; ++v)
-      if (state.componentOf[v] == component) phi[v] = std::min(phi[v], field[v]);
+    const SourceRow& row = rows[first + j];
+    double value = 0.0;
+    for (int i = 0; i < 3; ++i) value += row.weights[i] * field[rowOf(state, row.vertices[i]) * m + j];
+    shift[j] = value - row.value;
+    component[j] = row.component;
   }
+  forEachVertexBlock(n, solveThreads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t v = vertexOf(state, k);
+      for (std::size_t j = 0; j < m; ++j)
+        if (state.componentOf[v] == component[j]) phi[v] = std::min(phi[v], field[k * m + j] - shift[j]);
+    }
+  });
 }
 
 // The minimum of one field per source: each is the single-source heat method, which is more accurate
@@ -333,9 +408,9 @@ void singleFieldsBatch(const HeatSystem& state, const std::vector<SourceRow>& ro
 // two sources against 1.5 % for the minimum of their fields). Two solves per source.
 std::vector<double> minimumOfSingleFields(const HeatSystem& state, const std::vector<SourceRow>& rows,
                                           unsigned threads) {
-  // Batches of a fixed size (never set by the thread count, so the output does not depend on it),
-  // run side by side.
-  constexpr std::size_t kBatch = 4;
+  // Batches of up to as many columns as a substitution takes, run side by side. A field's values do
+  // not depend on the batch it is in (see singleFieldsBatch), nor then on the thread count.
+  constexpr std::size_t kBatch = SubstitutionPlan::kMaxColumns;
   const std::size_t batches = (rows.size() + kBatch - 1) / kBatch;
   std::vector<std::vector<double>> partial(batches);
   // One batch alone has the threads to itself for its substitutions.
@@ -366,7 +441,7 @@ double straightDistance(const Vec3d& a, const Vec3d& b) {
   return std::hypot(dx, dy, dz);
 }
 
-void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows,
+void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows, unsigned threads,
                      std::vector<double>& result) {
   if (rows.size() > kMaxBoundedSources) return;
   std::vector<Vec3d> points;
@@ -376,14 +451,16 @@ void applyPathBounds(const HeatSystem& state, const std::vector<SourceRow>& rows
       for (int k = 0; k < 3; ++k) p[k] += row.weights[i] * state.positions[row.vertices[i]][k];
     points.push_back(p);
   }
-  for (std::size_t v = 0; v < state.vertexCount; ++v) {
-    if (!std::isfinite(result[v])) continue;
-    double lower = kUnreachable;
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      if (rows[r].component == state.componentOf[v])
-        lower = std::min(lower, straightDistance(state.positions[v], points[r]));
-    if (lower != kUnreachable) result[v] = std::max(result[v], lower);
-  }
+  forEachVertexBlock(state.vertexCount, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      if (!std::isfinite(result[v])) continue;
+      double lower = kUnreachable;
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        if (rows[r].component == state.componentOf[v])
+          lower = std::min(lower, straightDistance(state.positions[v], points[r]));
+      if (lower != kUnreachable) result[v] = std::max(result[v], lower);
+    }
+  });
   for (std::size_t r = 0; r < rows.size(); ++r)
     for (std::uint32_t v : rows[r].vertices)
       result[v] = std::min(result[v], straightDistance(state.positions[v], points[r]));
@@ -407,7 +484,7 @@ std::vector<double> HeatSolver::distances(std::span<const SurfacePoint> sources,
   for (std::size_t v = 0; v < state.vertexCount; ++v)
     if (reached[state.componentOf[v]] && !state.isolated[v])
       result[v] = std::isfinite(phi[v]) ? std::max(0.0, phi[v]) : 0.0;
-  applyPathBounds(state, rows, result);
+  applyPathBounds(state, rows, threads, result);
   for (const SourceRow& row : rows)
     if (row.vertex >= 0) result[static_cast<std::size_t>(row.vertex)] = 0.0;
   return result;

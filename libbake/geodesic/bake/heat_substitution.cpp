@@ -10,14 +10,16 @@
 #include "geodesic/bake/heat_substitution.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/parallel.h"
+#include "core/vector_clones.h"
 
 namespace bake::geodesic {
 namespace {
 
 // The most right-hand sides substituted together (the work array interleaves them).
-constexpr std::size_t kMaxColumns = 8;
+constexpr std::size_t kMaxColumns = SubstitutionPlan::kMaxColumns;
 
 // True when every entry of the columns in `ranges` lies in one of those ranges or in [top, n).
 bool rangesAreClosed(const SimplicialFactorView& f, const std::vector<std::pair<int, int>>& ranges,
@@ -136,194 +138,212 @@ void SubstitutionPlan::splitTree(const std::vector<int>& parent) {
 
 namespace {
 
-// Forward substitution over columns [begin, end): L y = b in place. Updates of rows at or past
-// `top` go to `topBuffer` (row i at (i - top) * M) when it is given.
-template <std::size_t M>
-void forward(const SimplicialFactorView& f, int begin, int end, double* work, std::size_t top,
-             double* topBuffer) {
-  for (int j = begin; j < end; ++j) {
-    double* x = work + static_cast<std::size_t>(j) * M;
-    if (!f.unitDiagonal) {
-      const double d = f.values[f.start[j]];
-      for (std::size_t c = 0; c < M; ++c) x[c] /= d;
-    }
-    bool zero = true;
-    for (std::size_t c = 0; c < M; ++c) zero = zero && x[c] == 0.0;
-    if (zero) continue;  // a sparse right-hand side: nothing to pass on
-    const int last = f.start[j] + f.count[j];
-    for (int k = f.start[j] + 1; k < last; ++k) {
-      const auto i = static_cast<std::size_t>(f.rows[k]);
-      const double l = f.values[k];
-      double* y = topBuffer && i >= top ? topBuffer + (i - top) * M : work + i * M;
-      for (std::size_t c = 0; c < M; ++c) y[c] -= l * x[c];
-    }
-  }
-}
+// The kernels below are templates over a run's length R (1 to 4, see findRuns) and the number M of
+// right-hand sides substituted together (1 to kMaxColumns, interleaved: row i's values are
+// work[i * M .. i * M + M)). Every right-hand side goes through the same operations in the same order
+// whatever M is, so a batch's solutions are those of its columns solved one at a time, bit for bit;
+// the M values of a row sit side by side, so the compiler turns the loops over them into vector
+// operations.
 
-// Back substitution over columns [begin, end), last first: L' x = y in place (D y first for LDL').
-template <std::size_t M>
-void backward(const SimplicialFactorView& f, int begin, int end, double* work) {
-  for (int j = end - 1; j >= begin; --j) {
-    double sum[M];
-    double* x = work + static_cast<std::size_t>(j) * M;
-    const double d = f.values[f.start[j]];
-    for (std::size_t c = 0; c < M; ++c) sum[c] = f.unitDiagonal ? x[c] / d : x[c];
-    const int last = f.start[j] + f.count[j];
-    for (int k = f.start[j] + 1; k < last; ++k) {
-      const double l = f.values[k];
-      const double* y = work + static_cast<std::size_t>(f.rows[k]) * M;
-      for (std::size_t c = 0; c < M; ++c) sum[c] -= l * y[c];
-    }
-    for (std::size_t c = 0; c < M; ++c) x[c] = f.unitDiagonal ? sum[c] : sum[c] / d;
-  }
-}
-
-// One right-hand side, a run of R columns j .. j+R-1 at a time (see findRuns): the run's own
-// triangle first, then its shared rows, each read or updated once for the R columns.
-template <int R>
-void forwardRun(const SimplicialFactorView& f, int j, double* work, std::size_t top, double* topBuffer) {
-  double x[R];
+// Forward substitution of a run of R columns j .. j+R-1 (L y = b in place): the run's own triangle
+// first, then its shared rows, each read or updated once for the R columns. Updates of rows at or
+// past `top` go to `topBuffer` (row i at (i - top) * M) when it is given.
+template <int R, std::size_t M>
+BAKE_INLINE_KERNEL void forwardRun(const SimplicialFactorView& f, int j, double* work, std::size_t top,
+                            double* topBuffer) {
+  double x[R][M];
   bool zero = true;
   for (int t = 0; t < R; ++t) {
     const int s = f.start[j + t];
-    x[t] = f.unitDiagonal ? work[j + t] : work[j + t] / f.values[s];
-    for (int u = 1; u < R - t; ++u) work[j + t + u] -= f.values[s + u] * x[t];
-    zero = zero && x[t] == 0.0;
+    const double* b = work + static_cast<std::size_t>(j + t) * M;
+    for (std::size_t c = 0; c < M; ++c) x[t][c] = f.unitDiagonal ? b[c] : b[c] / f.values[s];
+    for (int u = 1; u < R - t; ++u) {
+      double* y = work + static_cast<std::size_t>(j + t + u) * M;
+      for (std::size_t c = 0; c < M; ++c) y[c] -= f.values[s + u] * x[t][c];
+    }
+    for (std::size_t c = 0; c < M; ++c) zero = zero && x[t][c] == 0.0;
   }
-  for (int t = 0; t < R; ++t) work[j + t] = x[t];
+  for (int t = 0; t < R; ++t)
+    for (std::size_t c = 0; c < M; ++c) work[static_cast<std::size_t>(j + t) * M + c] = x[t][c];
   if (zero) return;  // a sparse right-hand side: nothing to pass on
   const int shared = f.count[j] - R;
   const int* rows = f.rows + f.start[j] + R;
   const double* l[R];
   for (int t = 0; t < R; ++t) l[t] = f.values + f.start[j + t] + (R - t);
   for (int k = 0; k < shared; ++k) {
-    double delta = l[0][k] * x[0];
-    for (int t = 1; t < R; ++t) delta += l[t][k] * x[t];
+    double delta[M];
+    for (std::size_t c = 0; c < M; ++c) delta[c] = l[0][k] * x[0][c];
+    for (int t = 1; t < R; ++t)
+      for (std::size_t c = 0; c < M; ++c) delta[c] += l[t][k] * x[t][c];
     const auto i = static_cast<std::size_t>(rows[k]);
-    if (topBuffer && i >= top) topBuffer[i - top] -= delta;
-    else work[i] -= delta;
+    double* y = topBuffer && i >= top ? topBuffer + (i - top) * M : work + i * M;
+    for (std::size_t c = 0; c < M; ++c) y[c] -= delta[c];
   }
 }
 
-template <int R>
-void backwardRun(const SimplicialFactorView& f, int j, double* work) {
+// Back substitution of a run (L' x = y in place, D y first for LDL'), its shared rows first.
+template <int R, std::size_t M>
+BAKE_INLINE_KERNEL void backwardRun(const SimplicialFactorView& f, int j, double* work) {
   const int shared = f.count[j] - R;
   const int* rows = f.rows + f.start[j] + R;
   const double* l[R];
   for (int t = 0; t < R; ++t) l[t] = f.values + f.start[j + t] + (R - t);
-  // One column alone keeps four partial sums, so that the additions do not wait on each other.
+  // A column alone keeps four partial sums per right-hand side, so that the additions do not wait
+  // on each other.
   constexpr int kPartial = R == 1 ? 4 : 1;
-  double sum[R][kPartial] = {};
+  double sum[R][kPartial][M] = {};
   int k = 0;
   for (; k + kPartial <= shared; k += kPartial)
     for (int p = 0; p < kPartial; ++p) {
-      const double y = work[rows[k + p]];
-      for (int t = 0; t < R; ++t) sum[t][p] += l[t][k + p] * y;
+      const double* y = work + static_cast<std::size_t>(rows[k + p]) * M;
+      for (int t = 0; t < R; ++t)
+        for (std::size_t c = 0; c < M; ++c) sum[t][p][c] += l[t][k + p] * y[c];
     }
-  for (; k < shared; ++k)
-    for (int t = 0; t < R; ++t) sum[t][0] += l[t][k] * work[rows[k]];
+  for (; k < shared; ++k) {
+    const double* y = work + static_cast<std::size_t>(rows[k]) * M;
+    for (int t = 0; t < R; ++t)
+      for (std::size_t c = 0; c < M; ++c) sum[t][0][c] += l[t][k] * y[c];
+  }
   for (int t = R - 1; t >= 0; --t) {
     const int s = f.start[j + t];
-    double total = sum[t][0];
-    for (int p = 1; p < kPartial; ++p) total += sum[t][p];
-    for (int u = 1; u < R - t; ++u) total += f.values[s + u] * work[j + t + u];
+    double total[M];
+    for (std::size_t c = 0; c < M; ++c) total[c] = sum[t][0][c];
+    for (int p = 1; p < kPartial; ++p)
+      for (std::size_t c = 0; c < M; ++c) total[c] += sum[t][p][c];
+    for (int u = 1; u < R - t; ++u) {
+      const double* y = work + static_cast<std::size_t>(j + t + u) * M;
+      for (std::size_t c = 0; c < M; ++c) total[c] += f.values[s + u] * y[c];
+    }
     const double d = f.values[s];
-    work[j + t] = f.unitDiagonal ? work[j + t] / d - total : (work[j + t] - total) / d;
+    double* x = work + static_cast<std::size_t>(j + t) * M;
+    for (std::size_t c = 0; c < M; ++c) x[c] = f.unitDiagonal ? x[c] / d - total[c] : (x[c] - total[c]) / d;
   }
 }
 
-void forwardRuns(const SimplicialFactorView& f, const std::vector<unsigned char>& runs, int begin, int end,
-                 double* work, std::size_t top, double* topBuffer) {
+template <std::size_t M>
+BAKE_INLINE_KERNEL void forwardRuns(const SimplicialFactorView& f, const unsigned char* runs, int begin, int end,
+                             double* work, std::size_t top, double* topBuffer) {
   for (int j = begin; j < end; j += runs[j]) switch (runs[j]) {
-      case 1: forwardRun<1>(f, j, work, top, topBuffer); break;
-      case 2: forwardRun<2>(f, j, work, top, topBuffer); break;
-      case 3: forwardRun<3>(f, j, work, top, topBuffer); break;
-      default: forwardRun<4>(f, j, work, top, topBuffer); break;
+      case 1: forwardRun<1, M>(f, j, work, top, topBuffer); break;
+      case 2: forwardRun<2, M>(f, j, work, top, topBuffer); break;
+      case 3: forwardRun<3, M>(f, j, work, top, topBuffer); break;
+      default: forwardRun<4, M>(f, j, work, top, topBuffer); break;
     }
 }
 
-// Runs start where runs[j] > 0; walking back, a run's last column is found by its start's length.
-void backwardRuns(const SimplicialFactorView& f, const std::vector<int>& runStarts, int begin, int end,
-                  double* work) {
-  auto first = std::lower_bound(runStarts.begin(), runStarts.end(), begin);
-  auto last = std::lower_bound(runStarts.begin(), runStarts.end(), end);
-  for (auto it = last; it != first;) {
-    --it;
-    const int j = *it;
-    const int length = (it + 1 != runStarts.end() ? std::min(*(it + 1), end) : end) - j;
-    switch (length) {
-      case 1: backwardRun<1>(f, j, work); break;
-      case 2: backwardRun<2>(f, j, work); break;
-      case 3: backwardRun<3>(f, j, work); break;
-      default: backwardRun<4>(f, j, work); break;
+// The runs that start in [begin, end) are runStarts[first, last); walking back, a run's length is
+// the distance to the next run's start (or to `end`).
+template <std::size_t M>
+BAKE_INLINE_KERNEL void backwardRuns(const SimplicialFactorView& f, const int* runStarts, std::size_t first,
+                              std::size_t last, std::size_t runCount, int end, double* work) {
+  for (std::size_t r = last; r > first;) {
+    --r;
+    const int j = runStarts[r];
+    const int next = r + 1 < runCount && runStarts[r + 1] < end ? runStarts[r + 1] : end;
+    switch (next - j) {
+      case 1: backwardRun<1, M>(f, j, work); break;
+      case 2: backwardRun<2, M>(f, j, work); break;
+      case 3: backwardRun<3, M>(f, j, work); break;
+      default: backwardRun<4, M>(f, j, work); break;
     }
   }
 }
+
+// One copy per vector width (core/vector_clones.h).
+BAKE_VECTOR_CLONES void forwardRange(const SimplicialFactorView& f, const unsigned char* runs, int begin,
+                                     int end, double* work, std::size_t top, double* topBuffer,
+                                     std::size_t m) {
+  switch (m) {
+    case 1: forwardRuns<1>(f, runs, begin, end, work, top, topBuffer); break;
+    case 2: forwardRuns<2>(f, runs, begin, end, work, top, topBuffer); break;
+    case 3: forwardRuns<3>(f, runs, begin, end, work, top, topBuffer); break;
+    case 4: forwardRuns<4>(f, runs, begin, end, work, top, topBuffer); break;
+    case 5: forwardRuns<5>(f, runs, begin, end, work, top, topBuffer); break;
+    case 6: forwardRuns<6>(f, runs, begin, end, work, top, topBuffer); break;
+    case 7: forwardRuns<7>(f, runs, begin, end, work, top, topBuffer); break;
+    default: forwardRuns<8>(f, runs, begin, end, work, top, topBuffer); break;
+  }
+}
+
+BAKE_VECTOR_CLONES void backwardRange(const SimplicialFactorView& f, const int* runStarts, std::size_t first,
+                                      std::size_t last, std::size_t runCount, int end, double* work,
+                                      std::size_t m) {
+  switch (m) {
+    case 1: backwardRuns<1>(f, runStarts, first, last, runCount, end, work); break;
+    case 2: backwardRuns<2>(f, runStarts, first, last, runCount, end, work); break;
+    case 3: backwardRuns<3>(f, runStarts, first, last, runCount, end, work); break;
+    case 4: backwardRuns<4>(f, runStarts, first, last, runCount, end, work); break;
+    case 5: backwardRuns<5>(f, runStarts, first, last, runCount, end, work); break;
+    case 6: backwardRuns<6>(f, runStarts, first, last, runCount, end, work); break;
+    case 7: backwardRuns<7>(f, runStarts, first, last, runCount, end, work); break;
+    default: backwardRuns<8>(f, runStarts, first, last, runCount, end, work); break;
+  }
+}
+
+static_assert(kMaxColumns == 8, "forwardRange and backwardRange instantiate 1 to 8 columns");
 
 }  // namespace
 
-template <std::size_t M>
-void SubstitutionPlan::solveColumns(double* work, unsigned threads) const {
+void SubstitutionPlan::solveColumns(double* work, std::size_t m, unsigned threads) const {
   const SimplicialFactorView& f = factor_;
   const std::size_t n = f.size;
   const bool split = top_ > 0;
   const unsigned workers = split && nonZeros_ >= kThreadedFromNonZeros ? threads : 1u;
-  const auto forwardRange = [&](int begin, int end, double* topBuffer) {
-    if constexpr (M == 1) forwardRuns(f, runs_, begin, end, work, top_, topBuffer);
-    else forward<M>(f, begin, end, work, top_, topBuffer);
+  const auto forwardPart = [&](int begin, int end, double* topBuffer) {
+    forwardRange(f, runs_.data(), begin, end, work, top_, topBuffer, m);
   };
-  const auto backwardRange = [&](int begin, int end) {
-    if constexpr (M == 1) backwardRuns(f, runStarts_, begin, end, work);
-    else backward<M>(f, begin, end, work);
+  const auto backwardPart = [&](int begin, int end) {
+    const auto first = std::lower_bound(runStarts_.begin(), runStarts_.end(), begin) - runStarts_.begin();
+    const auto last = std::lower_bound(runStarts_.begin(), runStarts_.end(), end) - runStarts_.begin();
+    backwardRange(f, runStarts_.data(), static_cast<std::size_t>(first), static_cast<std::size_t>(last),
+                  runStarts_.size(), end, work, m);
   };
   if (split) {
     // The groups' updates of the top part, added to it in group order.
     std::array<std::vector<double>, 2> topBuffers;
     parallelForBlocks(2, 1, workers, [&](std::size_t g, std::size_t) {
-      topBuffers[g].assign((n - top_) * M, 0.0);
-      for (const auto& [begin, end] : groups_[g]) forwardRange(begin, end, topBuffers[g].data());
+      topBuffers[g].assign((n - top_) * m, 0.0);
+      for (const auto& [begin, end] : groups_[g]) forwardPart(begin, end, topBuffers[g].data());
     });
     for (std::size_t g = 0; g < 2; ++g)
-      for (std::size_t k = 0; k < (n - top_) * M; ++k) work[top_ * M + k] += topBuffers[g][k];
+      for (std::size_t k = 0; k < (n - top_) * m; ++k) work[top_ * m + k] += topBuffers[g][k];
   }
-  forwardRange(static_cast<int>(top_), static_cast<int>(n), nullptr);
-  backwardRange(static_cast<int>(top_), static_cast<int>(n));
+  forwardPart(static_cast<int>(top_), static_cast<int>(n), nullptr);
+  backwardPart(static_cast<int>(top_), static_cast<int>(n));
   if (split)
     parallelForBlocks(2, 1, workers, [&](std::size_t g, std::size_t) {
       for (auto range = groups_[g].rbegin(); range != groups_[g].rend(); ++range)
-        backwardRange(range->first, range->second);
+        backwardPart(range->first, range->second);
     });
 }
 
+void SubstitutionPlan::solveInFactorOrder(std::span<double> work, std::size_t columns, unsigned threads) const {
+  if (columns > kMaxColumns || work.size() != factor_.size * columns)
+    throw std::invalid_argument("solveInFactorOrder: too many columns, or a work array of the wrong size");
+  if (columns > 0) solveColumns(work.data(), columns, threads);
+}
+
 void SubstitutionPlan::solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
-                             unsigned threads) const {
+                             unsigned threads, ColumnLayout layout) const {
   const std::size_t n = factor_.size;
+  const bool interleaved = layout == ColumnLayout::Interleaved;
+  const auto at = [&](std::size_t row, std::size_t column) {
+    return interleaved ? row * columns + column : column * n + row;
+  };
+  const auto rowOf = [&](std::size_t k) {
+    return factor_.permutation ? static_cast<std::size_t>(factor_.permutation[k]) : k;
+  };
   std::vector<double> work;
   for (std::size_t first = 0; first < columns; first += kMaxColumns) {
     const std::size_t m = std::min(kMaxColumns, columns - first);
     // Interleaved (row k holds the m right-hand sides side by side) and permuted: row k is A's row
     // permutation[k].
-    work.assign(n * m, 0.0);
-    for (std::size_t c = 0; c < m; ++c) {
-      const double* b = rhs.data() + (first + c) * n;
-      for (std::size_t k = 0; k < n; ++k)
-        work[k * m + c] = b[factor_.permutation ? static_cast<std::size_t>(factor_.permutation[k]) : k];
-    }
-    switch (m) {
-      case 1: solveColumns<1>(work.data(), threads); break;
-      case 2: solveColumns<2>(work.data(), threads); break;
-      case 3: solveColumns<3>(work.data(), threads); break;
-      case 4: solveColumns<4>(work.data(), threads); break;
-      case 5: solveColumns<5>(work.data(), threads); break;
-      case 6: solveColumns<6>(work.data(), threads); break;
-      case 7: solveColumns<7>(work.data(), threads); break;
-      default: solveColumns<8>(work.data(), threads); break;
-    }
-    for (std::size_t c = 0; c < m; ++c) {
-      double* x = solution.data() + (first + c) * n;
-      for (std::size_t k = 0; k < n; ++k)
-        x[factor_.permutation ? static_cast<std::size_t>(factor_.permutation[k]) : k] = work[k * m + c];
-    }
+    work.resize(n * m);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t c = 0; c < m; ++c) work[k * m + c] = rhs[at(rowOf(k), first + c)];
+    solveColumns(work.data(), m, threads);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t c = 0; c < m; ++c) solution[at(rowOf(k), first + c)] = work[k * m + c];
   }
 }
 

@@ -31,15 +31,27 @@ struct SimplicialFactorView {
   bool unitDiagonal = false;
 };
 
+// How several right-hand sides (or solutions) are stored: column after column (row r of column c at
+// c * rows + r), or interleaved (row r's values side by side, at r * columns + c).
+enum class ColumnLayout { Consecutive, Interleaved };
+
 class SubstitutionPlan {
  public:
   SubstitutionPlan() = default;
   explicit SubstitutionPlan(const SimplicialFactorView& factor);
 
-  // Solves A X = B for `columns` right-hand sides stored column after column (size values each),
-  // on up to `threads` threads (0: all cores); the solution does not depend on `threads`.
+  // Solves A X = B for `columns` right-hand sides stored as `layout` says, on up to `threads`
+  // threads (0: all cores). The solution depends neither on `threads` nor on which columns are solved
+  // together: each is what it would be alone.
   void solve(std::span<const double> rhs, std::span<double> solution, std::size_t columns,
-             unsigned threads) const;
+             unsigned threads, ColumnLayout layout = ColumnLayout::Consecutive) const;
+
+  // The same for at most kMaxColumns right-hand sides already interleaved and in L's row order (row k
+  // is A's row permutation()[k]), in place: no copies in or out.
+  void solveInFactorOrder(std::span<double> work, std::size_t columns, unsigned threads) const;
+  static constexpr std::size_t kMaxColumns = 8;
+  // A's row of each row of L (null: the identity).
+  const int* permutation() const { return factor_.permutation; }
 
   // False when the factor is not laid out as described, or its permutation is not one (the caller
   // then solves some other way).
@@ -55,8 +67,8 @@ class SubstitutionPlan {
   std::size_t runCount() const { return runStarts_.size(); }
 
  private:
-  template <std::size_t M>
-  void solveColumns(double* work, unsigned threads) const;
+  // The m right-hand sides interleaved in `work` (row k's values side by side), in place.
+  void solveColumns(double* work, std::size_t m, unsigned threads) const;
   void splitTree(const std::vector<int>& parent);
   void findRuns();
 
