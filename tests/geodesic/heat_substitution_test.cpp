@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include "geodesic/bake/heat_cholmod.h"
 #include "geodesic/bake/heat_intrinsic.h"
@@ -179,6 +180,84 @@ TEST(HeatSubstitution, RefusesAFactorNotLaidOutAsExpected) {
   HandFactor outside = handFactor();
   outside.permutation[0] = 7;  // past the last row
   EXPECT_FALSE(SubstitutionPlan(outside.view(false)).valid());
+}
+
+// Every column of a batch is what it is when solved alone, to the last bit, whatever the batch's size
+// (1 to 8 kernels), layout or thread count; and the in-place solve in L's row order is the same solve.
+void expectBatchesEqualSingleColumns(const CholeskyFactor& factor) {
+  const SubstitutionPlan& plan = *factor.substitution();
+  const std::size_t n = factor.size();
+  constexpr std::size_t kColumns = 11;  // a batch of 8 and one of 3
+  std::vector<double> rhs(n * kColumns);
+  for (std::size_t c = 0; c < kColumns; ++c)
+    for (std::size_t k = 0; k < n; ++k)
+      rhs[c * n + k] = c % 3 == 0 ? (k == (c * 7919) % n ? 1.0 : 0.0)  // sparse, as step I's
+                                  : std::cos(0.11 * static_cast<double>(k) * (1.0 + static_cast<double>(c)));
+  std::vector<double> alone(n * kColumns);
+  for (std::size_t c = 0; c < kColumns; ++c)
+    plan.solve(std::span(rhs).subspan(c * n, n), std::span(alone).subspan(c * n, n), 1, 1);
+  const auto expectSame = [&](const std::vector<double>& x, ColumnLayout layout, std::size_t columns,
+                              const char* what) {
+    std::size_t differing = 0;
+    for (std::size_t c = 0; c < columns; ++c)
+      for (std::size_t k = 0; k < n; ++k) {
+        const double value = layout == ColumnLayout::Interleaved ? x[k * columns + c] : x[c * n + k];
+        differing += value != alone[c * n + k];
+      }
+    EXPECT_EQ(differing, 0u) << what << ", " << columns << " columns";
+  };
+  for (const std::size_t columns : {std::size_t{2}, std::size_t{5}, std::size_t{8}, kColumns}) {
+    std::vector<double> consecutive(n * columns), interleavedRhs(n * columns), interleaved(n * columns);
+    for (const unsigned threads : {1u, 2u}) {
+      plan.solve(std::span(rhs).first(n * columns), consecutive, columns, threads);
+      expectSame(consecutive, ColumnLayout::Consecutive, columns, "consecutive");
+      for (std::size_t c = 0; c < columns; ++c)
+        for (std::size_t k = 0; k < n; ++k) interleavedRhs[k * columns + c] = rhs[c * n + k];
+      plan.solve(interleavedRhs, interleaved, columns, threads, ColumnLayout::Interleaved);
+      expectSame(interleaved, ColumnLayout::Interleaved, columns, "interleaved");
+    }
+    if (columns > SubstitutionPlan::kMaxColumns) continue;
+    // In L's row order: row k holds A's row permutation()[k].
+    std::vector<double> work(n * columns);
+    const auto rowOfL = [&](std::size_t k) { return plan.permutation() ? static_cast<std::size_t>(plan.permutation()[k]) : k; };
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t c = 0; c < columns; ++c) work[k * columns + c] = rhs[c * n + rowOfL(k)];
+    plan.solveInFactorOrder(work, columns, 2);
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t c = 0; c < columns; ++c) interleaved[rowOfL(k) * columns + c] = work[k * columns + c];
+    expectSame(interleaved, ColumnLayout::Interleaved, columns, "in factor order");
+  }
+  std::vector<double> tooMany(n * (SubstitutionPlan::kMaxColumns + 1));
+  EXPECT_THROW(plan.solveInFactorOrder(tooMany, SubstitutionPlan::kMaxColumns + 1, 1), std::invalid_argument);
+}
+
+TEST(HeatSubstitution, BatchedColumnsEqualColumnsSolvedAlone) {
+  for (const Surface& s : {testing::geodesicSphere(3, 1.0), testing::planarGrid(260, 1.0)})
+    for (const CholeskyFactor& factor : factorise(heatMatrices(s))) {
+      ASSERT_NE(factor.substitution(), nullptr);
+      expectBatchesEqualSingleColumns(factor);
+    }
+}
+
+// Interleaved right-hand sides: the solution CHOLMOD gives for the same columns one after another.
+TEST(HeatSubstitution, InterleavedColumnsAgreeWithCholmod) {
+  const Surface s = testing::geodesicSphere(3, 1.0);
+  const std::vector<CholeskyFactor> factors = factorise(heatMatrices(s));
+  const CholeskyFactor& factor = factors[0];
+  const std::size_t n = factor.size(), columns = 3;
+  std::vector<double> consecutive(n * columns), interleaved(n * columns);
+  for (std::size_t c = 0; c < columns; ++c)
+    for (std::size_t k = 0; k < n; ++k) {
+      consecutive[c * n + k] = std::sin(0.3 * static_cast<double>(k) + static_cast<double>(c));
+      interleaved[k * columns + c] = consecutive[c * n + k];
+    }
+  std::vector<double> reference(n * columns), ours(n * columns);
+  factor.solveWithCholmod(consecutive, reference, columns);
+  factor.solve(interleaved, ours, columns, 1, ColumnLayout::Interleaved);
+  double worst = 0.0;
+  for (std::size_t c = 0; c < columns; ++c)
+    for (std::size_t k = 0; k < n; ++k) worst = std::max(worst, std::abs(ours[k * columns + c] - reference[c * n + k]));
+  EXPECT_LE(worst, 1e-12);
 }
 
 }  // namespace
