@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/parallel.h"
 #include "core/vector_clones.h"
 #include "geodesic/bake/heat_operators.h"
 
@@ -102,10 +103,16 @@ BAKE_VECTOR_CLONES void divergenceOfColumns(std::span<const HeatFace> faces, con
 }  // namespace
 
 void divergenceOfNormalizedGradient(std::span<const HeatFace> faces, std::span<const double> u,
-                                    std::span<double> rhs, std::size_t columns) {
-  constexpr std::size_t kMaxTogether = 8;
-  for (std::size_t first = 0; first < columns; first += kMaxTogether)
-    divergenceOfColumns(faces, u.data(), rhs.data(), columns, first, std::min(kMaxTogether, columns - first));
+                                    std::span<double> rhs, std::size_t columns, unsigned threads) {
+  // Groups of at most 8 fields; on a large mesh with threads to spare, at least two groups, one per
+  // thread (each field's values do not depend on its group).
+  constexpr std::size_t kMaxTogether = 8, kThreadedFromFaces = 100000;
+  std::size_t groups = (columns + kMaxTogether - 1) / kMaxTogether;
+  if (threads != 1 && faces.size() >= kThreadedFromFaces && columns >= 2) groups = std::max<std::size_t>(groups, 2);
+  parallelForBlocks(groups, 1, threads, [&](std::size_t g, std::size_t) {
+    const std::size_t first = g * columns / groups, last = (g + 1) * columns / groups;
+    divergenceOfColumns(faces, u.data(), rhs.data(), columns, first, last - first);
+  });
 }
 
 }  // namespace bake::geodesic

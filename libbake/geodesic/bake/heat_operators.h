@@ -50,8 +50,9 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> assembleUpper(const HeatOperat
 // pointing away from the heat source); faces where u is flat contribute nothing. With `columns` > 1,
 // u and rhs hold that many fields interleaved (vertex v's values at v * columns .. v * columns +
 // columns), done in one pass over the faces; each field's values are those of a pass of its own.
-// `faces` are HeatOperators::faces, or the same with their corners renumbered as u's rows are.
+// `faces` are HeatOperators::faces, or the same with their corners renumbered as u's rows are. Up to
+// `threads` threads (0: all cores) take groups of fields; the values do not depend on `threads`.
 void divergenceOfNormalizedGradient(std::span<const HeatFace> faces, std::span<const double> u,
-                                    std::span<double> rhs, std::size_t columns = 1);
+                                    std::span<double> rhs, std::size_t columns = 1, unsigned threads = 1);
 
 }  // namespace bake::geodesic

@@ -156,7 +156,7 @@ std::vector<double> heatFlow(const HeatSystem& state, const std::vector<SourceRo
 std::vector<double> integrateDirections(const HeatSystem& state, const std::vector<double>& u,
                                         std::size_t columns, unsigned threads) {
   std::vector<double> phi(state.vertexCount * columns, 0.0);  // div X, then phi0
-  divergenceOfNormalizedGradient(state.ops.faces, u, phi, columns);
+  divergenceOfNormalizedGradient(state.ops.faces, u, phi, columns, threads);
   for (std::size_t k = 0; k < state.vertexCount; ++k) {
     const std::size_t v = vertexOf(state, k);
     if (state.pinned[v] || state.isolated[v]) std::fill_n(phi.begin() + k * columns, columns, 0.0);
