@@ -88,14 +88,26 @@ TEST(HeatSubstitution, AgreesWithCholmodOnASupernodalFactorSplitInTwo) {
     const SubstitutionPlan* plan = factor.substitution();
     ASSERT_NE(plan, nullptr);
     // Nested dissection: a top separator over two groups of subtrees, and supernodes as runs.
-    EXPECT_GT(plan->top(), 0u);
-    EXPECT_LT(plan->top(), factor.size());
+    EXPECT_GT(plan->topColumns(), 0u);
+    EXPECT_LT(plan->topColumns(), factor.size() / 50);
     EXPECT_FALSE(plan->groups()[0].empty());
     EXPECT_FALSE(plan->groups()[1].empty());
     EXPECT_LT(plan->runCount(), factor.size() / 2);
     EXPECT_GE(plan->nonZeros(), SubstitutionPlan::kThreadedFromNonZeros);  // the threaded path
     expectAgreesWithCholmod(factor);
   }
+}
+
+// A large grid and a small sphere beside it: a forest whose one large tree must itself be split, so
+// that the small tree does not leave one thread all the work.
+Surface gridAndSphere() {
+  const Surface grid = testing::planarGrid(260, 1.0), sphere = testing::geodesicSphere(2, 0.1);
+  std::vector<Vec3d> positions = grid.positions;
+  std::vector<std::array<std::uint32_t, 3>> triangles = grid.triangles;
+  const auto offset = static_cast<std::uint32_t>(positions.size());
+  for (const Vec3d& p : sphere.positions) positions.push_back({p[0] + 2.0, p[1], p[2]});
+  for (const auto& t : sphere.triangles) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return makeSurface(std::move(positions), std::move(triangles));
 }
 
 // A factor written by hand: two components (rows 0-3 and 4-6 of L), so the tree is a forest that
@@ -109,12 +121,9 @@ struct HandFactor {
   }
 };
 
-HandFactor handFactor() {
+// Columns (row: value), the diagonal first.
+HandFactor handFactor(const std::vector<std::vector<std::pair<int, double>>>& columns, std::vector<int> permutation) {
   HandFactor f;
-  // Columns (row: value), the diagonal first.
-  const std::vector<std::vector<std::pair<int, double>>> columns{
-      {{0, 2.0}, {1, 0.5}, {3, -0.25}}, {{1, 1.5}, {3, 0.75}}, {{2, 3.0}, {3, -1.0}}, {{3, 1.25}},
-      {{4, 1.0}, {5, 0.5}, {6, 0.125}}, {{5, 2.5}, {6, -0.5}}, {{6, 0.75}}};
   for (const auto& column : columns) {
     f.start.push_back(static_cast<int>(f.rows.size()));
     f.count.push_back(static_cast<int>(column.size()));
@@ -123,8 +132,21 @@ HandFactor handFactor() {
       f.values.push_back(value);
     }
   }
-  f.permutation = {3, 6, 0, 5, 1, 4, 2};
+  f.permutation = std::move(permutation);
   return f;
+}
+
+HandFactor handFactor() {
+  return handFactor({{{0, 2.0}, {1, 0.5}, {3, -0.25}}, {{1, 1.5}, {3, 0.75}}, {{2, 3.0}, {3, -1.0}}, {{3, 1.25}},
+                     {{4, 1.0}, {5, 0.5}, {6, 0.125}}, {{5, 2.5}, {6, -0.5}}, {{6, 0.75}}},
+                    {3, 6, 0, 5, 1, 4, 2});
+}
+
+// A forest whose first tree (rows 0-2: leaves 0 and 1 under 2) holds 5 of the 8 entries: its root
+// joins the top part, which then lies between the groups' columns (leaves 0 and 1; the tree 3-4).
+HandFactor factorWithTopInTheMiddle() {
+  return handFactor({{{0, 2.0}, {2, 0.5}}, {{1, 1.5}, {2, -0.75}}, {{2, 3.0}}, {{3, 1.25}, {4, 0.5}}, {{4, 2.0}}},
+                    {2, 4, 0, 3, 1});
 }
 
 // A = P' L D L' P (D = I and L's stored diagonal for LL'), multiplied out densely.
@@ -143,26 +165,41 @@ std::vector<std::vector<double>> denseMatrix(const HandFactor& f, bool unitDiago
   return a;
 }
 
-TEST(HeatSubstitution, SolvesAFactorWrittenByHand) {
-  const HandFactor f = handFactor();
+// Two right-hand sides with known solutions, one column at a time and both together.
+void expectSolvesByHand(const HandFactor& f, bool unitDiagonal) {
   const std::size_t n = f.start.size();
+  const SubstitutionPlan plan(f.view(unitDiagonal));
+  ASSERT_TRUE(plan.valid());
+  const auto a = denseMatrix(f, unitDiagonal);
+  std::vector<double> truth(2 * n), rhs(2 * n, 0.0), solution(2 * n);
+  for (std::size_t k = 0; k < 2 * n; ++k) truth[k] = 1.0 + 0.25 * static_cast<double>(k % 5) - 0.1 * (k / n);
+  for (std::size_t c = 0; c < 2; ++c)
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t k = 0; k < n; ++k) rhs[c * n + r] += a[r][k] * truth[c * n + k];
+  for (const std::size_t columns : {std::size_t{1}, std::size_t{2}}) {
+    plan.solve(std::span(rhs).first(columns * n), solution, columns, 2);
+    for (std::size_t k = 0; k < columns * n; ++k)
+      EXPECT_NEAR(solution[k], truth[k], 1e-12) << "unit diagonal " << unitDiagonal << ", entry " << k;
+  }
+}
+
+TEST(HeatSubstitution, SolvesAFactorWrittenByHand) {
   for (const bool unitDiagonal : {false, true}) {
+    const HandFactor f = handFactor();
     const SubstitutionPlan plan(f.view(unitDiagonal));
-    ASSERT_TRUE(plan.valid());
-    EXPECT_EQ(plan.top(), n);  // a forest: both trees below the virtual root, no top chain
+    // A forest of two trees near even (8 entries against 6): a group each, no top part.
+    EXPECT_EQ(plan.topColumns(), 0u);
     EXPECT_FALSE(plan.groups()[0].empty());
     EXPECT_FALSE(plan.groups()[1].empty());
-    const auto a = denseMatrix(f, unitDiagonal);
-    std::vector<double> truth(2 * n), rhs(2 * n, 0.0), solution(2 * n);
-    for (std::size_t k = 0; k < 2 * n; ++k) truth[k] = 1.0 + 0.25 * static_cast<double>(k % 5) - 0.1 * (k / n);
-    for (std::size_t c = 0; c < 2; ++c)
-      for (std::size_t r = 0; r < n; ++r)
-        for (std::size_t k = 0; k < n; ++k) rhs[c * n + r] += a[r][k] * truth[c * n + k];
-    for (const std::size_t columns : {std::size_t{1}, std::size_t{2}}) {
-      plan.solve(std::span(rhs).first(columns * n), solution, columns, 2);
-      for (std::size_t k = 0; k < columns * n; ++k)
-        EXPECT_NEAR(solution[k], truth[k], 1e-12) << "unit diagonal " << unitDiagonal << ", entry " << k;
-    }
+    expectSolvesByHand(f, unitDiagonal);
+
+    const HandFactor middle = factorWithTopInTheMiddle();
+    const SubstitutionPlan middlePlan(middle.view(unitDiagonal));
+    ASSERT_EQ(middlePlan.topRanges().size(), 1u);
+    EXPECT_EQ(middlePlan.topRanges().front(), std::make_pair(2, 3));
+    EXPECT_EQ(middlePlan.groups()[0], (std::vector<std::pair<int, int>>{{3, 5}}));
+    EXPECT_EQ(middlePlan.groups()[1], (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}}));
+    expectSolvesByHand(middle, unitDiagonal);
   }
 }
 
@@ -258,6 +295,22 @@ TEST(HeatSubstitution, InterleavedColumnsAgreeWithCholmod) {
   for (std::size_t c = 0; c < columns; ++c)
     for (std::size_t k = 0; k < n; ++k) worst = std::max(worst, std::abs(ours[k * columns + c] - reference[c * n + k]));
   EXPECT_LE(worst, 1e-12);
+}
+
+TEST(HeatSubstitution, SplitsTheLargeTreeOfAForest) {
+  for (const CholeskyFactor& factor : factorise(heatMatrices(gridAndSphere()))) {
+    const SubstitutionPlan* plan = factor.substitution();
+    ASSERT_NE(plan, nullptr);
+    // Neither group holds twice the other's columns.
+    std::array<std::size_t, 2> columns{0, 0};
+    for (std::size_t g = 0; g < 2; ++g)
+      for (const auto& [begin, end] : plan->groups()[g]) columns[g] += static_cast<std::size_t>(end - begin);
+    EXPECT_GT(plan->topColumns(), 0u);
+    EXPECT_LT(std::max(columns[0], columns[1]), 2 * std::min(columns[0], columns[1]))
+        << columns[0] << " and " << columns[1] << " columns";
+    expectAgreesWithCholmod(factor);
+    expectBatchesEqualSingleColumns(factor);
+  }
 }
 
 }  // namespace

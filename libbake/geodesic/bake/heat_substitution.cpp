@@ -2,11 +2,15 @@
 //
 // The elimination tree's parent of column j is the smallest row below the diagonal in column j.
 // CHOLMOD postorders its analysis, so every subtree is a contiguous range of columns ending at its
-// root. Walking down from the root while a node has one child gives the top chain [top, n); the
-// subtrees of the node where it branches cover [0, top) and go to two groups, heaviest first to the
-// lighter group. The split is then checked against the factor itself (every entry of a group's
-// column lies in its own range or in the top part); a factor that fails the check, or a tree that
-// does not branch, is substituted as one part.
+// root. The top part starts empty, with the trees below the (virtual) root as candidates. While the
+// heaviest candidate holds more than 60 % of the candidates' work (no two groups of them could be
+// near even), its chain down to the first node with several children joins the top part, and that
+// node's children become candidates. The candidates then go to two groups, heaviest first to the lighter
+// group. On a nested-dissection tree that is the top separator's chain and its two halves; on a
+// forest with one large component, that component's chain and the halves below it, with the small
+// components. The top part holds every group's ancestors, so a group's columns reach only their own
+// range and the top part; the split is checked against the factor itself, and a factor that fails
+// the check, or a tree that does not branch, is substituted as one part.
 #include "geodesic/bake/heat_substitution.h"
 
 #include <algorithm>
@@ -21,15 +25,16 @@ namespace {
 // The most right-hand sides substituted together (the work array interleaves them).
 constexpr std::size_t kMaxColumns = SubstitutionPlan::kMaxColumns;
 
-// True when every entry of the columns in `ranges` lies in one of those ranges or in [top, n).
+// True when every entry of a column in one of `ranges` lies in that range, or past it in the top part
+// (the kernels take a row past the range for a row of the top part).
 bool rangesAreClosed(const SimplicialFactorView& f, const std::vector<std::pair<int, int>>& ranges,
-                     std::size_t top) {
+                     const std::vector<int>& topIndex) {
   for (const auto& [begin, end] : ranges)
     for (int j = begin; j < end; ++j)
       for (int k = f.start[j]; k < f.start[j] + f.count[j]; ++k) {
         const int i = f.rows[k];
-        if (static_cast<std::size_t>(i) >= top) continue;
-        if (i < begin || i >= end) return false;  // a subtree's column reaches outside its own range
+        if (i >= begin && i < end) continue;
+        if (i < end || topIndex[static_cast<std::size_t>(i)] < 0) return false;
       }
   return true;
 }
@@ -49,7 +54,7 @@ void SubstitutionPlan::findRuns() {
   runStarts_.clear();
   std::vector<std::pair<int, int>> ranges = groups_[0];
   ranges.insert(ranges.end(), groups_[1].begin(), groups_[1].end());
-  ranges.push_back({static_cast<int>(top_), static_cast<int>(factor_.size)});
+  ranges.insert(ranges.end(), topRanges_.begin(), topRanges_.end());
   for (const auto& [begin, end] : ranges)
     for (int j = begin; j < end;) {
       int r = 1;
@@ -63,7 +68,6 @@ void SubstitutionPlan::findRuns() {
 
 SubstitutionPlan::SubstitutionPlan(const SimplicialFactorView& factor) : factor_(factor) {
   const std::size_t n = factor.size;
-  top_ = 0;
   // The elimination tree's parent of each column (its smallest row below the diagonal; -1 for a root),
   // found while checking the layout.
   std::vector<int> parent(n, -1);
@@ -88,51 +92,90 @@ SubstitutionPlan::SubstitutionPlan(const SimplicialFactorView& factor) : factor_
   }
   valid_ = true;
   splitTree(parent);
+  if (groups_[0].empty() || groups_[1].empty()) {  // one part: all columns in the top part, in order
+    groups_ = {};
+    topIndex_.clear();
+    topRows_.clear();
+    topRanges_ = {{0, static_cast<int>(n)}};
+  }
   findRuns();
 }
 
-// See the file comment: the top chain and two groups of subtrees below it.
+// See the file comment: the top part and two groups of subtrees hanging from it.
 void SubstitutionPlan::splitTree(const std::vector<int>& parent) {
   const SimplicialFactorView& factor = factor_;
   const std::size_t n = factor.size;
   if (n < 2) return;
-  // Per node (n: a virtual root above the tree's roots) its number of children and its last child.
-  std::vector<int> childCount(n + 1, 0), lastChild(n + 1, -1);
+  // Children lists (node n: a virtual root above the trees' roots), subtree sizes and work.
+  std::vector<int> firstChild(n + 1, -1), nextSibling(n, -1), childCount(n + 1, 0);
   std::vector<std::size_t> subtreeSize(n, 1), subtreeWork(n, 0);
-  const auto parentOf = [&](std::size_t j) { return parent[j] < 0 ? n : static_cast<std::size_t>(parent[j]); };
   for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t up = parent[j] < 0 ? n : static_cast<std::size_t>(parent[j]);
+    nextSibling[j] = firstChild[up];
+    firstChild[up] = static_cast<int>(j);
+    ++childCount[up];
     subtreeWork[j] += static_cast<std::size_t>(factor.count[j]);
-    ++childCount[parentOf(j)];
-    lastChild[parentOf(j)] = static_cast<int>(j);
     if (parent[j] >= 0) {
       subtreeSize[parent[j]] += subtreeSize[j];
       subtreeWork[parent[j]] += subtreeWork[j];
     }
   }
-  // Down the chain from the (virtual) root to the first node with several children.
-  std::size_t node = n;
-  while (childCount[node] == 1) node = static_cast<std::size_t>(lastChild[node]);
-  if (childCount[node] < 2) return;
-  top_ = node;
-  std::vector<int> subtrees;
-  for (std::size_t j = 0; j < node; ++j)
-    if (parentOf(j) == node) subtrees.push_back(static_cast<int>(j));
-  std::stable_sort(subtrees.begin(), subtrees.end(),
+  std::vector<char> inTop(n, 0);
+  std::vector<int> candidates;
+  for (int c = firstChild[n]; c >= 0; c = nextSibling[c]) candidates.push_back(c);
+  for (;;) {
+    if (candidates.empty()) return;  // the whole tree is one chain: nothing to split
+    std::size_t total = 0, heaviest = 0;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      total += subtreeWork[candidates[k]];
+      if (subtreeWork[candidates[k]] > subtreeWork[candidates[heaviest]]) heaviest = k;
+    }
+    if (candidates.size() >= 2 && 5 * subtreeWork[candidates[heaviest]] <= 3 * total) break;
+    int node = candidates[heaviest];
+    candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(heaviest));
+    inTop[node] = 1;
+    while (childCount[node] == 1) {
+      node = firstChild[node];
+      inTop[node] = 1;
+    }
+    for (int c = firstChild[node]; c >= 0; c = nextSibling[c]) candidates.push_back(c);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
                    [&](int a, int b) { return subtreeWork[a] > subtreeWork[b]; });
   std::array<std::size_t, 2> load{0, 0};
-  for (int root : subtrees) {
+  for (int root : candidates) {
     const std::size_t g = load[1] < load[0] ? 1 : 0;
     load[g] += subtreeWork[root];
     groups_[g].push_back({root + 1 - static_cast<int>(subtreeSize[root]), root + 1});
   }
   for (auto& ranges : groups_) std::sort(ranges.begin(), ranges.end());
-  // Postorder makes the subtrees cover [0, top) exactly; anything else falls back to one part.
-  std::size_t covered = 0;
+  // The top part's rows in order, each with its place in a group's buffer, and as ranges of columns.
+  topIndex_.assign(n, -1);
+  for (std::size_t j = 0; j < n; ++j)
+    if (inTop[j]) {
+      topIndex_[j] = static_cast<int>(topRows_.size());
+      topRows_.push_back(static_cast<int>(j));
+      if (topRanges_.empty() || topRanges_.back().second != static_cast<int>(j))
+        topRanges_.push_back({static_cast<int>(j), static_cast<int>(j) + 1});
+      else
+        ++topRanges_.back().second;
+    }
+  // Postorder makes the groups and the top part cover the columns exactly once; anything else falls
+  // back to one part.
+  std::vector<char> covered = inTop;
+  bool once = true;
   for (const auto& ranges : groups_)
-    for (const auto& [begin, end] : ranges) covered += static_cast<std::size_t>(end - begin);
-  if (covered != top_ || !rangesAreClosed(factor, groups_[0], top_) || !rangesAreClosed(factor, groups_[1], top_)) {
-    top_ = 0;
+    for (const auto& [begin, end] : ranges)
+      for (int j = begin; j < end; ++j) {
+        once = once && !covered[static_cast<std::size_t>(j)];
+        covered[static_cast<std::size_t>(j)] = 1;
+      }
+  if (!once || std::find(covered.begin(), covered.end(), 0) != covered.end() ||
+      !rangesAreClosed(factor, groups_[0], topIndex_) || !rangesAreClosed(factor, groups_[1], topIndex_)) {
     groups_ = {};
+    topIndex_.clear();
+    topRows_.clear();
+    topRanges_.clear();
   }
 }
 
@@ -146,11 +189,12 @@ namespace {
 // operations.
 
 // Forward substitution of a run of R columns j .. j+R-1 (L y = b in place): the run's own triangle
-// first, then its shared rows, each read or updated once for the R columns. Updates of rows at or
-// past `top` go to `topBuffer` (row i at (i - top) * M) when it is given.
+// first, then its shared rows, each read or updated once for the R columns. With `topBuffer`, the run
+// lies in a group's range ending at `limit`, and its updates of rows at or past `limit` (rows of the
+// top part) go to the buffer, row i at topIndex[i] * M.
 template <int R, std::size_t M>
-BAKE_INLINE_KERNEL void forwardRun(const SimplicialFactorView& f, int j, double* work, std::size_t top,
-                            double* topBuffer) {
+BAKE_INLINE_KERNEL void forwardRun(const SimplicialFactorView& f, int j, double* work, std::size_t limit,
+                                   const int* topIndex, double* topBuffer) {
   double x[R][M];
   bool zero = true;
   for (int t = 0; t < R; ++t) {
@@ -176,7 +220,7 @@ BAKE_INLINE_KERNEL void forwardRun(const SimplicialFactorView& f, int j, double*
     for (int t = 1; t < R; ++t)
       for (std::size_t c = 0; c < M; ++c) delta[c] += l[t][k] * x[t][c];
     const auto i = static_cast<std::size_t>(rows[k]);
-    double* y = topBuffer && i >= top ? topBuffer + (i - top) * M : work + i * M;
+    double* y = topBuffer && i >= limit ? topBuffer + static_cast<std::size_t>(topIndex[i]) * M : work + i * M;
     for (std::size_t c = 0; c < M; ++c) y[c] -= delta[c];
   }
 }
@@ -222,12 +266,13 @@ BAKE_INLINE_KERNEL void backwardRun(const SimplicialFactorView& f, int j, double
 
 template <std::size_t M>
 BAKE_INLINE_KERNEL void forwardRuns(const SimplicialFactorView& f, const unsigned char* runs, int begin, int end,
-                             double* work, std::size_t top, double* topBuffer) {
+                                    double* work, const int* topIndex, double* topBuffer) {
+  const auto limit = static_cast<std::size_t>(end);
   for (int j = begin; j < end; j += runs[j]) switch (runs[j]) {
-      case 1: forwardRun<1, M>(f, j, work, top, topBuffer); break;
-      case 2: forwardRun<2, M>(f, j, work, top, topBuffer); break;
-      case 3: forwardRun<3, M>(f, j, work, top, topBuffer); break;
-      default: forwardRun<4, M>(f, j, work, top, topBuffer); break;
+      case 1: forwardRun<1, M>(f, j, work, limit, topIndex, topBuffer); break;
+      case 2: forwardRun<2, M>(f, j, work, limit, topIndex, topBuffer); break;
+      case 3: forwardRun<3, M>(f, j, work, limit, topIndex, topBuffer); break;
+      default: forwardRun<4, M>(f, j, work, limit, topIndex, topBuffer); break;
     }
 }
 
@@ -251,17 +296,17 @@ BAKE_INLINE_KERNEL void backwardRuns(const SimplicialFactorView& f, const int* r
 
 // One copy per vector width (core/vector_clones.h).
 BAKE_VECTOR_CLONES void forwardRange(const SimplicialFactorView& f, const unsigned char* runs, int begin,
-                                     int end, double* work, std::size_t top, double* topBuffer,
+                                     int end, double* work, const int* topIndex, double* topBuffer,
                                      std::size_t m) {
   switch (m) {
-    case 1: forwardRuns<1>(f, runs, begin, end, work, top, topBuffer); break;
-    case 2: forwardRuns<2>(f, runs, begin, end, work, top, topBuffer); break;
-    case 3: forwardRuns<3>(f, runs, begin, end, work, top, topBuffer); break;
-    case 4: forwardRuns<4>(f, runs, begin, end, work, top, topBuffer); break;
-    case 5: forwardRuns<5>(f, runs, begin, end, work, top, topBuffer); break;
-    case 6: forwardRuns<6>(f, runs, begin, end, work, top, topBuffer); break;
-    case 7: forwardRuns<7>(f, runs, begin, end, work, top, topBuffer); break;
-    default: forwardRuns<8>(f, runs, begin, end, work, top, topBuffer); break;
+    case 1: forwardRuns<1>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 2: forwardRuns<2>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 3: forwardRuns<3>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 4: forwardRuns<4>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 5: forwardRuns<5>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 6: forwardRuns<6>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    case 7: forwardRuns<7>(f, runs, begin, end, work, topIndex, topBuffer); break;
+    default: forwardRuns<8>(f, runs, begin, end, work, topIndex, topBuffer); break;
   }
 }
 
@@ -286,11 +331,10 @@ static_assert(kMaxColumns == 8, "forwardRange and backwardRange instantiate 1 to
 
 void SubstitutionPlan::solveColumns(double* work, std::size_t m, unsigned threads) const {
   const SimplicialFactorView& f = factor_;
-  const std::size_t n = f.size;
-  const bool split = top_ > 0;
+  const bool split = !groups_[0].empty();
   const unsigned workers = split && nonZeros_ >= kThreadedFromNonZeros ? threads : 1u;
   const auto forwardPart = [&](int begin, int end, double* topBuffer) {
-    forwardRange(f, runs_.data(), begin, end, work, top_, topBuffer, m);
+    forwardRange(f, runs_.data(), begin, end, work, topIndex_.data(), topBuffer, m);
   };
   const auto backwardPart = [&](int begin, int end) {
     const auto first = std::lower_bound(runStarts_.begin(), runStarts_.end(), begin) - runStarts_.begin();
@@ -302,19 +346,27 @@ void SubstitutionPlan::solveColumns(double* work, std::size_t m, unsigned thread
     // The groups' updates of the top part, added to it in group order.
     std::array<std::vector<double>, 2> topBuffers;
     parallelForBlocks(2, 1, workers, [&](std::size_t g, std::size_t) {
-      topBuffers[g].assign((n - top_) * m, 0.0);
+      topBuffers[g].assign(topRows_.size() * m, 0.0);
       for (const auto& [begin, end] : groups_[g]) forwardPart(begin, end, topBuffers[g].data());
     });
     for (std::size_t g = 0; g < 2; ++g)
-      for (std::size_t k = 0; k < (n - top_) * m; ++k) work[top_ * m + k] += topBuffers[g][k];
+      for (std::size_t t = 0; t < topRows_.size(); ++t)
+        for (std::size_t c = 0; c < m; ++c)
+          work[static_cast<std::size_t>(topRows_[t]) * m + c] += topBuffers[g][t * m + c];
   }
-  forwardPart(static_cast<int>(top_), static_cast<int>(n), nullptr);
-  backwardPart(static_cast<int>(top_), static_cast<int>(n));
+  for (const auto& [begin, end] : topRanges_) forwardPart(begin, end, nullptr);
+  for (auto range = topRanges_.rbegin(); range != topRanges_.rend(); ++range) backwardPart(range->first, range->second);
   if (split)
     parallelForBlocks(2, 1, workers, [&](std::size_t g, std::size_t) {
       for (auto range = groups_[g].rbegin(); range != groups_[g].rend(); ++range)
         backwardPart(range->first, range->second);
     });
+}
+
+std::size_t SubstitutionPlan::topColumns() const {
+  std::size_t columns = 0;
+  for (const auto& [begin, end] : topRanges_) columns += static_cast<std::size_t>(end - begin);
+  return columns;
 }
 
 void SubstitutionPlan::solveInFactorOrder(std::span<double> work, std::size_t columns, unsigned threads) const {

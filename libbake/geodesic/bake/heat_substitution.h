@@ -4,10 +4,11 @@
 //   - Step I's right-hand side is zero but at the source's corners, so the forward substitution skips
 //     every column whose value is still zero: only the source's path to the root of the elimination
 //     tree does any work (Gilbert and Peierls' observation for sparse right-hand sides).
-//   - Below the top separator the elimination tree splits into subtrees that share no row but the
-//     separator's, so two threads substitute one group of subtrees each (the subtrees' updates of the
-//     separator go to a private buffer per group, added in a fixed order). The groups depend only on
-//     the factor, never on the thread count, so neither does the solution.
+//   - Below a top part (the top separator's chain, and on a forest the chain of its largest tree) the
+//     elimination tree splits into subtrees that share no row but the top part's, so two threads
+//     substitute one group of subtrees each (their updates of the top part go to a private buffer per
+//     group, added in a fixed order). The groups depend only on the factor, never on the thread
+//     count, so neither does the solution.
 #pragma once
 
 #include <array>
@@ -56,8 +57,10 @@ class SubstitutionPlan {
   // False when the factor is not laid out as described, or its permutation is not one (the caller
   // then solves some other way).
   bool valid() const { return valid_; }
-  // Columns [0, top) are split into the two groups' subtrees (empty when the tree does not split).
-  std::size_t top() const { return top_; }
+  // The columns substituted by one thread (ascending ranges), and the two groups of subtrees below
+  // them (empty when the tree does not split: then the top part is every column).
+  const std::vector<std::pair<int, int>>& topRanges() const { return topRanges_; }
+  std::size_t topColumns() const;
   const std::array<std::vector<std::pair<int, int>>, 2>& groups() const { return groups_; }
   // Entries of L, and from how many the substitution uses more than one thread (below, a pass takes
   // under a millisecond: not worth starting a thread).
@@ -73,7 +76,9 @@ class SubstitutionPlan {
   void findRuns();
 
   SimplicialFactorView factor_;
-  std::size_t top_ = 0;  // first column of the top part, substituted by one thread
+  std::vector<std::pair<int, int>> topRanges_;  // [begin, end) column ranges, ascending
+  std::vector<int> topRows_;                    // the top part's columns, ascending
+  std::vector<int> topIndex_;                   // per column, its place in topRows_ (-1: in a group)
   std::array<std::vector<std::pair<int, int>>, 2> groups_;  // [begin, end) column ranges, ascending
   std::size_t nonZeros_ = 0;
   bool valid_ = false;
