@@ -1,12 +1,10 @@
 // One compiled copy of a hot loop per vector width the processor may offer (AVX-512, AVX2, the
 // baseline), picked once when the library loads. Files that use it compile without floating-point
 // contraction (see libbake/CMakeLists.txt), so no copy fuses a multiply into an add and every copy
-// rounds alike: outputs are the same bytes on every machine. Sanitizer builds keep one copy (their
-// runtime and the loader's resolvers do not mix well).
+// rounds alike: outputs are the same bytes on every machine.
 #pragma once
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__) && \
-    !defined(__SANITIZE_THREAD__)
+#if defined(__x86_64__) && defined(__GNUC__)
 #define BAKE_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define BAKE_VECTOR_CLONES
