@@ -54,6 +54,12 @@ TEST(PaintstrokesInput, JsonErrorsNameStrokeAndControlPoint) {
   expect((head + R"({"p": [1,0,0], "r": 1e999}]}]})").c_str(), "s.json: stroke 1, control point 1, \"r\": not valid JSON");
   expect((head + R"({"p": [1,NaN,0], "r": 1}]}]})").c_str(), "stroke 1, control point 1, \"p\": not valid JSON");
   expect((head + R"({"p": [1,0,0], "r)").c_str(), "stroke 1, control point 1");
+  // An object where the strokes array should be, cut off after a key of forty digits (too large for
+  // an index): the JSON pointer names the place.
+  expect(R"({"version": 1, "strokes": {"4444444444444444444444444444444444444444"points''4')",
+         "s.json: /strokes/4444444444444444444444444444444444444444: not valid JSON");
+  expect(R"({"version": 1, "strokes": [{"points": {"99999999999999999999999"x)",
+         "s.json: stroke 0, \"points\": not valid JSON");
   expect(R"({"version": 1, "strokes": [{"style": 3, "points": []}]})", "s.json: stroke 0: style 3 does not exist");
   expect(R"({"version": 1, "strokes": [{"style": "hair", "points": []}]})", "stroke 0: style \"hair\" is not defined");
   expect(R"({"version": 2, "strokes": []})", "version: must be 1");

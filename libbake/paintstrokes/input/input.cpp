@@ -15,9 +15,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
+#include <system_error>
 
 #include "bake/core/atomic_file.h"
 #include "bake/core/input_file.h"
@@ -73,16 +76,27 @@ struct PathTracker : json::json_sax_t {
 
 bool isIndexText(const std::string& s) { return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }); }
 
+// The index a path part names, when it is all digits and fits (a hostile document may have an object
+// where the array should be, with a key of forty digits).
+std::optional<std::size_t> indexOf(const std::string& part) {
+  std::size_t value = 0;
+  if (!isIndexText(part)) return std::nullopt;
+  const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+  if (error != std::errc() || end != part.data() + part.size()) return std::nullopt;
+  return value;
+}
+
 // "stroke 12, control point 3" for a path strokes/12/points/3/..., else the JSON pointer.
 std::string describePath(const std::vector<std::string>& path) {
-  if (path.size() >= 2 && path[0] == "strokes" && isIndexText(path[1])) {
-    const std::size_t stroke = std::stoul(path[1]);
-    if (path.size() >= 4 && path[2] == "points" && isIndexText(path[3])) {
-      std::string element = pointElement(stroke, std::stoul(path[3]));
+  const std::optional<std::size_t> stroke = path.size() >= 2 ? indexOf(path[1]) : std::nullopt;
+  if (path.size() >= 2 && path[0] == "strokes" && stroke) {
+    const std::optional<std::size_t> point = path.size() >= 4 ? indexOf(path[3]) : std::nullopt;
+    if (path.size() >= 4 && path[2] == "points" && point) {
+      std::string element = pointElement(*stroke, *point);
       if (path.size() >= 5) element += ", \"" + path[4] + "\"";
       return element;
     }
-    return strokeElement(stroke) + (path.size() >= 3 ? ", \"" + path[2] + "\"" : "");
+    return strokeElement(*stroke) + (path.size() >= 3 ? ", \"" + path[2] + "\"" : "");
   }
   std::string pointer;
   for (const std::string& part : path) pointer = jsonPointerChild(pointer, part);
