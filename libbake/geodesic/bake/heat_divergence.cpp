@@ -57,6 +57,8 @@ BAKE_INLINE_KERNEL void divergenceColumns(std::span<const HeatFace> faces, const
         gy[c] += in[i][c] * wy[i];
       }
     for (std::size_t c = 0; c < M; ++c) squared[c] = gx[c] * gx[c] + gy[c] * gy[c];
+    // All fields in the safe range: the smallest and largest squares inside it, and no NaN (which
+    // min and max may pass over, but which makes the sum NaN). Reductions a vector unit does well.
     double lo = squared[0], hi = squared[0], total = 0.0;
     for (std::size_t c = 0; c < M; ++c) { lo = std::min(lo, squared[c]); hi = std::max(hi, squared[c]); }
     for (std::size_t c = 0; c < M; ++c) total += squared[c];
