@@ -14,6 +14,7 @@
 #include "geodesic/bake/heat_substitution.h"
 
 #include <algorithm>
+#include <queue>
 #include <stdexcept>
 
 #include "core/parallel.h"
@@ -120,26 +121,41 @@ void SubstitutionPlan::splitTree(const std::vector<int>& parent) {
       subtreeWork[parent[j]] += subtreeWork[j];
     }
   }
+  // Candidates in the order they arrive; the heaviest is found by a heap (ties: the earliest), so
+  // that a long chain of lopsided branchings costs O(n log n), not a scan of every candidate per step.
   std::vector<char> inTop(n, 0);
-  std::vector<int> candidates;
-  for (int c = firstChild[n]; c >= 0; c = nextSibling[c]) candidates.push_back(c);
+  std::vector<int> arrived;
+  std::vector<char> taken;
+  std::priority_queue<std::pair<std::size_t, std::ptrdiff_t>> heaviestFirst;  // (work, -arrival)
+  std::size_t total = 0, waiting = 0;
+  const auto arrive = [&](int node) {
+    heaviestFirst.push({subtreeWork[node], -static_cast<std::ptrdiff_t>(arrived.size())});
+    arrived.push_back(node);
+    taken.push_back(0);
+    total += subtreeWork[node];
+    ++waiting;
+  };
+  for (int c = firstChild[n]; c >= 0; c = nextSibling[c]) arrive(c);
   for (;;) {
-    if (candidates.empty()) return;  // the whole tree is one chain: nothing to split
-    std::size_t total = 0, heaviest = 0;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      total += subtreeWork[candidates[k]];
-      if (subtreeWork[candidates[k]] > subtreeWork[candidates[heaviest]]) heaviest = k;
-    }
-    if (candidates.size() >= 2 && 5 * subtreeWork[candidates[heaviest]] <= 3 * total) break;
-    int node = candidates[heaviest];
-    candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(heaviest));
+    if (waiting == 0) return;  // the whole tree is one chain: nothing to split
+    const auto [work, order] = heaviestFirst.top();
+    if (waiting >= 2 && 5 * work <= 3 * total) break;
+    heaviestFirst.pop();
+    const auto k = static_cast<std::size_t>(-order);
+    taken[k] = 1;
+    total -= work;
+    --waiting;
+    int node = arrived[k];
     inTop[node] = 1;
     while (childCount[node] == 1) {
       node = firstChild[node];
       inTop[node] = 1;
     }
-    for (int c = firstChild[node]; c >= 0; c = nextSibling[c]) candidates.push_back(c);
+    for (int c = firstChild[node]; c >= 0; c = nextSibling[c]) arrive(c);
   }
+  std::vector<int> candidates;
+  for (std::size_t k = 0; k < arrived.size(); ++k)
+    if (!taken[k]) candidates.push_back(arrived[k]);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [&](int a, int b) { return subtreeWork[a] > subtreeWork[b]; });
   std::array<std::size_t, 2> load{0, 0};
