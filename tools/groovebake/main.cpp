@@ -9,9 +9,6 @@
 #include "common/cli.h"
 
 int main(int argc, char** argv) {
-  // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten
-  // times less (core/huge_pages.h).
-  bake::reexecWithHugePages(argv, "groovebake");
   using namespace bake::grooves;
   Settings settings;
   bake::Diagnostics diagnostics("groovebake");
@@ -37,5 +34,11 @@ int main(int argc, char** argv) {
       ->default_str("1.5");
   bake::addCommonOptions(app, settings.common, {.cacheDir = true});
 
-  return bake::runBaker("groovebake", app, settings, diagnostics, argc, argv);
+  return bake::runBaker("groovebake", app, settings, diagnostics, argc, argv, [&]() -> bake::Status {
+    // A large pattern's bake touches hundreds of megabytes of fresh memory: 2 MiB pages fault ten
+    // times less (core/huge_pages.h). Its size follows the grooves, which a small scene can generate,
+    // so every bake restarts (once the command line is read: --help and --version do not).
+    bake::reexecWithHugePages(argv, "groovebake");
+    return {};
+  });
 }
