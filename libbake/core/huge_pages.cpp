@@ -61,10 +61,14 @@ void reexecWithHugePages(char** argv, std::string_view toolName) {
   ::unsetenv("GLIBC_TUNABLES");  // the exec failed: run as we are
 }
 
-void reexecWithHugePagesForInput(char** argv, std::string_view toolName, std::string_view input) {
+bool inputWorthHugePages(std::string_view input) {
   std::error_code error;
   const std::uintmax_t bytes = std::filesystem::file_size(std::filesystem::path(input), error);
-  if (!error && bytes >= kHugePagesWorthInputBytes) reexecWithHugePages(argv, toolName);
+  return !error && bytes >= kHugePagesWorthInputBytes;
+}
+
+void reexecWithHugePagesForInput(char** argv, std::string_view toolName, std::string_view input) {
+  if (inputWorthHugePages(input)) reexecWithHugePages(argv, toolName);
 }
 
 }  // namespace bake

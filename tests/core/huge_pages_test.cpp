@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 namespace bake {
 namespace {
 
@@ -20,6 +24,21 @@ TEST(HugePages, TheUsersTunablesValgrindAndAKernelWithoutThemStand) {
   EXPECT_FALSE(shouldReexecForHugePages(nullptr, "memcheck-amd64-linux", "groovebake", kMadvise));
   EXPECT_FALSE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", "always madvise [never]\n"));
   EXPECT_FALSE(shouldReexecForHugePages(nullptr, "groovebake", "groovebake", ""));  // no such file
+}
+
+TEST(HugePages, OnlyAnInputOfAMebibyteOrMoreIsWorthASecondStart) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "huge_pages_input";
+  std::filesystem::create_directories(dir);
+  auto fileOf = [&](const char* name, std::uintmax_t bytes) {
+    const std::filesystem::path path = dir / name;
+    std::ofstream(path, std::ios::binary) << std::string(bytes, 'x');
+    return path.string();
+  };
+  EXPECT_TRUE(inputWorthHugePages(fileOf("exactly.obj", kHugePagesWorthInputBytes)));
+  EXPECT_FALSE(inputWorthHugePages(fileOf("one-short.obj", kHugePagesWorthInputBytes - 1)));
+  EXPECT_FALSE(inputWorthHugePages((dir / "missing.obj").string()));
+  EXPECT_FALSE(inputWorthHugePages(dir.string()));  // a folder has no file size
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

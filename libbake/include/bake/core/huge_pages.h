@@ -32,7 +32,10 @@ void reexecWithHugePages(char** argv, std::string_view toolName);
 // heat: 0.96-1.16 s to 0.73-0.84 s).
 inline constexpr std::uintmax_t kHugePagesWorthInputBytes = std::uintmax_t{1} << 20;
 
-// reexecWithHugePages when the file at `input` holds at least kHugePagesWorthInputBytes.
+// Whether `input` is a file of at least kHugePagesWorthInputBytes (false when it cannot be read).
+bool inputWorthHugePages(std::string_view input);
+
+// reexecWithHugePages when inputWorthHugePages(input).
 void reexecWithHugePagesForInput(char** argv, std::string_view toolName, std::string_view input);
 
 }  // namespace bake
