@@ -29,7 +29,7 @@ void reexecWithHugePages(char** argv, std::string_view toolName);
 // The input size from which a bake whose memory follows its input (geobake's mesh) is worth a second
 // start: that costs about what the first did (10-25 ms on a virtual machine), while a 1 MiB mesh's
 // bake runs for hundreds of milliseconds, 10-25 % of them in page faults (nefertiti.obj, 3.7 MB,
-// heat: 0.96-1.16 s to 0.73-0.84 s).
+// heat: 0.88 s to 0.73 s for the whole process, medians of three).
 inline constexpr std::uintmax_t kHugePagesWorthInputBytes = std::uintmax_t{1} << 20;
 
 // Whether `input` is a file of at least kHugePagesWorthInputBytes (false when it cannot be read).
